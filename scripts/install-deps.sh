@@ -1,0 +1,17 @@
+#!/bin/bash
+# Installs the Debian 12 packages rheomag builds against (idempotent; needs root or sudo).
+set -euo pipefail
+pkgs=(build-essential cmake pkg-config git ca-certificates
+  libeigen3-dev libsuitesparse-dev libcgal-dev libvtk9-dev
+  libtomlplusplus-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libboost-dev coinor-libipopt-dev libceres-dev libsvm-dev gnuplot-nox)
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  sudo=""; [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  echo "installing: ${missing[*]}" >&2
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+fi
