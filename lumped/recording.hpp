@@ -1,0 +1,57 @@
+#pragma once
+// A recording in the fixed format of shared/docs/recording-format.md: CSV samples + TOML sidecar.
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rheomag::lumped {
+
+/// The [rig] table of a sidecar (SI units). Absent optional keys stay empty.
+struct RigInfo {
+  std::string kind;  ///< constant_velocity_pump | bypass_cylinder | damper | coil_bench
+  std::optional<double> piston_area;     ///< [m^2]
+  std::optional<double> chamber_volume;  ///< [m^3]
+  std::optional<double> rod_area;        ///< [m^2]
+  std::optional<double> gas_force;       ///< [N]
+  std::map<std::string, double> extra;   ///< any other numeric rig keys, as given
+};
+
+/// The [valve] table of a sidecar: an FE case or a Bingham static map.
+struct ValveInfo {
+  std::string case_file;                 ///< path resolved against the sidecar's folder, or empty
+  std::vector<double> yield_current;     ///< [A]
+  std::vector<double> yield_pressure;    ///< [Pa]
+  std::optional<double> viscous_resistance;  ///< [Pa s/m^3]
+};
+
+/// The [coil] table of a sidecar.
+struct CoilInfo {
+  std::optional<double> resistance;  ///< [ohm] at 20 degC
+  std::optional<double> inductance;  ///< [H]
+};
+
+/// Everything in the TOML sidecar.
+struct RecordingMeta {
+  std::string description;
+  std::vector<std::string> drive;  ///< names of the columns that drive the model
+  std::string output;              ///< name of the column to explain
+  RigInfo rig;
+  ValveInfo valve;
+  CoilInfo coil;
+  std::string sidecar_path;
+};
+
+/// A recording: time base, named columns (all the same length as t), and its sidecar.
+struct Recording {
+  std::vector<double> t;                               ///< [s], strictly increasing
+  std::map<std::string, std::vector<double>> columns;  ///< known columns only, SI
+  RecordingMeta meta;
+  std::string csv_path;
+
+  /// The column `name`; throws InputError naming the file if it is absent.
+  const std::vector<double>& column(const std::string& name) const;
+};
+
+}  // namespace rheomag::lumped
