@@ -1,0 +1,31 @@
+#pragma once
+// Reading and writing recordings in the fixed format of shared/docs/recording-format.md.
+
+#include <string>
+#include <vector>
+
+#include "lumped/recording.hpp"
+
+namespace rheomag::lumped {
+
+/// The column names the format defines (t first); any other CSV column is ignored with a warning.
+const std::vector<std::string>& known_columns();
+
+/// Path of the sidecar of a CSV file: same folder and stem, extension .toml.
+std::string sidecar_path_for(const std::string& csv_path);
+
+/// Reads the TOML sidecar at `toml_path`; throws InputError naming the file and key on bad input.
+RecordingMeta read_sidecar(const std::string& toml_path);
+
+/// Reads the CSV samples at `csv_path` (no sidecar); unknown columns warned about on stderr.
+Recording read_csv_samples(const std::string& csv_path);
+
+/// Reads a recording: the CSV at `csv_path` and its sidecar (missing sidecar is an InputError);
+/// checks that the sidecar's drive and output columns exist in the CSV.
+Recording read_recording(const std::string& csv_path);
+
+/// Writes `rec` as `csv_path` plus its sidecar (same stem, .toml), each atomically (temp+rename).
+/// Columns are written in the order of known_columns(); `rec.meta` becomes the sidecar.
+void write_recording(const Recording& rec, const std::string& csv_path);
+
+}  // namespace rheomag::lumped
