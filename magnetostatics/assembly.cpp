@@ -1,0 +1,204 @@
+#include "magnetostatics/assembly.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "mesh/error.hpp"
+
+namespace rheomag::magnetostatics {
+namespace {
+
+std::array<mesh::Point, 3> vertices(const mesh::Mesh& mesh, int e) {
+  const auto& t = mesh.triangles[e];
+  return {mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]]};
+}
+
+}  // namespace
+
+Assembler::Assembler(const Problem& problem, const mesh::Mesh& mesh, const DofMap& dofs)
+    : problem_(problem), mesh_(mesh), dofs_(dofs), laws_(build_reluctivities(problem)) {
+  if (mesh.order != 1 && mesh.order != 2) {
+    throw InputError("mesh order " + std::to_string(mesh.order) + "; expected 1 or 2");
+  }
+  const int elements = static_cast<int>(mesh.triangles.size());
+  const int m = mesh.nodes_per_triangle();
+  material_of_element_.resize(elements);
+  region_area_.assign(problem.regions.size(), 0.0);
+  for (int e = 0; e < elements; ++e) {
+    const int region = mesh.region[e];
+    if (region < 0 || region >= static_cast<int>(problem.regions.size())) {
+      throw InputError("mesh triangle " + std::to_string(e) + " lies in region " +
+                       std::to_string(region) + ", which has no region data");
+    }
+    const int material = problem.regions[region].material;
+    if (material < 0 || material >= static_cast<int>(laws_.size())) {
+      const auto& seeds = problem.geometry.regions;
+      const std::string name =
+          region < static_cast<int>(seeds.size()) ? seeds[region].name : std::to_string(region);
+      throw InputError("region '" + name + "' has no material");
+    }
+    material_of_element_[e] = material;
+    const auto v = vertices(mesh, e);
+    region_area_[region] += 0.5 * std::abs((v[1].r - v[0].r) * (v[2].z - v[0].z) -
+                                           (v[2].r - v[0].r) * (v[1].z - v[0].z));
+  }
+  for (const mesh::BoundaryEdge& edge : mesh.boundary_edges) {
+    if (edge.boundary < 0 || edge.boundary >= static_cast<int>(problem.boundaries.size())) continue;
+    const BoundaryCondition& bc = problem.boundaries[edge.boundary];
+    if (bc.kind == BoundaryKind::mixed) robin_edges_.push_back({edge.nodes, bc.c0, bc.c1});
+  }
+
+  // Sparsity pattern: lower triangle of the free-dof couplings of every triangle.
+  const int n = dofs.free_count();
+  std::vector<std::vector<int>> rows_of_column(n);
+  for (int e = 0; e < elements; ++e) {
+    const auto& t = mesh.triangles[e];
+    for (int i = 0; i < m; ++i) {
+      const int row = dofs.dof_of_node[t[i]];
+      if (row < 0) continue;
+      for (int j = 0; j < m; ++j) {
+        const int col = dofs.dof_of_node[t[j]];
+        if (col >= 0 && row >= col) rows_of_column[col].push_back(row);
+      }
+    }
+  }
+  std::vector<int> outer(n + 1, 0), inner;
+  for (int col = 0; col < n; ++col) {
+    auto& rows = rows_of_column[col];
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    outer[col + 1] = outer[col] + static_cast<int>(rows.size());
+    inner.insert(inner.end(), rows.begin(), rows.end());
+    std::vector<int>().swap(rows);
+  }
+  pattern_.resize(n, n);
+  pattern_.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
+  std::copy(outer.begin(), outer.end(), pattern_.outerIndexPtr());
+  std::copy(inner.begin(), inner.end(), pattern_.innerIndexPtr());
+  std::fill_n(pattern_.valuePtr(), inner.size(), 0.0);
+
+  element_offsets_.resize(static_cast<std::size_t>(elements) * m * m);
+  for (int e = 0; e < elements; ++e) {
+    const auto& t = mesh.triangles[e];
+    for (int i = 0; i < m; ++i) {
+      for (int j = 0; j < m; ++j) {
+        element_offsets_[(static_cast<std::size_t>(e) * m + i) * m + j] =
+            matrix_offset(dofs.dof_of_node[t[i]], dofs.dof_of_node[t[j]]);
+      }
+    }
+  }
+  const int edge_nodes = mesh.order == 1 ? 2 : 3;
+  for (const RobinEdge& edge : robin_edges_) {
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        robin_offsets_.push_back(
+            i < edge_nodes && j < edge_nodes
+                ? matrix_offset(dofs.dof_of_node[edge.nodes[i]], dofs.dof_of_node[edge.nodes[j]])
+                : -1);
+      }
+    }
+  }
+}
+
+int Assembler::matrix_offset(int row, int col) const {
+  if (row < 0 || col < 0 || row < col) return -1;
+  const int* begin = pattern_.innerIndexPtr() + pattern_.outerIndexPtr()[col];
+  const int* end = pattern_.innerIndexPtr() + pattern_.outerIndexPtr()[col + 1];
+  const int* it = std::lower_bound(begin, end, row);
+  return it != end && *it == row ? static_cast<int>(it - pattern_.innerIndexPtr()) : -1;
+}
+
+void Assembler::quadrature(int e, ElementQuadrature& q) const {
+  element_quadrature(problem_.symmetry, problem_.depth, mesh_.order, vertices(mesh_, e), q);
+}
+
+bool Assembler::nonlinear() const {
+  return std::any_of(laws_.begin(), laws_.end(),
+                     [](const Reluctivity& l) { return l.nonlinear(); });
+}
+
+void Assembler::assemble(const Eigen::VectorXd& a, Eigen::VectorXd& residual,
+                         SparseMatrix* tangent) const {
+  residual.setZero(dofs_.free_count());
+  if (tangent) std::fill_n(tangent->valuePtr(), tangent->nonZeros(), 0.0);
+  const int m = mesh_.nodes_per_triangle();
+  const int elements = static_cast<int>(mesh_.triangles.size());
+  ElementQuadrature q;
+  double a_local[kMaxElementNodes], r_local[kMaxElementNodes];
+  double k_local[kMaxElementNodes * kMaxElementNodes];
+  for (int e = 0; e < elements; ++e) {
+    const auto& t = mesh_.triangles[e];
+    for (int i = 0; i < m; ++i) a_local[i] = a[t[i]];
+    quadrature(e, q);
+    element_residual_tangent(q, a_local, law(e), r_local, tangent ? k_local : nullptr);
+    for (int i = 0; i < m; ++i) {
+      const int row = dofs_.dof_of_node[t[i]];
+      if (row >= 0) residual[row] += r_local[i];
+    }
+    if (!tangent) continue;
+    const int* offsets = &element_offsets_[static_cast<std::size_t>(e) * m * m];
+    double* values = tangent->valuePtr();
+    for (int k = 0; k < m * m; ++k) {
+      if (offsets[k] >= 0) values[offsets[k]] += k_local[k];
+    }
+  }
+  scatter_robin(a, residual, tangent);
+}
+
+void Assembler::scatter_robin(const Eigen::VectorXd& a, Eigen::VectorXd& residual,
+                              SparseMatrix* tangent) const {
+  // Mixed condition  -(n x H) . e_phi + c0 A = c1  adds  integral (c0 A - c1) v dw  along the
+  // edge, dw = 2 pi r ds (axisymmetric) or depth ds (planar).
+  const int edge_nodes = mesh_.order == 1 ? 2 : 3;
+  for (std::size_t k = 0; k < robin_edges_.size(); ++k) {
+    const RobinEdge& edge = robin_edges_[k];
+    const mesh::Point p0 = mesh_.nodes[edge.nodes[0]], p1 = mesh_.nodes[edge.nodes[1]];
+    const double length = std::hypot(p1.r - p0.r, p1.z - p0.z);
+    double r_local[3] = {0, 0, 0}, k_local[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+    for (const EdgeQuadraturePoint& g : edge_quadrature()) {
+      double n[3];
+      edge_basis(mesh_.order, g.t, n);
+      const double r = p0.r + g.t * (p1.r - p0.r);
+      const double w = g.weight * length *
+                       (problem_.symmetry == Symmetry::axisymmetric ? 2.0 * std::numbers::pi * r
+                                                                    : problem_.depth);
+      double a_point = 0.0;
+      for (int i = 0; i < edge_nodes; ++i) a_point += n[i] * a[edge.nodes[i]];
+      for (int i = 0; i < edge_nodes; ++i) {
+        r_local[i] += w * (edge.c0 * a_point - edge.c1) * n[i];
+        for (int j = 0; j < edge_nodes; ++j) k_local[i * 3 + j] += w * edge.c0 * n[i] * n[j];
+      }
+    }
+    for (int i = 0; i < edge_nodes; ++i) {
+      const int row = dofs_.dof_of_node[edge.nodes[i]];
+      if (row >= 0) residual[row] += r_local[i];
+    }
+    if (!tangent) continue;
+    for (int i = 0; i < 9; ++i) {
+      const int offset = robin_offsets_[k * 9 + i];
+      if (offset >= 0) tangent->valuePtr()[offset] += k_local[i];
+    }
+  }
+}
+
+Eigen::VectorXd Assembler::circuit_source(int c) const {
+  Eigen::VectorXd source = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(mesh_.nodes.size()));
+  const int m = mesh_.nodes_per_triangle();
+  ElementQuadrature q;
+  double f[kMaxElementNodes];
+  for (int e = 0; e < static_cast<int>(mesh_.triangles.size()); ++e) {
+    const int region = mesh_.region[e];
+    const RegionData& data = problem_.regions[region];
+    if (data.circuit != c || data.turns == 0.0 || region_area_[region] <= 0.0) continue;
+    quadrature(e, q);
+    element_source(q, f);
+    const double density = data.turns / region_area_[region];
+    const auto& t = mesh_.triangles[e];
+    for (int i = 0; i < m; ++i) source[t[i]] += density * f[i];
+  }
+  return source;
+}
+
+}  // namespace rheomag::magnetostatics

@@ -1,0 +1,148 @@
+#include "magnetostatics/bh_curve.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "magnetostatics/constants.hpp"
+#include "mesh/error.hpp"
+
+namespace rheomag::magnetostatics {
+namespace {
+
+[[noreturn]] void fail(const std::string& material, const std::string& what) {
+  throw InputError("material '" + material + "': B-H table " + what);
+}
+
+}  // namespace
+
+BhCurve::BhCurve(const std::vector<BhPoint>& table, const std::string& material) {
+  if (table.size() < 2) {
+    fail(material, "has " + std::to_string(table.size()) + " point(s); expected at least 2");
+  }
+  for (std::size_t k = 0; k < table.size(); ++k) {
+    const BhPoint& p = table[k];
+    if (!std::isfinite(p.b) || !std::isfinite(p.h) || p.b < 0.0 || p.h < 0.0) {
+      std::ostringstream msg;
+      msg << "point " << k + 1 << " (B = " << p.b << " T, H = " << p.h
+          << " A/m) is not a finite non-negative number pair";
+      fail(material, msg.str());
+    }
+    if (k > 0 && !(p.b > table[k - 1].b && p.h > table[k - 1].h)) {
+      std::ostringstream msg;
+      msg << "is not strictly increasing at point " << k + 1 << " (B = " << p.b << " T, H = " << p.h
+          << " A/m after B = " << table[k - 1].b << " T, H = " << table[k - 1].h << " A/m)";
+      fail(material, msg.str());
+    }
+  }
+  if (table.front().b != 0.0 || table.front().h != 0.0) {
+    if (table.front().b == 0.0 || table.front().h == 0.0) {
+      fail(material, "must start at (0, 0) or at a point with B > 0 and H > 0");
+    }
+    b_.push_back(0.0);
+    h_.push_back(0.0);
+  }
+  for (const BhPoint& p : table) {
+    b_.push_back(p.b);
+    h_.push_back(p.h);
+  }
+
+  // Slopes d_k at the table points (Fritsch-Carlson monotone: PCHIP weighted harmonic mean).
+  const std::size_t n = b_.size() - 1;  // number of intervals
+  std::vector<double> width(n), secant(n), slope(n + 1, 0.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    width[k] = b_[k + 1] - b_[k];
+    secant[k] = (h_[k + 1] - h_[k]) / width[k];
+  }
+  for (std::size_t k = 1; k < n; ++k) {
+    const double w1 = 2.0 * width[k] + width[k - 1];
+    const double w2 = width[k] + 2.0 * width[k - 1];
+    slope[k] = (w1 + w2) / (w1 / secant[k - 1] + w2 / secant[k]);
+  }
+  if (n == 1) {
+    slope[1] = secant[0];
+  } else {
+    // One-sided three-point end slope, kept in [0.5, 3] x the last secant: inside the
+    // Fritsch-Carlson monotonicity box and strictly positive.
+    const double end =
+        ((2.0 * width[n - 1] + width[n - 2]) * secant[n - 1] - width[n - 1] * secant[n - 2]) /
+        (width[n - 1] + width[n - 2]);
+    slope[n] = std::clamp(end, 0.5 * secant[n - 1], 3.0 * secant[n - 1]);
+  }
+  // First interval H = B (a + c B^2): a = (3 s0 - d1) / 2 > 0 needs d1 < 3 s0.
+  slope[1] = std::min(slope[1], 2.5 * secant[0]);
+  a_ = 0.5 * (3.0 * secant[0] - slope[1]);
+  c_ = (slope[1] - secant[0]) / (2.0 * b_[1] * b_[1]);
+
+  for (std::size_t k = 1; k < n; ++k) {
+    cubics_.push_back({b_[k], b_[k + 1], h_[k], h_[k + 1], slope[k], slope[k + 1]});
+  }
+  energy_at_.assign(n + 1, 0.0);
+  energy_at_[1] = 0.5 * a_ * b_[1] * b_[1] + 0.25 * c_ * std::pow(b_[1], 4);
+  for (std::size_t k = 1; k < n; ++k) {
+    energy_at_[k + 1] = energy_at_[k] + cubic_energy(cubics_[k - 1], b_[k + 1]);
+  }
+}
+
+int BhCurve::interval(double b) const {
+  if (b <= b_[1]) return -1;
+  if (b > b_.back()) return static_cast<int>(cubics_.size());
+  const auto it = std::lower_bound(b_.begin() + 1, b_.end(), b);  // b_[k] >= b, k >= 2
+  return static_cast<int>(it - b_.begin()) - 2;
+}
+
+double BhCurve::cubic_h(const Cubic& c, double b) const {
+  const double w = c.b1 - c.b0, t = (b - c.b0) / w, t2 = t * t, t3 = t2 * t;
+  return (2 * t3 - 3 * t2 + 1) * c.h0 + (t3 - 2 * t2 + t) * w * c.d0 + (-2 * t3 + 3 * t2) * c.h1 +
+         (t3 - t2) * w * c.d1;
+}
+
+double BhCurve::cubic_dh(const Cubic& c, double b) const {
+  const double w = c.b1 - c.b0, t = (b - c.b0) / w, t2 = t * t;
+  return (6 * t2 - 6 * t) / w * c.h0 + (3 * t2 - 4 * t + 1) * c.d0 + (-6 * t2 + 6 * t) / w * c.h1 +
+         (3 * t2 - 2 * t) * c.d1;
+}
+
+double BhCurve::cubic_energy(const Cubic& c, double b) const {
+  const double w = c.b1 - c.b0, t = (b - c.b0) / w, t2 = t * t, t3 = t2 * t, t4 = t3 * t;
+  return w * ((0.5 * t4 - t3 + t) * c.h0 + w * (0.25 * t4 - 2.0 * t3 / 3.0 + 0.5 * t2) * c.d0 +
+              (-0.5 * t4 + t3) * c.h1 + w * (0.25 * t4 - t3 / 3.0) * c.d1);
+}
+
+double BhCurve::h(double b) const {
+  const int k = interval(b);
+  if (k < 0) return b * (a_ + c_ * b * b);
+  if (k == static_cast<int>(cubics_.size())) return h_.back() + (b - b_.back()) * kNu0;
+  return cubic_h(cubics_[k], b);
+}
+
+double BhCurve::dh_db(double b) const {
+  const int k = interval(b);
+  if (k < 0) return a_ + 3.0 * c_ * b * b;
+  if (k == static_cast<int>(cubics_.size())) return kNu0;
+  return cubic_dh(cubics_[k], b);
+}
+
+double BhCurve::nu(double b2) const {
+  const double b = std::sqrt(b2);
+  if (b <= b_[1]) return a_ + c_ * b2;
+  return h(b) / b;
+}
+
+double BhCurve::dnu_db2(double b2) const {
+  const double b = std::sqrt(b2);
+  if (b <= b_[1]) return c_;
+  return (dh_db(b) - h(b) / b) / (2.0 * b2);
+}
+
+double BhCurve::energy_density(double b) const {
+  const int k = interval(b);
+  if (k < 0) return 0.5 * a_ * b * b + 0.25 * c_ * b * b * b * b;
+  if (k == static_cast<int>(cubics_.size())) {
+    const double db = b - b_.back();
+    return energy_at_.back() + h_.back() * db + 0.5 * kNu0 * db * db;
+  }
+  return energy_at_[k + 1] + cubic_energy(cubics_[k], b);
+}
+
+}  // namespace rheomag::magnetostatics

@@ -1,0 +1,55 @@
+#pragma once
+// Monotone smooth B-H curve: H(B), reluctivity nu(|B|^2) = H/B, its derivative and the energy.
+
+#include <string>
+#include <vector>
+
+#include "magnetostatics/problem.hpp"
+
+namespace rheomag::magnetostatics {
+
+/// Magnetisation curve H(B) of a soft magnetic material, built from a B-H table.
+///
+/// Interpolation: monotone piecewise cubic Hermite (Fritsch-Carlson / PCHIP weighted harmonic-mean
+/// slopes) of H(B) through the table points. On the first interval [0, B1] the cubic is replaced
+/// by the odd polynomial H = B (a + c B^2) matching H and dH/dB at B1, so that the reluctivity
+/// nu = H/B = a + c B^2 is linear in B^2 near B = 0: nu(0) = a and d nu/d(B^2) = c are finite
+/// (the B -> 0 limit is exact, no division by B). dH/dB > 0 everywhere (strictly monotone).
+///
+/// Extrapolation beyond the last table point (B_n, H_n), as FEMM does: H = H_n + (B - B_n)/mu0,
+/// i.e. the differential permeability becomes mu0 (full saturation). H is continuous there,
+/// dH/dB jumps from the table's end slope to 1/mu0.
+class BhCurve {
+ public:
+  /// Builds the curve; `material` names the material in error messages. A leading (0, 0) point is
+  /// optional (added when absent). Throws InputError unless the table has >= 2 points, all
+  /// finite, B and H >= 0 and both strictly increasing.
+  BhCurve(const std::vector<BhPoint>& table, const std::string& material);
+
+  /// Field strength H(B) [A/m] for B >= 0 [T].
+  double h(double b) const;
+  /// Differential reluctivity dH/dB [m/H].
+  double dh_db(double b) const;
+  /// Reluctivity nu = H/B [m/H] as a function of b2 = |B|^2 [T^2] (nu(0) is the limit).
+  double nu(double b2) const;
+  /// d nu / d(b2) [m/(H T^2)], finite at b2 = 0.
+  double dnu_db2(double b2) const;
+  /// Magnetic energy density w(B) = integral_0^B H(b) db [J/m^3].
+  double energy_density(double b) const;
+
+ private:
+  struct Cubic {
+    double b0, b1, h0, h1, d0, d1;  // interval ends, values and slopes
+  };
+  int interval(double b) const;  // index of the cubic containing b; -1 first interval, n = beyond
+  double cubic_h(const Cubic& c, double b) const;
+  double cubic_dh(const Cubic& c, double b) const;
+  double cubic_energy(const Cubic& c, double b) const;  // integral from c.b0 to b
+
+  std::vector<double> b_, h_;      // table with (0, 0) first
+  double a_ = 0.0, c_ = 0.0;       // first interval: H = B (a + c B^2)
+  std::vector<Cubic> cubics_;      // intervals 1 .. n-1 (cubics_[k] spans b_[k+1] .. b_[k+2])
+  std::vector<double> energy_at_;  // w(b_[k])
+};
+
+}  // namespace rheomag::magnetostatics

@@ -1,0 +1,66 @@
+#include "magnetostatics/newton.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "mesh/error.hpp"
+
+namespace rheomag::magnetostatics {
+namespace {
+
+[[noreturn]] void fail(const std::string& why, int iteration, double relative, double tolerance) {
+  std::ostringstream msg;
+  msg << "Newton iteration did not converge: " << why << " after " << iteration
+      << " iteration(s); relative residual reached " << relative << " (tolerance " << tolerance
+      << ")";
+  throw ConvergenceError(msg.str());
+}
+
+}  // namespace
+
+NewtonReport newton_solve(NonlinearSystem& system, Eigen::VectorXd& x, double scale,
+                          const NewtonOptions& options) {
+  NewtonReport report;
+  if (scale == 0.0) {
+    x.setZero();
+    report.residual_history.push_back(0.0);
+    return report;
+  }
+  Eigen::VectorXd r, trial_r, trial;
+  double norm = system.residual(x, r);
+  report.residual_history.push_back(norm / scale);
+  for (int it = 0;; ++it) {
+    if (!std::isfinite(norm) || norm > options.divergence_factor * scale) {
+      fail("the residual diverged", it, norm / scale, options.relative_tolerance);
+    }
+    if (norm <= options.relative_tolerance * scale) return report;
+    if (it == options.max_iterations) {
+      fail("maximum number of iterations reached", it, norm / scale, options.relative_tolerance);
+    }
+    system.factorize_jacobian(x);
+    const Eigen::VectorXd step = system.solve_jacobian(-r);
+    double alpha = 1.0, trial_norm = 0.0;
+    bool accepted = false;
+    for (int k = 0; k <= options.max_backtracks; ++k, alpha *= 0.5) {
+      trial = x + alpha * step;
+      trial_norm = system.residual(trial, trial_r);
+      if (std::isfinite(trial_norm) &&
+          trial_norm <= (1.0 - options.sufficient_decrease * alpha) * norm) {
+        accepted = true;
+        break;
+      }
+    }
+    if (!accepted) {
+      fail("the line search found no decrease of the residual", it + 1, norm / scale,
+           options.relative_tolerance);
+    }
+    x.swap(trial);
+    r.swap(trial_r);
+    norm = trial_norm;
+    report.iterations = it + 1;
+    report.step_lengths.push_back(alpha);
+    report.residual_history.push_back(norm / scale);
+  }
+}
+
+}  // namespace rheomag::magnetostatics

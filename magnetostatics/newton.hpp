@@ -1,0 +1,44 @@
+#pragma once
+// Newton's method with a backtracking line search on the residual norm.
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace rheomag::magnetostatics {
+
+/// Settings of the Newton iteration (defaults documented in docs and echoed in results).
+struct NewtonOptions {
+  double relative_tolerance = 1e-8;   ///< converged when |R(x)| <= tol * |R(x = 0)|
+  int max_iterations = 50;            ///< Newton steps before ConvergenceError
+  int max_backtracks = 12;            ///< step halvings per line search (minimum step 2^-12)
+  double sufficient_decrease = 1e-4;  ///< Armijo constant c: accept when |R| <= (1 - c alpha)|R0|
+  double divergence_factor = 1e6;     ///< ConvergenceError when |R| > factor * |R(x = 0)|
+};
+
+/// What the iteration did.
+struct NewtonReport {
+  int iterations = 0;                    ///< Newton steps taken
+  std::vector<double> residual_history;  ///< relative residual before the first and after each step
+  std::vector<double> step_lengths;      ///< accepted line-search step per iteration
+};
+
+/// A nonlinear system R(x) = 0 with a factorisable Jacobian.
+class NonlinearSystem {
+ public:
+  virtual ~NonlinearSystem() = default;
+  /// Residual R(x) into `r`; returns its Euclidean norm.
+  virtual double residual(const Eigen::VectorXd& x, Eigen::VectorXd& r) = 0;
+  /// Assembles and factorises the Jacobian at x (throws ConvergenceError if that fails).
+  virtual void factorize_jacobian(const Eigen::VectorXd& x) = 0;
+  /// Solves J dx = rhs with the last factorisation.
+  virtual Eigen::VectorXd solve_jacobian(const Eigen::VectorXd& rhs) = 0;
+};
+
+/// Solves R(x) = 0 from the initial x; `scale` = |R(x = 0)| is the reference of the relative
+/// residual (if scale == 0 the solution is x = 0). Throws ConvergenceError, with the relative
+/// residual reached, when the tolerance is not met within max_iterations, when the line search
+/// cannot reduce the residual, or when the residual exceeds divergence_factor * scale or is NaN.
+NewtonReport newton_solve(NonlinearSystem& system, Eigen::VectorXd& x, double scale,
+                          const NewtonOptions& options);
+
+}  // namespace rheomag::magnetostatics

@@ -1,0 +1,188 @@
+#include "magnetostatics/solver.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "mesh/error.hpp"
+
+namespace rheomag::magnetostatics {
+
+/// The discrete magnetostatic equations for fixed currents, as seen by Newton.
+class MagnetostaticSolver::System : public NonlinearSystem {
+ public:
+  System(MagnetostaticSolver& solver, Eigen::VectorXd source)
+      : solver_(solver), source_(std::move(source)) {}
+
+  double residual(const Eigen::VectorXd& x, Eigen::VectorXd& r) override {
+    solver_.assembler_->assemble(solver_.free_to_nodes(x), r, nullptr);
+    r -= source_;
+    return r.norm();
+  }
+  void factorize_jacobian(const Eigen::VectorXd& x) override {
+    solver_.factorize_at(solver_.free_to_nodes(x));
+  }
+  Eigen::VectorXd solve_jacobian(const Eigen::VectorXd& rhs) override {
+    return solver_.solve_factorized(rhs);
+  }
+
+ private:
+  MagnetostaticSolver& solver_;
+  Eigen::VectorXd source_;  // free-dof source at the solve's currents
+};
+
+MagnetostaticSolver::MagnetostaticSolver(Problem problem, mesh::Mesh mesh, SolveOptions options)
+    : problem_(std::move(problem)), mesh_(std::move(mesh)), options_(options) {
+  if (mesh_.region.size() != mesh_.triangles.size()) {
+    throw InputError("mesh has " + std::to_string(mesh_.triangles.size()) + " triangles but " +
+                     std::to_string(mesh_.region.size()) + " region ids");
+  }
+  if (problem_.symmetry == Symmetry::planar &&
+      !(problem_.depth > 0.0 && std::isfinite(problem_.depth))) {
+    throw InputError("planar depth must be a finite number > 0 m");
+  }
+  for (const RegionData& region : problem_.regions) {
+    if (region.circuit >= static_cast<int>(problem_.circuits.size())) {
+      throw InputError("a region refers to circuit " + std::to_string(region.circuit) + " but " +
+                       std::to_string(problem_.circuits.size()) + " circuit(s) are defined");
+    }
+  }
+  dofs_ = build_dof_map(mesh_, problem_);
+  assembler_ = std::make_unique<Assembler>(problem_, mesh_, dofs_);
+  linear_ = !assembler_->nonlinear();
+  for (int c = 0; c < static_cast<int>(problem_.circuits.size()); ++c) {
+    sources_.push_back(assembler_->circuit_source(c));
+  }
+  tangent_ = assembler_->pattern();
+  if (dofs_.free_count() > 0) {
+    cholesky_.analyzePattern(tangent_);
+    if (cholesky_.info() != Eigen::Success) {
+      throw ConvergenceError("CHOLMOD symbolic analysis failed for " +
+                             std::to_string(dofs_.free_count()) + " unknowns");
+    }
+  }
+}
+
+Eigen::VectorXd MagnetostaticSolver::free_to_nodes(const Eigen::VectorXd& x) const {
+  Eigen::VectorXd a = Eigen::Map<const Eigen::VectorXd>(
+      dofs_.fixed_value.data(), static_cast<Eigen::Index>(dofs_.fixed_value.size()));
+  for (int d = 0; d < dofs_.free_count(); ++d) a[dofs_.node_of_dof[d]] = x[d];
+  return a;
+}
+
+void MagnetostaticSolver::factorize_at(const Eigen::VectorXd& a_nodes) {
+  if (linear_ && factorized_linear_) return;
+  Eigen::VectorXd r;
+  assembler_->assemble(a_nodes, r, &tangent_);
+  cholesky_.factorize(tangent_);
+  ++factorizations_;
+  if (cholesky_.info() != Eigen::Success) {
+    throw ConvergenceError("CHOLMOD factorisation failed (tangent not positive definite, " +
+                           std::to_string(dofs_.free_count()) + " unknowns)");
+  }
+  factorized_linear_ = linear_;
+}
+
+Eigen::VectorXd MagnetostaticSolver::solve_factorized(const Eigen::VectorXd& rhs) {
+  Eigen::VectorXd x = cholesky_.solve(rhs);
+  if (cholesky_.info() != Eigen::Success || !x.allFinite()) {
+    throw ConvergenceError("CHOLMOD triangular solve failed");
+  }
+  return x;
+}
+
+Eigen::VectorXd MagnetostaticSolver::residual(const Eigen::VectorXd& a,
+                                              const std::vector<double>& currents) const {
+  Eigen::VectorXd r;
+  assembler_->assemble(a, r, nullptr);
+  for (std::size_t c = 0; c < currents.size(); ++c) {
+    for (int d = 0; d < dofs_.free_count(); ++d)
+      r[d] -= currents[c] * sources_[c][dofs_.node_of_dof[d]];
+  }
+  return r;
+}
+
+SparseMatrix MagnetostaticSolver::tangent(const Eigen::VectorXd& a) const {
+  SparseMatrix k = assembler_->pattern();
+  Eigen::VectorXd r;
+  assembler_->assemble(a, r, &k);
+  return k;
+}
+
+Solution MagnetostaticSolver::solve() {
+  std::vector<double> currents;
+  for (const Circuit& c : problem_.circuits) currents.push_back(c.current);
+  return solve(currents);
+}
+
+Solution MagnetostaticSolver::solve(const std::vector<double>& currents,
+                                    const Eigen::VectorXd* initial_guess) {
+  const auto start = std::chrono::steady_clock::now();
+  if (currents.size() != problem_.circuits.size()) {
+    throw InputError(std::to_string(currents.size()) + " current(s) given for " +
+                     std::to_string(problem_.circuits.size()) + " circuit(s)");
+  }
+  for (double current : currents) {
+    if (!std::isfinite(current)) throw InputError("circuit current is not a finite number");
+  }
+  const int n = dofs_.free_count();
+  Eigen::VectorXd source = Eigen::VectorXd::Zero(n);
+  for (std::size_t c = 0; c < currents.size(); ++c) {
+    for (int d = 0; d < n; ++d) source[d] += currents[c] * sources_[c][dofs_.node_of_dof[d]];
+  }
+  System system(*this, source);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(n), r;
+  const double scale = system.residual(x, r);
+  if (initial_guess) {
+    for (int d = 0; d < n; ++d) x[d] = (*initial_guess)[dofs_.node_of_dof[d]];
+  }
+
+  Solution solution;
+  solution.currents = currents;
+  solution.newton = newton_solve(system, x, scale, options_.newton);
+  solution.a = free_to_nodes(x);
+  for (const Eigen::VectorXd& f : sources_) solution.flux_linkage.push_back(f.dot(solution.a));
+  if (options_.incremental_inductance && n > 0) {
+    // dlambda_c/dI_c = F_c^T K_t^{-1} F_c with K_t the exact tangent at the solution.
+    factorize_at(solution.a);
+    for (const Eigen::VectorXd& f : sources_) {
+      Eigen::VectorXd f_free(n);
+      for (int d = 0; d < n; ++d) f_free[d] = f[dofs_.node_of_dof[d]];
+      solution.incremental_inductance.push_back(f_free.dot(solve_factorized(f_free)));
+    }
+  }
+  solution.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return solution;
+}
+
+std::vector<SweepPoint> MagnetostaticSolver::sweep(int circuit,
+                                                   const std::vector<double>& currents) {
+  if (circuit < 0 || circuit >= static_cast<int>(problem_.circuits.size())) {
+    throw InputError("sweep of circuit " + std::to_string(circuit) + " but " +
+                     std::to_string(problem_.circuits.size()) + " circuit(s) are defined");
+  }
+  std::vector<double> present;
+  for (const Circuit& c : problem_.circuits) present.push_back(c.current);
+  std::vector<SweepPoint> table;
+  Eigen::VectorXd previous;
+  const bool keep = options_.incremental_inductance;
+  options_.incremental_inductance = true;
+  for (double current : currents) {
+    present[circuit] = current;
+    Solution s = solve(present, previous.size() ? &previous : nullptr);
+    SweepPoint point;
+    point.current = current;
+    point.flux_linkage = s.flux_linkage[circuit];
+    point.incremental_inductance = s.incremental_inductance[circuit];
+    point.secant_inductance =
+        current != 0.0 ? point.flux_linkage / current : point.incremental_inductance;
+    point.newton_iterations = s.newton.iterations;
+    table.push_back(point);
+    previous = std::move(s.a);
+  }
+  options_.incremental_inductance = keep;
+  return table;
+}
+
+}  // namespace rheomag::magnetostatics

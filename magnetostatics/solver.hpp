@@ -1,0 +1,97 @@
+#pragma once
+// The magnetostatic solver: owns a mesh, its dof map, the assembler and the Cholesky
+// factorisation, and solves for any set of circuit currents (analysis reused across solves).
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/Core>
+#include <memory>
+#include <vector>
+
+#include "magnetostatics/assembly.hpp"
+#include "magnetostatics/dof_map.hpp"
+#include "magnetostatics/newton.hpp"
+#include "magnetostatics/problem.hpp"
+#include "mesh/mesh.hpp"
+
+namespace rheomag::magnetostatics {
+
+/// Settings of a solve.
+struct SolveOptions {
+  NewtonOptions newton;                ///< Newton tolerances and limits
+  bool incremental_inductance = true;  ///< compute dlambda/dI (one extra factorisation)
+};
+
+/// One solution: the nodal vector potential and the circuit quantities.
+struct Solution {
+  std::vector<double> currents;                ///< per circuit [A]
+  Eigen::VectorXd a;                           ///< A_phi (or A_z) at every mesh node [Wb/m]
+  NewtonReport newton;                         ///< iterations, residual history
+  std::vector<double> flux_linkage;            ///< per circuit lambda [Wb]
+  std::vector<double> incremental_inductance;  ///< per circuit dlambda/dI [H], if requested
+  double seconds = 0.0;                        ///< wall time of the solve
+};
+
+/// One row of a current sweep.
+struct SweepPoint {
+  double current = 0.0;                 ///< [A]
+  double flux_linkage = 0.0;            ///< [Wb]
+  double secant_inductance = 0.0;       ///< lambda / I [H] (incremental at I = 0)
+  double incremental_inductance = 0.0;  ///< dlambda/dI [H]
+  int newton_iterations = 0;
+};
+
+/// Nonlinear magnetostatic finite-element solver on a fixed mesh (see element_kernel.hpp for the
+/// weak form). Newton with the exact Jacobian; CHOLMOD supernodal Cholesky whose symbolic analysis
+/// is done once in the constructor and reused by every factorisation of every solve.
+class MagnetostaticSolver {
+ public:
+  /// Takes the problem (regions, materials, circuits, boundaries) and a mesh of it
+  /// (mesh.region indexes problem.regions). Throws InputError for inconsistent data.
+  MagnetostaticSolver(Problem problem, mesh::Mesh mesh, SolveOptions options = {});
+  MagnetostaticSolver(const MagnetostaticSolver&) = delete;
+  MagnetostaticSolver& operator=(const MagnetostaticSolver&) = delete;
+
+  /// Solves for the given current per circuit [A], from `initial_guess` (all nodes) or A = 0.
+  /// Throws ConvergenceError if Newton fails.
+  Solution solve(const std::vector<double>& currents,
+                 const Eigen::VectorXd* initial_guess = nullptr);
+  /// Solves with the currents of Problem::circuits.
+  Solution solve();
+  /// lambda(I) and L(I) of circuit `circuit` for each current (other circuits at their problem
+  /// currents), each solve warm-started from the previous one, same factorisation analysis.
+  std::vector<SweepPoint> sweep(int circuit, const std::vector<double>& currents);
+
+  const Problem& problem() const { return problem_; }
+  const mesh::Mesh& mesh() const { return mesh_; }
+  const DofMap& dofs() const { return dofs_; }
+  const Assembler& assembler() const { return *assembler_; }
+  const SolveOptions& options() const { return options_; }
+  /// Unit-current source / flux-linkage vector of circuit c over all nodes.
+  const Eigen::VectorXd& circuit_source(int c) const { return sources_[c]; }
+  /// Residual R(A) over the free dofs for nodal A and currents (for tests and diagnostics).
+  Eigen::VectorXd residual(const Eigen::VectorXd& a, const std::vector<double>& currents) const;
+  /// Lower-triangular exact tangent dR/dA (free dofs) at nodal A.
+  SparseMatrix tangent(const Eigen::VectorXd& a) const;
+  /// Number of numeric factorisations done so far (symbolic analysis is done once).
+  int factorizations() const { return factorizations_; }
+
+ private:
+  class System;
+  Eigen::VectorXd free_to_nodes(const Eigen::VectorXd& x) const;
+  void factorize_at(const Eigen::VectorXd& a_nodes);
+  Eigen::VectorXd solve_factorized(const Eigen::VectorXd& rhs);
+
+  Problem problem_;
+  mesh::Mesh mesh_;
+  SolveOptions options_;
+  DofMap dofs_;
+  std::unique_ptr<Assembler> assembler_;
+  std::vector<Eigen::VectorXd> sources_;
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholesky_;
+  SparseMatrix tangent_;
+  bool linear_ = true;
+  bool factorized_linear_ = false;  // linear problem: the one factorisation stays valid
+  int factorizations_ = 0;
+};
+
+}  // namespace rheomag::magnetostatics
