@@ -1,0 +1,245 @@
+// Quality triangulation of a PSLG (see mesher.hpp).
+
+#include "mesh/mesher.hpp"
+
+#include <CGAL/Delaunay_mesh_size_criteria_2.h>
+#include <CGAL/Delaunay_mesher_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <unordered_map>
+
+#include "mesh/elevate.hpp"
+#include "mesh/error.hpp"
+#include "mesh/pslg_check.hpp"
+#include "mesh/region_labels.hpp"
+#include "mesh/size_field.hpp"
+
+namespace rheomag::mesh {
+
+namespace {
+
+using detail::Cdt;
+using detail::CgalPoint;
+using detail::SizeField;
+
+/// CGAL's shape and size criteria with the size bound taken from a SizeField at the centroid of
+/// each face: a face is bad when its longest edge exceeds h(centroid) or its smallest angle is
+/// below the bound (CGAL's B = sin^2 of that angle).
+class SizeFieldCriteria : public CGAL::Delaunay_mesh_size_criteria_2<Cdt> {
+ public:
+  using Base = CGAL::Delaunay_mesh_size_criteria_2<Cdt>;
+  using Quality = Base::Quality;
+
+  SizeFieldCriteria(double shape_bound, std::shared_ptr<const SizeField> field)
+      : CGAL::Delaunay_mesh_criteria_2<Cdt>(shape_bound),
+        Base(shape_bound, 0.0),
+        field_(std::move(field)) {}
+
+  /// The face test used by CGAL's Delaunay_mesher_2.
+  class Is_bad : public Base::Is_bad {
+   public:
+    Is_bad(double shape_bound, const Geom_traits& traits, const SizeField* field)
+        : Base::Is_bad(shape_bound, 0.0, traits), field_(field) {}
+
+    using Base::Is_bad::operator();
+
+    CGAL::Mesh_2::Face_badness operator()(const Cdt::Face_handle& fh, Quality& q) const {
+      const CgalPoint& pa = fh->vertex(0)->point();
+      const CgalPoint& pb = fh->vertex(1)->point();
+      const CgalPoint& pc = fh->vertex(2)->point();
+      const double a = CGAL::squared_distance(pb, pc);
+      const double b = CGAL::squared_distance(pc, pa);
+      const double c = CGAL::squared_distance(pa, pb);
+      const double longest = std::max({a, b, c});
+      const double h = field_->at(CGAL::centroid(pa, pb, pc));
+      q.second = longest / (h * h);
+      if (q.size() > 1.0) {
+        q.first = 1.0;  // too large: the angle is not needed
+        return CGAL::Mesh_2::IMPERATIVELY_BAD;
+      }
+      const double middle = a + b + c - longest - std::min({a, b, c});
+      const double twice_area = 2.0 * CGAL::area(pa, pb, pc);
+      q.first = twice_area * twice_area / (longest * middle);  // sin^2 of the smallest angle
+      return q.sine() < this->B ? CGAL::Mesh_2::BAD : CGAL::Mesh_2::NOT_BAD;
+    }
+
+   private:
+    const SizeField* field_;
+  };
+
+  Is_bad is_bad_object() const { return Is_bad(this->bound(), this->traits, field_.get()); }
+
+ private:
+  std::shared_ptr<const SizeField> field_;
+};
+
+void check_options(const Pslg& pslg, const MeshOptions& options) {
+  const std::string name = pslg_name(pslg) + ": mesh option ";
+  if (options.order != 1 && options.order != 2)
+    throw InputError(name + "order = " + std::to_string(options.order) + "; expected 1 or 2");
+  if (!(options.min_angle > 0.0 && options.min_angle <= 30.0))
+    throw InputError(name + "min_angle = " + std::to_string(options.min_angle) +
+                     " deg; expected (0, 30] (CGAL's refinement is guaranteed to end up to "
+                     "about 20.7 deg)");
+  if (!(std::isfinite(options.default_size) && options.default_size >= 0.0))
+    throw InputError(name + "default_size = " + std::to_string(options.default_size) +
+                     "; expected a length >= 0 (0 = automatic)");
+  if (options.min_gap_elements < 1)
+    throw InputError(name + "min_gap_elements = " + std::to_string(options.min_gap_elements) +
+                     "; expected >= 1");
+  if (!(std::isfinite(options.grading) && options.grading >= 0.0))
+    throw InputError(name + "grading = " + std::to_string(options.grading) + "; expected >= 0");
+}
+
+/// Target edge length of each region: its mesh_size or the default, at most
+/// thickness / min_gap_elements in a fluid gap; infinite for holes.
+std::vector<double> region_sizes(const Pslg& pslg, const MeshOptions& options,
+                                 const std::vector<detail::RegionGeometry>& geometry,
+                                 double default_size) {
+  std::vector<double> size(pslg.regions.size());
+  for (std::size_t r = 0; r < pslg.regions.size(); ++r) {
+    const RegionSeed& region = pslg.regions[r];
+    if (region.hole) {
+      size[r] = std::numeric_limits<double>::infinity();
+      continue;
+    }
+    size[r] = region.mesh_size > 0.0 ? region.mesh_size : default_size;
+    if (region.gap != GapKind::none)
+      size[r] = std::min(size[r], geometry[r].thickness / options.min_gap_elements);
+  }
+  return size;
+}
+
+/// Refuses meshes whose estimated element count exceeds options.max_elements.
+void check_mesh_size(const Pslg& pslg, const MeshOptions& options,
+                     const std::vector<detail::RegionGeometry>& geometry,
+                     const std::vector<double>& size) {
+  if (options.max_elements <= 0) return;
+  // Equilateral triangles of edge h have area sqrt(3)/4 h^2; refined meshes are about twice as
+  // dense, hence the factor 2.
+  double estimate = 0.0;
+  for (std::size_t r = 0; r < size.size(); ++r)
+    if (std::isfinite(size[r]) && size[r] > 0.0)
+      estimate += 2.0 * geometry[r].area / (std::sqrt(3.0) / 4.0 * size[r] * size[r]);
+  if (estimate > static_cast<double>(options.max_elements))
+    throw InputError(pslg_name(pslg) + ": the requested mesh sizes give about " +
+                     std::to_string(static_cast<long>(estimate)) + " elements, more than the " +
+                     std::to_string(options.max_elements) +
+                     " allowed; expected larger mesh sizes (check units: lengths are in metres)");
+}
+
+double automatic_size(const Cdt& cdt) {
+  double r_lo = std::numeric_limits<double>::infinity(), r_hi = -r_lo, z_lo = r_lo, z_hi = -r_lo;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    r_lo = std::min(r_lo, v->point().x()), r_hi = std::max(r_hi, v->point().x());
+    z_lo = std::min(z_lo, v->point().y()), z_hi = std::max(z_hi, v->point().y());
+  }
+  return std::max(r_hi - r_lo, z_hi - z_lo) / 30.0;
+}
+
+/// Boundary marker of the coarse constrained edge that contains point m (a midpoint of a fine
+/// constrained edge): the constrained edge of the located face nearest to m.
+int marker_at(const Cdt& coarse, const CgalPoint& m, Cdt::Face_handle& hint) {
+  hint = coarse.locate(m, hint);
+  int best = -1;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    if (!coarse.is_constrained({hint, i})) continue;
+    const CgalPoint& a = hint->vertex(Cdt::ccw(i))->point();
+    const CgalPoint& b = hint->vertex(Cdt::cw(i))->point();
+    const double d = CGAL::squared_distance(m, Cdt::Geom_traits::Segment_2(a, b));
+    if (d < best_distance) best_distance = d, best = i;
+  }
+  return best < 0 ? -1 : hint->info().boundary[best];
+}
+
+/// Copies the refined in-domain faces of `fine` into a linear Mesh.
+Mesh extract_mesh(const Cdt& fine, const Cdt& coarse, const SizeField& field) {
+  Mesh mesh;
+  std::unordered_map<Cdt::Vertex_handle, int> index_of;
+  for (auto f = fine.finite_faces_begin(); f != fine.finite_faces_end(); ++f)
+    if (f->is_in_domain())
+      for (int i = 0; i < 3; ++i) index_of.emplace(f->vertex(i), -1);
+  // Nodes in the triangulation's own (deterministic) vertex order.
+  for (auto v = fine.finite_vertices_begin(); v != fine.finite_vertices_end(); ++v) {
+    auto it = index_of.find(v);
+    if (it == index_of.end()) continue;
+    it->second = static_cast<int>(mesh.nodes.size());
+    mesh.nodes.push_back({v->point().x(), v->point().y()});
+  }
+  for (auto f = fine.finite_faces_begin(); f != fine.finite_faces_end(); ++f) {
+    if (!f->is_in_domain()) continue;
+    std::array<int, 6> t{-1, -1, -1, -1, -1, -1};
+    for (int i = 0; i < 3; ++i) t[static_cast<std::size_t>(i)] = index_of.at(f->vertex(i));
+    mesh.triangles.push_back(t);
+    mesh.region.push_back(field.region_at(
+        CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point())));
+  }
+  Cdt::Face_handle hint = coarse.finite_faces_begin();
+  for (auto e = fine.finite_edges_begin(); e != fine.finite_edges_end(); ++e) {
+    if (!fine.is_constrained(*e)) continue;
+    auto [f, i] = *e;
+    if (!f->is_in_domain() || fine.is_infinite(f)) {
+      const Cdt::Face_handle n = f->neighbor(i);
+      i = n->index(f);
+      f = n;
+      if (!f->is_in_domain() || fine.is_infinite(f)) continue;
+    }
+    const CgalPoint& a = f->vertex(Cdt::ccw(i))->point();
+    const CgalPoint& b = f->vertex(Cdt::cw(i))->point();
+    const int marker = marker_at(coarse, CGAL::midpoint(a, b), hint);
+    if (marker < 0) continue;
+    // Nodes in the counter-clockwise order of the meshed face: domain on the left.
+    mesh.boundary_edges.push_back(
+        {{index_of.at(f->vertex(Cdt::ccw(i))), index_of.at(f->vertex(Cdt::cw(i))), -1}, marker});
+  }
+  mesh.vertex_count = static_cast<int>(mesh.nodes.size());
+  return mesh;
+}
+
+}  // namespace
+
+Mesh generate_mesh(const Pslg& pslg, const MeshOptions& options) {
+  check_options(pslg, options);
+  const PreparedPslg prepared = prepare_pslg(pslg);
+
+  Cdt coarse;
+  detail::insert_pslg(prepared, coarse);
+  detail::label_regions(pslg, coarse);
+  const int region_count = static_cast<int>(pslg.regions.size());
+  const auto geometry = detail::region_geometry(coarse, region_count);
+
+  const double default_size =
+      options.default_size > 0.0 ? options.default_size : automatic_size(coarse);
+  std::vector<double> size = region_sizes(pslg, options, geometry, default_size);
+  check_mesh_size(pslg, options, geometry, size);
+  auto field = std::make_shared<const SizeField>(coarse, size, options.grading);
+
+  Cdt fine = coarse;
+  bool anything_to_mesh = false;
+  for (auto f = fine.all_faces_begin(); f != fine.all_faces_end(); ++f) {
+    const int r = f->info().region;
+    const bool meshed = !fine.is_infinite(f) && r >= 0 && !pslg.regions[r].hole;
+    f->set_in_domain(meshed);
+    anything_to_mesh = anything_to_mesh || meshed;
+  }
+  if (!anything_to_mesh)
+    throw InputError(pslg_name(pslg) + ": every region is a hole; expected something to mesh");
+
+  const double angle = options.min_angle * std::numbers::pi / 180.0;
+  const double shape_bound = std::sin(angle) * std::sin(angle);
+  CGAL::Delaunay_mesher_2<Cdt, SizeFieldCriteria> mesher(fine,
+                                                         SizeFieldCriteria(shape_bound, field));
+  mesher.init(/*domain_specified=*/true);
+  mesher.refine_mesh();
+
+  Mesh mesh = extract_mesh(fine, coarse, *field);
+  return options.order == 2 ? elevate_to_p2(mesh) : mesh;
+}
+
+}  // namespace rheomag::mesh

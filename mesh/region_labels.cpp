@@ -1,0 +1,148 @@
+// The coarse triangulation of the PSLG with a region on every face (see region_labels.hpp).
+
+#include "mesh/region_labels.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+#include <stdexcept>
+#include <string>
+
+#include "mesh/error.hpp"
+
+namespace rheomag::mesh::detail {
+
+namespace {
+
+/// Gives `label` to every still unlabelled face reachable from `start` without crossing a
+/// constrained edge.
+void flood_fill(const Cdt& cdt, Cdt::Face_handle start, int label) {
+  std::queue<Cdt::Face_handle> queue;
+  start->info().region = label;
+  queue.push(start);
+  while (!queue.empty()) {
+    Cdt::Face_handle f = queue.front();
+    queue.pop();
+    for (int i = 0; i < 3; ++i) {
+      Cdt::Face_handle n = f->neighbor(i);
+      if (cdt.is_constrained({f, i}) || n->info().region != kUnlabelled) continue;
+      n->info().region = label;
+      queue.push(n);
+    }
+  }
+}
+
+std::string region_label(const Pslg& pslg, int i) {
+  return "region " + std::to_string(i) + " '" + pslg.regions[static_cast<std::size_t>(i)].name +
+         "'";
+}
+
+void set_edge_data(const Cdt& cdt, Cdt::Vertex_handle va, Cdt::Vertex_handle vb, int boundary,
+                   double max_length) {
+  Cdt::Face_handle f;
+  int i = 0;
+  if (!cdt.is_edge(va, vb, f, i))
+    throw std::logic_error("rheomag mesh: a validated segment is not an edge of the CDT");
+  Cdt::Face_handle n = f->neighbor(i);
+  const int j = n->index(f);
+  f->info().boundary[i] = n->info().boundary[j] = boundary;
+  f->info().max_length[i] = n->info().max_length[j] = max_length;
+}
+
+}  // namespace
+
+void insert_pslg(const PreparedPslg& prepared, Cdt& cdt) {
+  struct ConstrainedEdge {
+    Cdt::Vertex_handle a, b;
+    int boundary;
+    double max_length;
+  };
+  std::vector<Cdt::Vertex_handle> vertex;
+  vertex.reserve(prepared.points.size());
+  for (const Point& p : prepared.points) vertex.push_back(cdt.insert(CgalPoint(p.r, p.z)));
+  std::vector<ConstrainedEdge> edges;
+  for (const PreparedSegment& s : prepared.segments) {
+    const Point& a = prepared.points[static_cast<std::size_t>(s.a)];
+    const Point& b = prepared.points[static_cast<std::size_t>(s.b)];
+    const double length = std::hypot(b.r - a.r, b.z - a.z);
+    const int pieces =
+        s.max_length > 0.0 ? std::max(1, static_cast<int>(std::ceil(length / s.max_length))) : 1;
+    Cdt::Vertex_handle from = vertex[static_cast<std::size_t>(s.a)];
+    for (int k = 1; k <= pieces; ++k) {
+      const double t = static_cast<double>(k) / pieces;
+      Cdt::Vertex_handle to =
+          k == pieces ? vertex[static_cast<std::size_t>(s.b)]
+                      : cdt.insert(CgalPoint(a.r + t * (b.r - a.r), a.z + t * (b.z - a.z)));
+      cdt.insert_constraint(from, to);
+      edges.push_back({from, to, s.boundary, s.max_length});
+      from = to;
+    }
+  }
+  // Markers are set once all constraints are in, when no edge can be split any more.
+  for (const ConstrainedEdge& e : edges) set_edge_data(cdt, e.a, e.b, e.boundary, e.max_length);
+}
+
+void label_regions(const Pslg& pslg, Cdt& cdt) {
+  const std::string name = pslg_name(pslg);
+  if (cdt.dimension() < 2)
+    throw InputError(name + ": the points are all on one line; expected closed boundaries");
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
+    f->info().region = kUnlabelled;
+  flood_fill(cdt, cdt.infinite_face(), kOutside);
+
+  for (std::size_t i = 0; i < pslg.regions.size(); ++i) {
+    const RegionSeed& region = pslg.regions[i];
+    Cdt::Face_handle f = cdt.locate(CgalPoint(region.seed.r, region.seed.z));
+    const int label = f->info().region;
+    if (cdt.is_infinite(f) || label == kOutside)
+      throw InputError(name + ": the seed point " + format_point(region.seed) + " of " +
+                       region_label(pslg, static_cast<int>(i)) +
+                       " lies outside every closed boundary; expected a point inside the "
+                       "region (is its boundary closed?)");
+    if (label >= 0)
+      throw InputError(name + ": " + region_label(pslg, label) + " and " +
+                       region_label(pslg, static_cast<int>(i)) +
+                       " have their seed points in the same enclosed area (near " +
+                       format_point(region.seed) +
+                       "); expected one seed per area (overlapping regions, or an open "
+                       "boundary between them?)");
+    flood_fill(cdt, f, static_cast<int>(i));
+  }
+
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (f->info().region != kUnlabelled) continue;
+    if (pslg.default_region < 0) {
+      const CgalPoint c =
+          CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+      throw InputError(name + ": no region/material for the area near " +
+                       format_point({c.x(), c.y()}) +
+                       "; expected a region seed (block label) inside every closed area");
+    }
+    flood_fill(cdt, f, pslg.default_region);
+  }
+}
+
+std::vector<RegionGeometry> region_geometry(const Cdt& cdt, int region_count) {
+  std::vector<RegionGeometry> geometry(static_cast<std::size_t>(region_count));
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    const int r = f->info().region;
+    if (r < 0) continue;
+    RegionGeometry& g = geometry[static_cast<std::size_t>(r)];
+    g.area += CGAL::area(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+    for (int i = 0; i < 3; ++i) {
+      if (f->neighbor(i)->info().region == r && !cdt.is_infinite(f->neighbor(i))) continue;
+      g.perimeter += std::sqrt(
+          CGAL::squared_distance(f->vertex(Cdt::ccw(i))->point(), f->vertex(Cdt::cw(i))->point()));
+    }
+  }
+  for (RegionGeometry& g : geometry) {
+    const double half_perimeter = 0.5 * g.perimeter;
+    const double discriminant = std::max(0.0, half_perimeter * half_perimeter - 4.0 * g.area);
+    // Smaller root in the cancellation-free form 2A / (P/2 + sqrt(disc)).
+    const double denominator = half_perimeter + std::sqrt(discriminant);
+    g.thickness = denominator > 0.0 ? 2.0 * g.area / denominator : 0.0;
+  }
+  return geometry;
+}
+
+}  // namespace rheomag::mesh::detail

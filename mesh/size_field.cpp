@@ -1,0 +1,98 @@
+// The target element edge length at any point of the domain (see size_field.hpp).
+
+#include "mesh/size_field.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rheomag::mesh::detail {
+
+namespace {
+
+/// Number of grid cells along the longer side of the bounding box.
+constexpr int kGridCells = 64;
+
+double distance(const CgalPoint& p, const CgalPoint& a, const CgalPoint& b) {
+  const double dr = b.x() - a.x(), dz = b.y() - a.y();
+  const double length_sq = dr * dr + dz * dz;
+  double t = length_sq > 0.0 ? ((p.x() - a.x()) * dr + (p.y() - a.y()) * dz) / length_sq : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  return std::hypot(a.x() + t * dr - p.x(), a.y() + t * dz - p.y());
+}
+
+}  // namespace
+
+SizeField::SizeField(const Cdt& coarse, std::vector<double> region_size, double grading)
+    : coarse_(coarse), region_size_(std::move(region_size)), grading_(grading) {
+  hint_ = coarse_.finite_faces_begin();
+  double largest = 0.0;
+  for (double h : region_size_)
+    if (std::isfinite(h)) largest = std::max(largest, h);
+  if (grading_ <= 0.0) return;
+
+  auto size_of = [&](int region) {
+    return region >= 0 ? region_size_[static_cast<std::size_t>(region)]
+                       : std::numeric_limits<double>::infinity();
+  };
+  for (auto e = coarse_.finite_edges_begin(); e != coarse_.finite_edges_end(); ++e) {
+    if (!coarse_.is_constrained(*e)) continue;
+    const auto [f, i] = *e;
+    double size = std::min(size_of(f->info().region), size_of(f->neighbor(i)->info().region));
+    if (f->info().max_length[i] > 0.0) size = std::min(size, f->info().max_length[i]);
+    if (size < largest)
+      sources_.push_back({f->vertex(Cdt::ccw(i))->point(), f->vertex(Cdt::cw(i))->point(), size});
+  }
+
+  double r_lo = std::numeric_limits<double>::infinity(), r_hi = -r_lo, z_lo = r_lo, z_hi = -r_lo;
+  for (auto v = coarse_.finite_vertices_begin(); v != coarse_.finite_vertices_end(); ++v) {
+    r_lo = std::min(r_lo, v->point().x()), r_hi = std::max(r_hi, v->point().x());
+    z_lo = std::min(z_lo, v->point().y()), z_hi = std::max(z_hi, v->point().y());
+  }
+  r0_ = r_lo, z0_ = z_lo;
+  cell_ = std::max(r_hi - r_lo, z_hi - z_lo) / kGridCells;
+  columns_ = static_cast<int>((r_hi - r_lo) / cell_) + 1;
+  rows_ = static_cast<int>((z_hi - z_lo) / cell_) + 1;
+  buckets_.assign(static_cast<std::size_t>(columns_ * rows_), {});
+  for (std::size_t s = 0; s < sources_.size(); ++s)
+    add_to_grid(static_cast<int>(s), (largest - sources_[s].size) / grading_);
+}
+
+void SizeField::add_to_grid(int source, double reach) {
+  const Source& s = sources_[static_cast<std::size_t>(source)];
+  auto column = [&](double r) {
+    return std::clamp(static_cast<int>(std::floor((r - r0_) / cell_)), 0, columns_ - 1);
+  };
+  auto row = [&](double z) {
+    return std::clamp(static_cast<int>(std::floor((z - z0_) / cell_)), 0, rows_ - 1);
+  };
+  const int c0 = column(std::min(s.a.x(), s.b.x()) - reach);
+  const int c1 = column(std::max(s.a.x(), s.b.x()) + reach);
+  const int w0 = row(std::min(s.a.y(), s.b.y()) - reach);
+  const int w1 = row(std::max(s.a.y(), s.b.y()) + reach);
+  for (int w = w0; w <= w1; ++w)
+    for (int c = c0; c <= c1; ++c)
+      buckets_[static_cast<std::size_t>(w * columns_ + c)].push_back(source);
+}
+
+int SizeField::region_at(const CgalPoint& p) const {
+  hint_ = coarse_.locate(p, hint_);
+  return coarse_.is_infinite(hint_) ? kOutside : hint_->info().region;
+}
+
+double SizeField::at(const CgalPoint& p) const {
+  const int region = region_at(p);
+  double h = region >= 0 ? region_size_[static_cast<std::size_t>(region)]
+                         : std::numeric_limits<double>::infinity();
+  if (buckets_.empty()) return h;
+  const int c = std::clamp(static_cast<int>(std::floor((p.x() - r0_) / cell_)), 0, columns_ - 1);
+  const int w = std::clamp(static_cast<int>(std::floor((p.y() - z0_) / cell_)), 0, rows_ - 1);
+  for (int s : buckets_[static_cast<std::size_t>(w * columns_ + c)]) {
+    const Source& source = sources_[static_cast<std::size_t>(s)];
+    if (source.size >= h) continue;
+    h = std::min(h, source.size + grading_ * distance(p, source.a, source.b));
+  }
+  return h;
+}
+
+}  // namespace rheomag::mesh::detail

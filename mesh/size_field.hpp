@@ -1,0 +1,43 @@
+#pragma once
+// Internal to rheomag_mesh: the target element edge length at any point of the domain.
+
+#include <vector>
+
+#include "mesh/cdt.hpp"
+
+namespace rheomag::mesh::detail {
+
+/// h(x) = min(h_region(x), min over finer segments s of h_s + grading * distance(x, s)), where
+/// h_region is the target of the region containing x (located in the labelled coarse
+/// triangulation) and h_s the smallest target on either side of constrained edge s (or its
+/// max_length). The second term grades the mesh away from small regions and short edges.
+class SizeField {
+ public:
+  /// `region_size[r]` is the target edge length of region r [m]; `coarse` must outlive this.
+  SizeField(const Cdt& coarse, std::vector<double> region_size, double grading);
+
+  /// Target edge length at p [m].
+  double at(const CgalPoint& p) const;
+
+  /// Region containing p (a face label of the coarse triangulation).
+  int region_at(const CgalPoint& p) const;
+
+ private:
+  struct Source {
+    CgalPoint a, b;
+    double size;
+  };
+  void add_to_grid(int source, double reach);
+
+  const Cdt& coarse_;
+  std::vector<double> region_size_;
+  double grading_;
+  std::vector<Source> sources_;
+  // Uniform grid of buckets over the bounding box: the sources that can bind in each cell.
+  double r0_ = 0.0, z0_ = 0.0, cell_ = 1.0;
+  int columns_ = 0, rows_ = 0;
+  std::vector<std::vector<int>> buckets_;
+  mutable Cdt::Face_handle hint_;
+};
+
+}  // namespace rheomag::mesh::detail
