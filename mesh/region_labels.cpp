@@ -9,6 +9,7 @@
 #include <string>
 
 #include "mesh/error.hpp"
+#include "mesh/quality.hpp"
 
 namespace rheomag::mesh::detail {
 
@@ -135,13 +136,7 @@ std::vector<RegionGeometry> region_geometry(const Cdt& cdt, int region_count) {
           CGAL::squared_distance(f->vertex(Cdt::ccw(i))->point(), f->vertex(Cdt::cw(i))->point()));
     }
   }
-  for (RegionGeometry& g : geometry) {
-    const double half_perimeter = 0.5 * g.perimeter;
-    const double discriminant = std::max(0.0, half_perimeter * half_perimeter - 4.0 * g.area);
-    // Smaller root in the cancellation-free form 2A / (P/2 + sqrt(disc)).
-    const double denominator = half_perimeter + std::sqrt(discriminant);
-    g.thickness = denominator > 0.0 ? 2.0 * g.area / denominator : 0.0;
-  }
+  for (RegionGeometry& g : geometry) g.thickness = band_thickness(g.area, g.perimeter);
   return geometry;
 }
 

@@ -13,9 +13,7 @@ namespace rheomag::mesh::detail {
 struct RegionGeometry {
   double area = 0.0;
   double perimeter = 0.0;
-  /// Thickness t of a thin band: the smaller root of t^2 - (P/2) t + A = 0, i.e. the short side
-  /// of the rectangle with the region's area A and perimeter P (exact for rectangles and for
-  /// bands of constant thickness; 4A/P if there is no real root, e.g. the diameter of a disc).
+  /// band_thickness(area, perimeter) (see quality.hpp).
   double thickness = 0.0;
 };
 
