@@ -15,6 +15,7 @@
 
 #include "mesh/elevate.hpp"
 #include "mesh/error.hpp"
+#include "mesh/initial_points.hpp"
 #include "mesh/pslg_check.hpp"
 #include "mesh/region_labels.hpp"
 #include "mesh/size_field.hpp"
@@ -221,10 +222,19 @@ Mesh generate_mesh(const Pslg& pslg, const MeshOptions& options) {
   auto field = std::make_shared<const SizeField>(coarse, size, options.grading);
 
   Cdt fine = coarse;
+  // Start from a lattice at the target sizes: the refinement then only repairs the boundary
+  // layers and graded zones instead of growing every region from its corners.
+  Cdt::Face_handle hint;
+  for (const CgalPoint& p : detail::lattice_points(coarse, size, *field))
+    hint = fine.insert(p, hint)->face();
   bool anything_to_mesh = false;
   for (auto f = fine.all_faces_begin(); f != fine.all_faces_end(); ++f) {
-    const int r = f->info().region;
-    const bool meshed = !fine.is_infinite(f) && r >= 0 && !pslg.regions[r].hole;
+    bool meshed = false;
+    if (!fine.is_infinite(f)) {
+      const int r = field->region_at(
+          CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()));
+      meshed = r >= 0 && !pslg.regions[static_cast<std::size_t>(r)].hole;
+    }
     f->set_in_domain(meshed);
     anything_to_mesh = anything_to_mesh || meshed;
   }
