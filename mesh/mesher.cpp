@@ -84,17 +84,17 @@ void check_options(const Pslg& pslg, const MeshOptions& options) {
   if (options.order != 1 && options.order != 2)
     throw InputError(name + "order = " + std::to_string(options.order) + "; expected 1 or 2");
   if (!(options.min_angle > 0.0 && options.min_angle <= 30.0))
-    throw InputError(name + "min_angle = " + std::to_string(options.min_angle) +
+    throw InputError(name + "min_angle = " + format_number(options.min_angle) +
                      " deg; expected (0, 30] (CGAL's refinement is guaranteed to end up to "
                      "about 20.7 deg)");
   if (!(std::isfinite(options.default_size) && options.default_size >= 0.0))
-    throw InputError(name + "default_size = " + std::to_string(options.default_size) +
+    throw InputError(name + "default_size = " + format_number(options.default_size) +
                      "; expected a length >= 0 (0 = automatic)");
   if (options.min_gap_elements < 1)
     throw InputError(name + "min_gap_elements = " + std::to_string(options.min_gap_elements) +
                      "; expected >= 1");
   if (!(std::isfinite(options.grading) && options.grading >= 0.0))
-    throw InputError(name + "grading = " + std::to_string(options.grading) + "; expected >= 0");
+    throw InputError(name + "grading = " + format_number(options.grading) + "; expected >= 0");
 }
 
 /// Target edge length of each region: its mesh_size or the default, at most

@@ -55,7 +55,7 @@ void check_finite(const Pslg& pslg) {
                      format_point(s.seed));
     if (!std::isfinite(s.mesh_size) || s.mesh_size < 0.0)
       fail(pslg, "region " + std::to_string(i) + " '" + s.name + "' has mesh size " +
-                     std::to_string(s.mesh_size) +
+                     format_number(s.mesh_size) +
                      "; expected a finite length >= 0 (0 = automatic)");
   }
   for (std::size_t i = 0; i < pslg.segments.size(); ++i) {
@@ -69,7 +69,7 @@ void check_finite(const Pslg& pslg) {
                      std::to_string(s.a) + " " + format_point(pslg.points[s.a]) + ")");
     if (!std::isfinite(s.max_length) || s.max_length < 0.0)
       fail(pslg, "segment " + std::to_string(i) + " has maximum edge length " +
-                     std::to_string(s.max_length) + "; expected a finite length >= 0");
+                     format_number(s.max_length) + "; expected a finite length >= 0");
   }
   if (pslg.default_region < -1 || pslg.default_region >= static_cast<int>(pslg.regions.size()))
     fail(pslg, "default region " + std::to_string(pslg.default_region) +
@@ -213,6 +213,13 @@ void check_seeds_off_segments(const Pslg& pslg, const std::vector<PreparedSegmen
 }
 
 }  // namespace
+
+std::string format_number(double value) {
+  std::ostringstream out;
+  out.precision(9);
+  out << value;
+  return out.str();
+}
 
 std::string format_point(const Point& p) {
   std::ostringstream out;

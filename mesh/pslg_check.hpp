@@ -33,6 +33,9 @@ struct PreparedPslg {
 /// non-finite or lie on a segment, and a default region index out of range.
 PreparedPslg prepare_pslg(const Pslg& pslg);
 
+/// A number with up to 9 significant digits (no trailing zeros), for messages.
+std::string format_number(double value);
+
 /// "(r, z)" with enough digits to find the place in the input.
 std::string format_point(const Point& p);
 
