@@ -147,30 +147,37 @@ void Assembler::assemble(const Eigen::VectorXd& a, Eigen::VectorXd& residual,
   scatter_robin(a, residual, tangent);
 }
 
+template <class Visit>
+void Assembler::for_robin_points(const RobinEdge& edge, Visit visit) const {
+  // Edge quadrature: visit(shape values, weight dw = 2 pi r ds or depth ds).
+  const mesh::Point p0 = mesh_.nodes[edge.nodes[0]], p1 = mesh_.nodes[edge.nodes[1]];
+  const double length = std::hypot(p1.r - p0.r, p1.z - p0.z);
+  for (const EdgeQuadraturePoint& g : edge_quadrature()) {
+    double n[3] = {0.0, 0.0, 0.0};
+    edge_basis(mesh_.order, g.t, n);
+    const double r = p0.r + g.t * (p1.r - p0.r);
+    visit(n, g.weight * length *
+                 (problem_.symmetry == Symmetry::axisymmetric ? 2.0 * std::numbers::pi * r
+                                                              : problem_.depth));
+  }
+}
+
 void Assembler::scatter_robin(const Eigen::VectorXd& a, Eigen::VectorXd& residual,
                               SparseMatrix* tangent) const {
-  // Mixed condition  -(n x H) . e_phi + c0 A = c1  adds  integral (c0 A - c1) v dw  along the
-  // edge, dw = 2 pi r ds (axisymmetric) or depth ds (planar).
+  // Mixed condition  (n x H) . e_phi = c0 A - c1  (planar: nu dA/dn + c0 A = c1) adds
+  // integral (c0 A - c1) v dw along the edge, dw = 2 pi r ds (axisymmetric) or depth ds.
   const int edge_nodes = mesh_.order == 1 ? 2 : 3;
   for (std::size_t k = 0; k < robin_edges_.size(); ++k) {
     const RobinEdge& edge = robin_edges_[k];
-    const mesh::Point p0 = mesh_.nodes[edge.nodes[0]], p1 = mesh_.nodes[edge.nodes[1]];
-    const double length = std::hypot(p1.r - p0.r, p1.z - p0.z);
     double r_local[3] = {0, 0, 0}, k_local[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-    for (const EdgeQuadraturePoint& g : edge_quadrature()) {
-      double n[3];
-      edge_basis(mesh_.order, g.t, n);
-      const double r = p0.r + g.t * (p1.r - p0.r);
-      const double w = g.weight * length *
-                       (problem_.symmetry == Symmetry::axisymmetric ? 2.0 * std::numbers::pi * r
-                                                                    : problem_.depth);
+    for_robin_points(edge, [&](const double* n, double w) {
       double a_point = 0.0;
       for (int i = 0; i < edge_nodes; ++i) a_point += n[i] * a[edge.nodes[i]];
       for (int i = 0; i < edge_nodes; ++i) {
         r_local[i] += w * (edge.c0 * a_point - edge.c1) * n[i];
         for (int j = 0; j < edge_nodes; ++j) k_local[i * 3 + j] += w * edge.c0 * n[i] * n[j];
       }
-    }
+    });
     for (int i = 0; i < edge_nodes; ++i) {
       const int row = dofs_.dof_of_node[edge.nodes[i]];
       if (row >= 0) residual[row] += r_local[i];
@@ -181,6 +188,19 @@ void Assembler::scatter_robin(const Eigen::VectorXd& a, Eigen::VectorXd& residua
       if (offset >= 0) tangent->valuePtr()[offset] += k_local[i];
     }
   }
+}
+
+double Assembler::boundary_energy(const Eigen::VectorXd& a) const {
+  const int edge_nodes = mesh_.order == 1 ? 2 : 3;
+  double energy = 0.0;
+  for (const RobinEdge& edge : robin_edges_) {
+    for_robin_points(edge, [&](const double* n, double w) {
+      double a_point = 0.0;
+      for (int i = 0; i < edge_nodes; ++i) a_point += n[i] * a[edge.nodes[i]];
+      energy += w * (0.5 * edge.c0 * a_point * a_point - edge.c1 * a_point);
+    });
+  }
+  return energy;
 }
 
 Eigen::VectorXd Assembler::circuit_source(int c) const {

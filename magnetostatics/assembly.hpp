@@ -41,6 +41,9 @@ class Assembler {
   const Reluctivity& law(int e) const { return laws_[material_of_element_[e]]; }
   /// Meridian-plane area of each region [m^2] (index as Problem::regions).
   const std::vector<double>& region_areas() const { return region_area_; }
+  /// Energy of the mixed (Robin) boundary terms, integral (c0 A^2 / 2 - c1 A) dw [J]: for the
+  /// open boundary (c0 = nu0 / R0, c1 = 0) the exact field energy outside R0 of a dipole field.
+  double boundary_energy(const Eigen::VectorXd& a) const;
   /// True when some material has a B-H curve.
   bool nonlinear() const;
 
@@ -49,6 +52,8 @@ class Assembler {
     std::array<int, 3> nodes;
     double c0, c1;
   };
+  template <class Visit>
+  void for_robin_points(const RobinEdge& edge, Visit visit) const;
   void scatter_robin(const Eigen::VectorXd& a, Eigen::VectorXd& residual,
                      SparseMatrix* tangent) const;
   int matrix_offset(int row, int col) const;  // position in pattern_ values, -1 if not stored

@@ -74,6 +74,8 @@ BhCurve::BhCurve(const std::vector<BhPoint>& table, const std::string& material)
   a_ = 0.5 * (3.0 * secant[0] - slope[1]);
   c_ = (slope[1] - secant[0]) / (2.0 * b_[1] * b_[1]);
 
+  end_slope_ = slope[n];
+  tau_ = width[n - 1];
   for (std::size_t k = 1; k < n; ++k) {
     cubics_.push_back({b_[k], b_[k + 1], h_[k], h_[k + 1], slope[k], slope[k + 1]});
   }
@@ -112,14 +114,19 @@ double BhCurve::cubic_energy(const Cubic& c, double b) const {
 double BhCurve::h(double b) const {
   const int k = interval(b);
   if (k < 0) return b * (a_ + c_ * b * b);
-  if (k == static_cast<int>(cubics_.size())) return h_.back() + (b - b_.back()) * kNu0;
+  if (k == static_cast<int>(cubics_.size())) {
+    const double x = b - b_.back();
+    return h_.back() + kNu0 * x - (end_slope_ - kNu0) * tau_ * std::expm1(-x / tau_);
+  }
   return cubic_h(cubics_[k], b);
 }
 
 double BhCurve::dh_db(double b) const {
   const int k = interval(b);
   if (k < 0) return a_ + 3.0 * c_ * b * b;
-  if (k == static_cast<int>(cubics_.size())) return kNu0;
+  if (k == static_cast<int>(cubics_.size())) {
+    return kNu0 + (end_slope_ - kNu0) * std::exp(-(b - b_.back()) / tau_);
+  }
   return cubic_dh(cubics_[k], b);
 }
 
@@ -139,8 +146,9 @@ double BhCurve::energy_density(double b) const {
   const int k = interval(b);
   if (k < 0) return 0.5 * a_ * b * b + 0.25 * c_ * b * b * b * b;
   if (k == static_cast<int>(cubics_.size())) {
-    const double db = b - b_.back();
-    return energy_at_.back() + h_.back() * db + 0.5 * kNu0 * db * db;
+    const double x = b - b_.back();
+    return energy_at_.back() + h_.back() * x + 0.5 * kNu0 * x * x +
+           (end_slope_ - kNu0) * tau_ * (x + tau_ * std::expm1(-x / tau_));
   }
   return energy_at_[k + 1] + cubic_energy(cubics_[k], b);
 }

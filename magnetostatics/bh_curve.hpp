@@ -16,9 +16,13 @@ namespace rheomag::magnetostatics {
 /// nu = H/B = a + c B^2 is linear in B^2 near B = 0: nu(0) = a and d nu/d(B^2) = c are finite
 /// (the B -> 0 limit is exact, no division by B). dH/dB > 0 everywhere (strictly monotone).
 ///
-/// Extrapolation beyond the last table point (B_n, H_n), as FEMM does: H = H_n + (B - B_n)/mu0,
-/// i.e. the differential permeability becomes mu0 (full saturation). H is continuous there,
-/// dH/dB jumps from the table's end slope to 1/mu0.
+/// Extrapolation beyond the last table point (B_n, H_n, end slope d_n), with x = B - B_n and
+/// tau = B_n - B_{n-1} (the last table spacing):
+///   H = H_n + x / mu0 + (d_n - 1/mu0) tau (1 - exp(-x / tau)),
+/// i.e. the differential permeability dB/dH relaxes from the table's end value to mu0 within a
+/// few tau (full saturation: M = B/mu0 - H tends to the constant M_n + (1/mu0 - d_n) tau).
+/// H and dH/dB are continuous (dH/dB Lipschitz, which keeps Newton quadratic); FEMM's linear
+/// extrapolation with slope 1/mu0 is the tau -> 0 limit.
 class BhCurve {
  public:
   /// Builds the curve; `material` names the material in error messages. A leading (0, 0) point is
@@ -46,10 +50,11 @@ class BhCurve {
   double cubic_dh(const Cubic& c, double b) const;
   double cubic_energy(const Cubic& c, double b) const;  // integral from c.b0 to b
 
-  std::vector<double> b_, h_;      // table with (0, 0) first
-  double a_ = 0.0, c_ = 0.0;       // first interval: H = B (a + c B^2)
-  std::vector<Cubic> cubics_;      // intervals 1 .. n-1 (cubics_[k] spans b_[k+1] .. b_[k+2])
-  std::vector<double> energy_at_;  // w(b_[k])
+  std::vector<double> b_, h_;           // table with (0, 0) first
+  double a_ = 0.0, c_ = 0.0;            // first interval: H = B (a + c B^2)
+  std::vector<Cubic> cubics_;           // intervals 1 .. n-1 (cubics_[k] spans b_[k+1] .. b_[k+2])
+  std::vector<double> energy_at_;       // w(b_[k])
+  double end_slope_ = 0.0, tau_ = 0.0;  // extrapolation: d_n and relaxation length [T]
 };
 
 }  // namespace rheomag::magnetostatics

@@ -117,6 +117,11 @@ Solution MagnetostaticSolver::solve() {
 
 Solution MagnetostaticSolver::solve(const std::vector<double>& currents,
                                     const Eigen::VectorXd* initial_guess) {
+  return solve_with(currents, initial_guess, options_.incremental_inductance);
+}
+
+Solution MagnetostaticSolver::solve_with(const std::vector<double>& currents,
+                                         const Eigen::VectorXd* initial_guess, bool incremental) {
   const auto start = std::chrono::steady_clock::now();
   if (currents.size() != problem_.circuits.size()) {
     throw InputError(std::to_string(currents.size()) + " current(s) given for " +
@@ -142,7 +147,7 @@ Solution MagnetostaticSolver::solve(const std::vector<double>& currents,
   solution.newton = newton_solve(system, x, scale, options_.newton);
   solution.a = free_to_nodes(x);
   for (const Eigen::VectorXd& f : sources_) solution.flux_linkage.push_back(f.dot(solution.a));
-  if (options_.incremental_inductance && n > 0) {
+  if (incremental && n > 0) {
     // dlambda_c/dI_c = F_c^T K_t^{-1} F_c with K_t the exact tangent at the solution.
     factorize_at(solution.a);
     for (const Eigen::VectorXd& f : sources_) {
@@ -166,11 +171,9 @@ std::vector<SweepPoint> MagnetostaticSolver::sweep(int circuit,
   for (const Circuit& c : problem_.circuits) present.push_back(c.current);
   std::vector<SweepPoint> table;
   Eigen::VectorXd previous;
-  const bool keep = options_.incremental_inductance;
-  options_.incremental_inductance = true;
   for (double current : currents) {
     present[circuit] = current;
-    Solution s = solve(present, previous.size() ? &previous : nullptr);
+    Solution s = solve_with(present, previous.size() ? &previous : nullptr, true);
     SweepPoint point;
     point.current = current;
     point.flux_linkage = s.flux_linkage[circuit];
@@ -181,7 +184,6 @@ std::vector<SweepPoint> MagnetostaticSolver::sweep(int circuit,
     table.push_back(point);
     previous = std::move(s.a);
   }
-  options_.incremental_inductance = keep;
   return table;
 }
 

@@ -12,6 +12,7 @@
 #include "magnetostatics/newton.hpp"
 #include "magnetostatics/problem.hpp"
 #include "mesh/mesh.hpp"
+#include "mesh/mesher.hpp"
 
 namespace rheomag::magnetostatics {
 
@@ -19,6 +20,8 @@ namespace rheomag::magnetostatics {
 struct SolveOptions {
   NewtonOptions newton;                ///< Newton tolerances and limits
   bool incremental_inductance = true;  ///< compute dlambda/dI (one extra factorisation)
+  /// Meshing, used by solve_problem only (its order and min_gap_elements come from the Problem).
+  mesh::MeshOptions mesh;
 };
 
 /// One solution: the nodal vector potential and the circuit quantities.
@@ -77,6 +80,8 @@ class MagnetostaticSolver {
 
  private:
   class System;
+  Solution solve_with(const std::vector<double>& currents, const Eigen::VectorXd* initial_guess,
+                      bool incremental);
   Eigen::VectorXd free_to_nodes(const Eigen::VectorXd& x) const;
   void factorize_at(const Eigen::VectorXd& a_nodes);
   Eigen::VectorXd solve_factorized(const Eigen::VectorXd& rhs);

@@ -1,0 +1,27 @@
+#pragma once
+// One call from a Problem to results: close the domain, mesh, solve, post-process.
+
+#include <memory>
+
+#include "magnetostatics/problem.hpp"
+#include "magnetostatics/results.hpp"
+#include "magnetostatics/solver.hpp"
+#include "mesh/mesher.hpp"
+
+namespace rheomag::magnetostatics {
+
+/// Everything solve_problem produces. The solver is kept (it owns the closed problem and the
+/// mesh) so more currents or a sweep can be solved with the same factorisation analysis.
+struct SolveResult {
+  std::unique_ptr<MagnetostaticSolver> solver;
+  Solution solution;
+  Results results;
+  double mesh_seconds = 0.0;  ///< time spent closing the domain and meshing
+};
+
+/// close_domain -> mesh::generate_mesh (order Problem::order, Problem::min_gap_elements) ->
+/// MagnetostaticSolver -> solve at the Problem's circuit currents -> compute_results.
+/// Throws InputError for bad input and ConvergenceError if Newton fails.
+SolveResult solve_problem(const Problem& problem, const SolveOptions& options = {});
+
+}  // namespace rheomag::magnetostatics

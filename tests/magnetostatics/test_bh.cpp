@@ -1,0 +1,136 @@
+// B-H curve: interpolation, monotonicity, derivatives, B -> 0 limit, extrapolation, energy and
+// validation of bad tables.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+
+#include "magnetostatics/bh_curve.hpp"
+#include "magnetostatics/constants.hpp"
+#include "mesh/error.hpp"
+
+namespace rheomag::magnetostatics {
+namespace {
+
+/// AISI 1010 B-H table from the shared data (CSV: H [A/m], B [T]).
+std::vector<BhPoint> aisi1010() {
+  std::ifstream in(RHEOMAG_SHARED_DIR "/data/materials/bh_aisi1010_dosa.csv");
+  std::vector<BhPoint> table;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line[0] == 'H') continue;
+    std::istringstream fields(line);
+    double h = 0.0, b = 0.0;
+    char comma = 0;
+    fields >> h >> comma >> b;
+    table.push_back({b, h});
+  }
+  return table;
+}
+
+TEST(BhCurve, ReproducesTheTablePoints) {
+  // Reference: the table itself; tolerance 1e-9 relative (interpolation is exact at the nodes).
+  const auto table = aisi1010();
+  ASSERT_GE(table.size(), 30u);
+  const BhCurve curve(table, "AISI 1010");
+  for (const BhPoint& p : table) EXPECT_NEAR(curve.h(p.b), p.h, 1e-9 * (1.0 + p.h));
+}
+
+TEST(BhCurve, IsStrictlyMonotoneWithConsistentDerivatives) {
+  // Reference: dH/dB, d nu/d(B^2) and H = dw/dB against central finite differences (step 1e-6 T,
+  // tolerance 1e-5 relative); dH/dB > 0 everywhere (monotone interpolation, issue 2).
+  const BhCurve curve(aisi1010(), "AISI 1010");
+  double previous = -1.0;
+  for (double b = 1e-4; b < 3.0; b += 0.00731) {
+    const double h = curve.h(b);
+    EXPECT_GT(h, previous) << "B = " << b;
+    previous = h;
+    EXPECT_GT(curve.dh_db(b), 0.0) << "B = " << b;
+    const double step = 1e-6;
+    const double fd_dh = (curve.h(b + step) - curve.h(b - step)) / (2 * step);
+    EXPECT_NEAR(curve.dh_db(b), fd_dh, 1e-5 * fd_dh) << "B = " << b;
+    const double b2 = b * b, step2 = 1e-6 * std::max(b2, 1e-2);
+    const double fd_dnu = (curve.nu(b2 + step2) - curve.nu(b2 - step2)) / (2 * step2);
+    EXPECT_NEAR(curve.dnu_db2(b2), fd_dnu, 1e-5 * std::abs(fd_dnu) + 1e-3) << "B = " << b;
+    const double fd_w =
+        (curve.energy_density(b + step) - curve.energy_density(b - step)) / (2 * step);
+    EXPECT_NEAR(fd_w, h, 1e-5 * h) << "B = " << b;
+    EXPECT_NEAR(curve.nu(b2) * b, h, 1e-9 * h);
+  }
+}
+
+TEST(BhCurve, ReluctivityHasAFiniteLimitAtZero) {
+  // Reference: nu(0) is the limit of H/B for B -> 0 (tolerance 1e-6 relative) and d nu/d(B^2)
+  // is continuous there (no 1/B singularity).
+  const BhCurve curve(aisi1010(), "AISI 1010");
+  const double nu0 = curve.nu(0.0);
+  EXPECT_TRUE(std::isfinite(nu0));
+  EXPECT_GT(nu0, 0.0);
+  EXPECT_NEAR(curve.h(1e-7) / 1e-7, nu0, 1e-6 * nu0);
+  EXPECT_TRUE(std::isfinite(curve.dnu_db2(0.0)));
+  EXPECT_NEAR(curve.dnu_db2(0.0), curve.dnu_db2(1e-8), 1e-9 * std::abs(curve.dnu_db2(0.0)) + 1e-9);
+  EXPECT_EQ(curve.energy_density(0.0), 0.0);
+}
+
+TEST(BhCurve, ExtrapolatesTowardsVacuumPermeability) {
+  // Reference: documented extrapolation H = H_n + x/mu0 + (d_n - 1/mu0) tau (1 - exp(-x/tau)),
+  // x = B - B_n, tau = last table spacing: dH/dB continuous at B_n (1e-6 relative) and -> 1/mu0
+  // (1e-9 relative at x = 40 tau); the magnetisation B/mu0 - H stays near iron's saturation.
+  const auto table = aisi1010();
+  const BhCurve curve(table, "AISI 1010");
+  const BhPoint last = table.back();
+  const double tau = last.b - table[table.size() - 2].b;
+  EXPECT_NEAR(curve.dh_db(last.b + 1e-9), curve.dh_db(last.b - 1e-9), 1e-6 * curve.dh_db(last.b));
+  EXPECT_NEAR(curve.dh_db(last.b + 40 * tau), kNu0, 1e-9 * kNu0);
+  const double end_slope = curve.dh_db(last.b);
+  for (double x : {0.01, 0.5, 3.0}) {
+    const double expected = last.h + x / kMu0 + (end_slope - kNu0) * tau * (1 - std::exp(-x / tau));
+    EXPECT_NEAR(curve.h(last.b + x), expected, 1e-9 * expected);
+  }
+  for (double x = 0.05; x < 2.0; x += 0.05) {
+    const double m = (last.b + x) / kMu0 - curve.h(last.b + x);
+    EXPECT_LT(m, 1.72e6);  // below the saturation magnetisation of iron (Ms ~ 1.71e6 A/m)
+    EXPECT_GT(m, 1.5e6);
+  }
+}
+
+TEST(BhCurve, TwoPointTableIsLinear) {
+  // Reference: with the points (0, 0) and (1 T, 1000 A/m) the curve is H = 1000 B below 1 T
+  // (tolerance 1e-12 relative); energy density 500 B^2.
+  const BhCurve curve({{0.0, 0.0}, {1.0, 1000.0}}, "two-point");
+  EXPECT_NEAR(curve.h(0.3), 300.0, 1e-9);
+  EXPECT_NEAR(curve.nu(0.09), 1000.0, 1e-9);
+  EXPECT_NEAR(curve.dnu_db2(0.09), 0.0, 1e-9);
+  EXPECT_NEAR(curve.energy_density(0.5), 125.0, 1e-9);
+}
+
+void expect_input_error(const std::vector<BhPoint>& table, const std::string& fragment) {
+  try {
+    BhCurve curve(table, "Steel-X");
+    FAIL() << "no InputError for " << fragment;
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("Steel-X"), std::string::npos) << message;
+    EXPECT_NE(message.find(fragment), std::string::npos) << message;
+  }
+}
+
+TEST(BhCurve, RejectsBadTablesNamingTheMaterial) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  expect_input_error({{0.0, 0.0}}, "at least 2");
+  expect_input_error({}, "at least 2");
+  expect_input_error({{0.0, 0.0}, {1.0, 100.0}, {0.9, 200.0}}, "strictly increasing");
+  expect_input_error({{0.0, 0.0}, {1.0, 100.0}, {1.1, 100.0}}, "strictly increasing");
+  expect_input_error({{0.0, 0.0}, {nan, 100.0}}, "finite");
+  expect_input_error({{0.0, 0.0}, {1.0, inf}}, "finite");
+  expect_input_error({{0.0, 0.0}, {-1.0, 100.0}}, "finite non-negative");
+}
+
+}  // namespace
+}  // namespace rheomag::magnetostatics
