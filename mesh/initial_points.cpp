@@ -43,17 +43,23 @@ class ConstraintGrid {
     for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
       if (!cdt.is_constrained(*e)) continue;
       const auto [f, i] = *e;
-      const CgalPoint& a = f->vertex(Cdt::ccw(i))->point();
-      const CgalPoint& b = f->vertex(Cdt::cw(i))->point();
-      const int id = static_cast<int>(edges_.size());
-      edges_.emplace_back(a, b);
-      for (int w = row(std::min(a.y(), b.y())); w <= row(std::max(a.y(), b.y())); ++w)
-        for (int c = column(std::min(a.x(), b.x())); c <= column(std::max(a.x(), b.x())); ++c)
-          buckets_[static_cast<std::size_t>(w * columns_ + c)].push_back(id);
+      add(f->vertex(Cdt::ccw(i))->point(), f->vertex(Cdt::cw(i))->point());
     }
+    // Input points not on any segment (FEMM allows them) are kept clear of as well.
+    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+      add(v->point(), v->point());
   }
 
-  /// True when a constrained edge passes closer than d to p.
+  /// Adds the segment ab (a point when a == b).
+  void add(const CgalPoint& a, const CgalPoint& b) {
+    const int id = static_cast<int>(edges_.size());
+    edges_.emplace_back(a, b);
+    for (int w = row(std::min(a.y(), b.y())); w <= row(std::max(a.y(), b.y())); ++w)
+      for (int c = column(std::min(a.x(), b.x())); c <= column(std::max(a.x(), b.x())); ++c)
+        buckets_[static_cast<std::size_t>(w * columns_ + c)].push_back(id);
+  }
+
+  /// True when a constrained edge or an input point is closer than d to p.
   bool any_within(const CgalPoint& p, double d) const {
     for (int w = row(p.y() - d); w <= row(p.y() + d); ++w)
       for (int c = column(p.x() - d); c <= column(p.x() + d); ++c)
