@@ -1,0 +1,77 @@
+// Long solenoid: B inside = mu0 N I / l.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "magnetostatics/constants.hpp"
+#include "magnetostatics/results.hpp"
+#include "magnetostatics/solve_problem.hpp"
+#include "magnetostatics/solver.hpp"
+#include "tests/magnetostatics/coil_problem.hpp"
+#include "tests/magnetostatics/structured_mesh.hpp"
+
+namespace rheomag::magnetostatics {
+namespace {
+
+TEST(Solenoid, InfinitelyLongSolenoidByNaturalBoundaries) {
+  // Reference: Ampere's law for an infinitely long solenoid, B_z = mu0 N I / l inside and 0
+  // outside. One period l of it is modelled with natural boundaries on z = 0, z = l and r = R
+  // (n x H = 0: no radial field, no field outside); A = 0 on the axis. Tolerance 0.5 % (issue
+  // 2); B_r inside < 1e-3 of B_z; outside |B| < 5 % (P1) / 0.5 % (P2) of the inside value (the
+  // interpolation error of the exterior potential A = Phi / (2 pi r), h = 2 mm at r = 20 mm).
+  const double length = 10e-3, turns = 50, current = 1.0;
+  const double expected = kMu0 * turns * current / length;
+  for (int order : {1, 2}) {
+    Problem p;
+    p.symmetry = Symmetry::axisymmetric;
+    p.order = order;
+    p.outer = OuterBoundary::none;
+    p.geometry.regions = {{{5e-3, 5e-3}, "air"}, {{11e-3, 5e-3}, "coil"}};
+    p.materials = {{"air", 1.0, {}, 0.0, "vacuum"}};
+    p.regions = {{0, -1, 0.0}, {0, 0, turns}};
+    p.circuits = {{"coil", current}};
+    const auto r =
+        test::join(test::join(test::uniform(0, 10e-3, 10), test::uniform(10e-3, 12e-3, 4)),
+                   test::uniform(12e-3, 30e-3, 9));
+    const mesh::Mesh m =
+        test::structured_mesh(r, test::uniform(0, length, 5), order,
+                              [](double rr, double) { return rr > 10e-3 && rr < 12e-3 ? 1 : 0; });
+    MagnetostaticSolver solver(p, m);
+    const Solution s = solver.solve();
+    std::array<double, 2> inside{}, outside{};
+    ASSERT_TRUE(flux_density_at(solver, s, {5e-3, 3e-3}, -1, inside));
+    ASSERT_TRUE(flux_density_at(solver, s, {20e-3, 3e-3}, -1, outside));
+    std::printf("P%d: B_z inside %.6e T (expected %.6e), |B| outside %.2e T\n", order, inside[1],
+                expected, std::hypot(outside[0], outside[1]));
+    EXPECT_NEAR(inside[1], expected, 0.005 * expected);
+    EXPECT_LT(std::abs(inside[0]), 1e-3 * expected);
+    EXPECT_LT(std::hypot(outside[0], outside[1]), (order == 1 ? 0.05 : 0.005) * expected);
+  }
+}
+
+TEST(Solenoid, FiniteLongSolenoidInOpenSpace) {
+  // Reference: centre field of a finite solenoid of uniform current density J between radii
+  // a1, a2 and length l (Biot-Savart integrated over the winding):
+  //   B0 = mu0 J (l/2) ln[(a2 + sqrt(a2^2 + l^2/4)) / (a1 + sqrt(a1^2 + l^2/4))],
+  // which for l / D = 18 is mu0 N I / l (1 - 0.18 %). Tolerances: 0.5 % against mu0 N I / l
+  // (issue 2), 0.1 % against B0. Real path: open boundary, CGAL mesh, P2.
+  const double a1 = 10e-3, a2 = 11e-3, length = 0.4, turns = 400, current = 2.0;
+  const Problem p = test::rectangles_problem(
+      {{a1, a2, -0.5 * length, 0.5 * length, "coil", 0, turns, 1e-3}},
+      {{"copper", 1.0, {}, 5.8e7, "nonmagnetic"}}, current, OuterBoundary::open, 2);
+  const SolveResult result = solve_problem(p);
+  std::array<double, 2> centre{};
+  ASSERT_TRUE(flux_density_at(*result.solver, result.solution, {1e-3, 0.0}, -1, centre));
+  const double j = turns * current / ((a2 - a1) * length), half = 0.5 * length;
+  const double exact =
+      kMu0 * j * half * std::log((a2 + std::hypot(a2, half)) / (a1 + std::hypot(a1, half)));
+  const double ideal = kMu0 * turns * current / length;
+  std::printf("B_z centre %.6e T, exact finite %.6e T, mu0 N I / l %.6e T, %d dofs\n", centre[1],
+              exact, ideal, result.results.dofs);
+  EXPECT_NEAR(centre[1], ideal, 0.005 * ideal);
+  EXPECT_NEAR(centre[1], exact, 0.001 * exact);
+}
+
+}  // namespace
+}  // namespace rheomag::magnetostatics
