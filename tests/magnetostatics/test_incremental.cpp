@@ -1,0 +1,110 @@
+// Incremental inductance, current sweep and energies of a nonlinear iron circuit.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "magnetostatics/results.hpp"
+#include "magnetostatics/solver.hpp"
+#include "tests/magnetostatics/pot_core.hpp"
+
+namespace rheomag::magnetostatics {
+namespace {
+
+Material aisi1010() {
+  Material m{"AISI 1010", 1.0, {}, 0.0, "shared data"};
+  std::ifstream in(RHEOMAG_SHARED_DIR "/data/materials/bh_aisi1010_dosa.csv");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line[0] == 'H') continue;
+    std::istringstream fields(line);
+    double h = 0.0, b = 0.0;
+    char comma = 0;
+    fields >> h >> comma >> b;
+    m.bh.push_back({b, h});
+  }
+  return m;
+}
+
+SolveOptions tight() {
+  SolveOptions options;
+  options.newton.relative_tolerance = 1e-11;
+  return options;
+}
+
+TEST(Incremental, ExactIncrementalInductanceEqualsFiniteDifference) {
+  // Reference: central difference (lambda(I + h) - lambda(I - h)) / 2h, h = 1e-3 A, at I = 3 A
+  // (iron partly saturated, so dlambda/dI differs from lambda/I). Truncation O(h^2) ~ 1e-6,
+  // Newton tolerance 1e-11: tolerance 1e-4 relative.
+  const test::PotCore core;
+  MagnetostaticSolver solver(test::pot_core_problem(aisi1010(), 400, 3.0, 2),
+                             test::pot_core_mesh(core, 1.0, 2), tight());
+  const double current = 3.0, h = 1e-3;
+  const Solution s = solver.solve({current});
+  const double plus = solver.solve({current + h}).flux_linkage[0];
+  const double minus = solver.solve({current - h}).flux_linkage[0];
+  const double fd = (plus - minus) / (2 * h);
+  const double secant = s.flux_linkage[0] / current;
+  std::printf("L_inc %.6e H, FD %.6e H, secant %.6e H\n", s.incremental_inductance[0], fd, secant);
+  EXPECT_NEAR(s.incremental_inductance[0], fd, 1e-4 * fd);
+  EXPECT_LT(s.incremental_inductance[0], 0.9 * secant);  // saturation: L_inc < L_secant
+}
+
+TEST(Incremental, SweepCoenergyIsTheIntegralOfFluxLinkage) {
+  // Reference: W'(I) = integral_0^I lambda(i) di (co-energy theorem, exact for the discrete
+  // problem too); lambda(I) from a 21-point sweep 0..4 A integrated by Simpson's rule:
+  // tolerance 2e-3 relative. Also W + W' = lambda I (= integral B.H dV), tolerance 1e-7, and the
+  // sweep's incremental inductance at I = 0 equals its linear secant limit.
+  const test::PotCore core;
+  MagnetostaticSolver solver(test::pot_core_problem(aisi1010(), 400, 0.0, 2),
+                             test::pot_core_mesh(core, 1.0, 2), tight());
+  std::vector<double> currents;
+  for (int k = 0; k <= 20; ++k) currents.push_back(0.2 * k);
+  const int before = solver.factorizations();
+  const auto table = solver.sweep(0, currents);
+  ASSERT_EQ(table.size(), currents.size());
+  std::printf("sweep: %d factorisations (one symbolic analysis), iterations:",
+              solver.factorizations() - before);
+  for (const auto& row : table) std::printf(" %d", row.newton_iterations);
+  std::printf("\n");
+  double simpson = 0.0;
+  for (std::size_t k = 0; k < table.size(); ++k) {
+    const double w = (k == 0 || k + 1 == table.size()) ? 1.0 : (k % 2 ? 4.0 : 2.0);
+    simpson += w * table[k].flux_linkage;
+  }
+  simpson *= 0.2 / 3.0;
+  const Solution end = solver.solve({4.0});
+  const Results res = compute_results(solver, end);
+  std::printf("co-energy %.6e J, integral lambda dI %.6e J, energy %.6e J\n", res.coenergy, simpson,
+              res.energy);
+  EXPECT_NEAR(res.coenergy, simpson, 2e-3 * simpson);
+  EXPECT_NEAR(res.energy + res.coenergy, end.flux_linkage[0] * 4.0, 1e-7 * res.coenergy);
+  EXPECT_GT(res.coenergy, res.energy);  // saturating iron: W' > W
+  EXPECT_EQ(table[0].flux_linkage, 0.0);
+  EXPECT_EQ(table[0].secant_inductance, table[0].incremental_inductance);
+  EXPECT_GT(table[1].secant_inductance, table[20].secant_inductance);
+}
+
+TEST(Incremental, LinearEnergyIsHalfLISquared) {
+  // Reference: for linear materials W = W' = L I^2 / 2 and L_inc = L (discrete identities,
+  // tolerance 1e-9 relative); the linear factorisation is reused by a second solve.
+  const test::PotCore core;
+  MagnetostaticSolver solver(
+      test::pot_core_problem({"iron", 1000.0, {}, 0.0, "linear"}, 400, 2.0, 2),
+      test::pot_core_mesh(core, 1.0, 2));
+  const Solution s = solver.solve();
+  const Results res = compute_results(solver, s);
+  const double l = res.circuits.at(0).inductance;
+  EXPECT_NEAR(res.energy, 0.5 * l * 4.0, 1e-9 * res.energy);
+  EXPECT_NEAR(res.coenergy, res.energy, 1e-9 * res.energy);
+  EXPECT_NEAR(res.circuits[0].incremental_inductance, l, 1e-9 * l);
+  const int factorizations = solver.factorizations();
+  const Solution again = solver.solve({5.0});
+  EXPECT_EQ(solver.factorizations(), factorizations);
+  EXPECT_NEAR(again.flux_linkage[0], 2.5 * s.flux_linkage[0], 1e-9 * again.flux_linkage[0]);
+}
+
+}  // namespace
+}  // namespace rheomag::magnetostatics
