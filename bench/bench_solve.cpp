@@ -1,0 +1,105 @@
+// Benchmarks of the magnetostatic solver: nonlinear solve time against the number of unknowns,
+// and a 21-point current sweep reusing the factorisation analysis. Model: the axisymmetric
+// AISI 1010 pot core with a 1 mm air gap of tests/magnetostatics/pot_core.hpp (400 turns),
+// structured P2 meshes refined uniformly.
+
+#include <benchmark/benchmark.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "magnetostatics/solver.hpp"
+#include "tests/magnetostatics/pot_core.hpp"
+
+namespace {
+
+using namespace rheomag;
+using namespace rheomag::magnetostatics;
+
+Material aisi1010() {
+  Material m{"AISI 1010", 1.0, {}, 0.0, "shared data"};
+  std::ifstream in(RHEOMAG_SOURCE_DIR "/../shared/data/materials/bh_aisi1010_dosa.csv");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line[0] == 'H') continue;
+    std::istringstream fields(line);
+    double h = 0.0, b = 0.0;
+    char comma = 0;
+    fields >> h >> comma >> b;
+    m.bh.push_back({b, h});
+  }
+  return m;
+}
+
+/// Cells per millimetre giving about `dofs` P2 unknowns on the pot core (2400 p^2).
+double cells_per_mm(double dofs) {
+  return std::sqrt(dofs / 2400.0);
+}
+
+/// Nonlinear solve at 2 A (B_gap ~ 1 T) from A = 0; setup (mesh, pattern, analysis) excluded.
+void BM_NonlinearSolve(benchmark::State& state) {
+  const test::PotCore core;
+  const Material steel = aisi1010();
+  if (steel.bh.empty()) {
+    state.SkipWithError("AISI 1010 B-H table not found");
+    return;
+  }
+  MagnetostaticSolver solver(test::pot_core_problem(steel, 400, 2.0, 2),
+                             test::pot_core_mesh(core, cells_per_mm(state.range(0)), 2));
+  int iterations = 0;
+  for (auto _ : state) {
+    const Solution s = solver.solve();
+    iterations = s.newton.iterations;
+    benchmark::DoNotOptimize(s.flux_linkage);
+  }
+  state.counters["dofs"] = solver.dofs().free_count();
+  state.counters["newton"] = iterations;
+}
+BENCHMARK(BM_NonlinearSolve)
+    ->Arg(10'000)
+    ->Arg(30'000)
+    ->Arg(100'000)
+    ->Arg(300'000)
+    ->Arg(1'000'000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+/// Setup cost on the same meshes: dof map, sparsity pattern, scatter map, symbolic analysis.
+void BM_SolverSetup(benchmark::State& state) {
+  const test::PotCore core;
+  const Material steel = aisi1010();
+  const mesh::Mesh m = test::pot_core_mesh(core, cells_per_mm(state.range(0)), 2);
+  for (auto _ : state) {
+    MagnetostaticSolver solver(test::pot_core_problem(steel, 400, 2.0, 2), m);
+    benchmark::DoNotOptimize(solver.dofs().free_count());
+  }
+}
+BENCHMARK(BM_SolverSetup)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/// 21-point sweep 0..4 A (lambda(I), L(I), dlambda/dI), warm-started, one symbolic analysis.
+void BM_CurrentSweep21(benchmark::State& state) {
+  const test::PotCore core;
+  MagnetostaticSolver solver(test::pot_core_problem(aisi1010(), 400, 0.0, 2),
+                             test::pot_core_mesh(core, cells_per_mm(state.range(0)), 2));
+  std::vector<double> currents;
+  for (int k = 0; k <= 20; ++k) currents.push_back(0.2 * k);
+  int factorizations = 0;
+  for (auto _ : state) {
+    const int before = solver.factorizations();
+    const auto table = solver.sweep(0, currents);
+    factorizations = solver.factorizations() - before;
+    benchmark::DoNotOptimize(table.data());
+  }
+  state.counters["dofs"] = solver.dofs().free_count();
+  state.counters["factorisations"] = factorizations;
+}
+BENCHMARK(BM_CurrentSweep21)
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
