@@ -173,6 +173,22 @@ TEST(GenerateMesh, ThinGapsGetTheRequestedElementsAcross) {
     EXPECT_GE(triangles_crossed_at_r(mesh, 1, r0), 4) << "radial gap at r = " << r0;
 }
 
+// A curved gap: the band between regular 64-gons of circumradius 10 and 10.5 mm. True thickness:
+// the apothem difference 0.5 mm cos(pi/64). band_thickness solves t^2 - (P/2) t + A = 0, which
+// for a closed band (no end caps) over-estimates by t / (P/2) ~ 0.8 %: tolerance 1 %.
+TEST(GenerateMesh, CurvedGapThicknessIsEstimatedAndResolved) {
+  PslgBuilder b;
+  b.ngon(0.0, 0.0, 0.0105, 64);
+  b.ngon(0.0, 0.0, 0.01, 64);
+  b.region(0.0, 0.0, "core");
+  b.region(0.01025, 0.0, "ring gap", 0.0, GapKind::annular);
+  const Mesh mesh = generate_mesh(b.pslg, linear());
+  const MeshQuality quality = measure_quality(mesh, b.pslg);
+  const double thickness = 0.5e-3 * std::cos(std::numbers::pi / 64);
+  EXPECT_NEAR(quality.regions[1].thickness, thickness, 0.01 * thickness);
+  EXPECT_GE(quality.regions[1].elements_across, 4.0);
+}
+
 // Nested regions: square A (1 x 1) around square B (0.4 x 0.4) around a 0.1 x 0.1 hole.
 // Reference areas 1 - 0.16, 0.16 - 0.01; relative tolerance 1e-12.
 TEST(GenerateMesh, NestedRegionsAndAHoleAreLabelled) {
