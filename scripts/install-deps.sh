@@ -3,7 +3,7 @@
 set -euo pipefail
 pkgs=(build-essential cmake pkg-config git ca-certificates
   libeigen3-dev libsuitesparse-dev libcgal-dev libvtk9-dev
-  libtomlplusplus-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libtomlplusplus-dev nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
   libboost-dev coinor-libipopt-dev libceres-dev libsvm-dev gnuplot-nox)
 missing=()
 for p in "${pkgs[@]}"; do

@@ -1,0 +1,112 @@
+// rheomag solve: magnetostatic solve of a TOML case or a FEMM .fem model.
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/command.hpp"
+#include "magnetostatics/case_file.hpp"
+#include "magnetostatics/report.hpp"
+#include "magnetostatics/solve_problem.hpp"
+#include "mesh/error.hpp"
+
+namespace {
+
+using namespace rheomag::magnetostatics;
+
+struct SolveCommandOptions {
+  std::string case_path;
+  std::optional<double> current;
+  std::vector<double> sweep;
+  std::string vtk;
+  std::optional<int> order;
+  bool json = false;
+};
+
+void check_current(double current, const char* option) {
+  if (!std::isfinite(current))
+    throw rheomag::InputError(std::string(option) + ": expected a finite current in A");
+}
+
+void run(const SolveCommandOptions& o) {
+  Case c = load_case(o.case_path);
+  Problem& problem = c.problem;
+  if (o.current) {
+    check_current(*o.current, "--current");
+    if (problem.circuits.empty())
+      throw rheomag::InputError(o.case_path + ": --current given but the case has no circuit");
+    for (Circuit& circuit : problem.circuits) circuit.current = *o.current;
+  }
+  if (o.order) problem.order = *o.order;
+  for (double i : o.sweep) check_current(i, "--sweep");
+  if (!o.sweep.empty() && problem.circuits.empty())
+    throw rheomag::InputError(o.case_path + ": --sweep given but the case has no circuit");
+
+  SolveResult solved = solve_problem(problem);
+  std::vector<SweepPoint> table;
+  if (!o.sweep.empty()) table = solved.solver->sweep(0, o.sweep);
+  if (!o.vtk.empty()) write_results_vtu(o.vtk, *solved.solver, solved.solution, solved.results);
+
+  if (o.json) {
+    nlohmann::json j = results_json(*solved.solver, solved.results);
+    j["case"] = c.name;
+    j["mesh_seconds"] = solved.mesh_seconds;
+    if (!o.vtk.empty()) j["vtk"] = o.vtk;
+    if (!table.empty()) {
+      nlohmann::json rows = nlohmann::json::array();
+      for (const SweepPoint& p : table)
+        rows.push_back({{"current", p.current},
+                        {"flux_linkage", p.flux_linkage},
+                        {"inductance", p.secant_inductance},
+                        {"incremental_inductance", p.incremental_inductance},
+                        {"newton_iterations", p.newton_iterations}});
+      j["sweep"] = rows;
+    }
+    std::cout << j.dump(2) << "\n";
+    return;
+  }
+  std::cout << "case " << c.name << " (" << o.case_path << ")\n";
+  if (!c.description.empty()) std::cout << c.description << "\n";
+  std::cout << results_summary(*solved.solver, solved.results);
+  if (!table.empty()) {
+    std::cout << "\nlambda(I) table of circuit " << problem.circuits.front().name << "\n"
+              << "  current [A]  lambda [mWb]  L=lambda/I [mH]  dlambda/dI [mH]  Newton\n";
+    char line[160];
+    for (const SweepPoint& p : table) {
+      std::snprintf(line, sizeof line, "  %11.4g %13.5g %16.5g %16.5g %7d\n", p.current,
+                    p.flux_linkage * 1e3, p.secant_inductance * 1e3, p.incremental_inductance * 1e3,
+                    p.newton_iterations);
+      std::cout << line;
+    }
+  }
+  if (!o.vtk.empty()) std::cout << "\nwrote " << o.vtk << " (open it in ParaView)\n";
+}
+
+const bool registered = rheomag::app::register_command([](CLI::App& root) {
+  auto o = std::make_shared<SolveCommandOptions>();
+  CLI::App* cmd = root.add_subcommand(
+      "solve",
+      "Solve the magnetostatic field of a valve (the FEMM step).\n"
+      "CASE is a rheomag TOML case (docs/case-format.md) or a FEMM 4.2 .fem model (magnetostatic,\n"
+      "axisymmetric or planar). Prints the flux density in every fluid gap (average/min/max of\n"
+      "|B| and of its component normal to the gap walls, over the gap and along its mid-line),\n"
+      "each circuit's flux linkage, secant and incremental inductance, and the stored energy.\n"
+      "Exit codes: 0 success, 2 bad input, 3 Newton did not converge.");
+  cmd->add_option("CASE", o->case_path, "Case file (.toml) or FEMM model (.fem)")->required();
+  cmd->add_option("--current", o->current,
+                  "Current of every circuit [A] (default: the currents in the case)");
+  cmd->add_option("--sweep", o->sweep,
+                  "Also tabulate lambda(I), L(I) of the first circuit at these currents [A], "
+                  "e.g. --sweep 0,0.25,0.5,0.75,1")
+      ->delimiter(',');
+  cmd->add_option("--vtk", o->vtk, "Write mesh and fields (A, B, |B|, H, mu_r) to this .vtu file");
+  cmd->add_option("--order", o->order, "Lagrange element order, 1 or 2 (default: the case's, 2)")
+      ->check(CLI::Range(1, 2));
+  cmd->add_flag("--json", o->json, "Print one JSON object (SI units) instead of the summary");
+  cmd->callback([o] { run(*o); });
+});
+
+}  // namespace

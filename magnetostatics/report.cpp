@@ -1,0 +1,144 @@
+#include "magnetostatics/report.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "mesh/vtu_writer.hpp"
+
+namespace rheomag::magnetostatics {
+
+namespace {
+
+const char* gap_kind_name(mesh::GapKind kind) {
+  switch (kind) {
+    case mesh::GapKind::annular:
+      return "annular";
+    case mesh::GapKind::radial:
+      return "radial";
+    case mesh::GapKind::none:
+      break;
+  }
+  return "none";
+}
+
+/// A finite number, or JSON null (JSON has no NaN/inf).
+nlohmann::json number(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
+}
+
+nlohmann::json stats_json(const FieldStats& s) {
+  return {{"average", number(s.average)}, {"min", number(s.minimum)}, {"max", number(s.maximum)}};
+}
+
+std::vector<std::array<double, 3>> as_vectors(const std::vector<double>& x,
+                                              const std::vector<double>& y) {
+  std::vector<std::array<double, 3>> v(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) v[i] = {x[i], y[i], 0.0};
+  return v;
+}
+
+}  // namespace
+
+nlohmann::json results_json(const MagnetostaticSolver& solver, const Results& results) {
+  nlohmann::json gaps = nlohmann::json::array();
+  for (const GapResult& g : results.gaps) {
+    gaps.push_back({{"name", g.name},
+                    {"kind", gap_kind_name(g.kind)},
+                    {"B_avg", number(g.b.average)},
+                    {"B_max", number(g.b.maximum)},
+                    {"B_min", number(g.b.minimum)},
+                    {"Bn_avg", number(g.b_normal.average)},
+                    {"Bn_max", number(g.b_normal.maximum)},
+                    {"Bn_min", number(g.b_normal.minimum)},
+                    {"midline",
+                     {{"B", stats_json(g.line_b)},
+                      {"Bn", stats_json(g.line_b_normal)},
+                      {"samples", g.line_samples}}},
+                    {"area", number(g.area)}});
+  }
+  nlohmann::json circuits = nlohmann::json::array();
+  for (const CircuitResult& c : results.circuits) {
+    circuits.push_back({{"name", c.name},
+                        {"current", number(c.current)},
+                        {"turns", number(c.turns)},
+                        {"flux_linkage", number(c.flux_linkage)},
+                        {"inductance", number(c.inductance)},
+                        {"incremental_inductance", number(c.incremental_inductance)}});
+  }
+  const bool has_circuit = !results.circuits.empty();
+  const CircuitResult first = has_circuit ? results.circuits.front() : CircuitResult{};
+  const double nan = std::nan("");
+  return {
+      {"gaps", gaps},
+      {"circuits", circuits},
+      {"flux_linkage", number(has_circuit ? first.flux_linkage : nan)},
+      {"inductance", number(has_circuit ? first.inductance : nan)},
+      {"incremental_inductance", number(has_circuit ? first.incremental_inductance : nan)},
+      {"energy", number(results.energy)},
+      {"coenergy", number(results.coenergy)},
+      {"newton_iterations", results.newton_iterations},
+      {"residual_history", results.residual_history},
+      {"dofs", results.dofs},
+      {"elements", results.elements},
+      {"nodes", results.nodes},
+      {"order", solver.mesh().order},
+      {"symmetry", solver.problem().symmetry == Symmetry::axisymmetric ? "axisymmetric" : "planar"},
+      {"seconds", number(results.seconds)}};
+}
+
+std::string results_summary(const MagnetostaticSolver& solver, const Results& results) {
+  std::ostringstream out;
+  char line[512];
+  const double residual = results.residual_history.empty() ? 0.0 : results.residual_history.back();
+  std::snprintf(line, sizeof line,
+                "%s magnetostatics, P%d: %d elements, %d dofs, %d Newton iterations "
+                "(final relative residual %.2e), %.3f s\n",
+                solver.problem().symmetry == Symmetry::axisymmetric ? "axisymmetric" : "planar",
+                solver.mesh().order, results.elements, results.dofs, results.newton_iterations,
+                residual, results.seconds);
+  out << line;
+  if (!results.gaps.empty()) {
+    out << "\nfluid gap [T]         kind      |B| avg     min     max   |Bn| avg  mid-line |B|\n";
+    for (const GapResult& g : results.gaps) {
+      std::snprintf(line, sizeof line, "  %-20.20s %-8s %8.3f %7.3f %7.3f %9.3f %13.3f\n",
+                    g.name.c_str(), gap_kind_name(g.kind), g.b.average, g.b.minimum, g.b.maximum,
+                    g.b_normal.average, g.line_b.average);
+      out << line;
+    }
+  }
+  if (!results.circuits.empty()) {
+    out << "\ncircuit               current [A]   turns  lambda [mWb]  L=lambda/I [mH]  "
+           "dlambda/dI [mH]\n";
+    for (const CircuitResult& c : results.circuits) {
+      std::snprintf(line, sizeof line, "  %-20.20s %11.4g %7.0f %13.5g %16.5g %16.5g\n",
+                    c.name.c_str(), c.current, c.turns, c.flux_linkage * 1e3, c.inductance * 1e3,
+                    c.incremental_inductance * 1e3);
+      out << line;
+    }
+  }
+  std::snprintf(line, sizeof line, "\nstored energy %.6g J, co-energy %.6g J\n", results.energy,
+                results.coenergy);
+  out << line;
+  return out.str();
+}
+
+void write_results_vtu(const std::string& path, const MagnetostaticSolver& solver,
+                       const Solution& solution, const Results& results) {
+  const mesh::Mesh& m = solver.mesh();
+  mesh::VtuFields fields;
+  fields.add_point_scalar(
+      "A", std::vector<double>(solution.a.data(), solution.a.data() + solution.a.size()));
+  fields.add_cell_vector("B", as_vectors(results.element_br, results.element_bz));
+  fields.add_cell_scalar("B_magnitude", results.element_b);
+  fields.add_cell_vector("H", as_vectors(results.element_hr, results.element_hz));
+  fields.add_cell_scalar("H_magnitude", results.element_h);
+  fields.add_cell_scalar("mu_r", results.element_mu_r);
+  fields.add_point_vector("B_nodal", as_vectors(results.node_br, results.node_bz));
+  fields.add_point_scalar("B_nodal_magnitude", results.node_b);
+  std::vector<std::string> names;
+  for (const auto& region : solver.problem().geometry.regions) names.push_back(region.name);
+  mesh::write_vtu(path, m, fields, names);
+}
+
+}  // namespace rheomag::magnetostatics
