@@ -1,5 +1,6 @@
 #include "magnetostatics/newton.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -38,7 +39,8 @@ NewtonReport newton_solve(NonlinearSystem& system, Eigen::VectorXd& x, double sc
       fail("maximum number of iterations reached", it, norm / scale, options.relative_tolerance);
     }
     system.factorize_jacobian(x);
-    const Eigen::VectorXd step = system.solve_jacobian(-r);
+    const double forcing = std::min(options.max_forcing, norm / scale);
+    const Eigen::VectorXd step = system.solve_jacobian(-r, forcing);
     double alpha = 1.0, trial_norm = 0.0;
     bool accepted = false;
     for (int k = 0; k <= options.max_backtracks; ++k, alpha *= 0.5) {

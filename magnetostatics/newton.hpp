@@ -13,6 +13,10 @@ struct NewtonOptions {
   int max_backtracks = 12;            ///< step halvings per line search (minimum step 2^-12)
   double sufficient_decrease = 1e-4;  ///< Armijo constant c: accept when |R| <= (1 - c alpha)|R0|
   double divergence_factor = 1e6;     ///< ConvergenceError when |R| > factor * |R(x = 0)|
+  /// Linear solves may be inexact (iterative, with a reused factorisation as preconditioner):
+  /// |J dx + R| <= eta |R| with eta = min(max_forcing, |R| / |R(x = 0)|), which keeps the
+  /// convergence quadratic (eta = O(|R|)).
+  double max_forcing = 1e-2;
 };
 
 /// What the iteration did.
@@ -30,8 +34,9 @@ class NonlinearSystem {
   virtual double residual(const Eigen::VectorXd& x, Eigen::VectorXd& r) = 0;
   /// Assembles and factorises the Jacobian at x (throws ConvergenceError if that fails).
   virtual void factorize_jacobian(const Eigen::VectorXd& x) = 0;
-  /// Solves J dx = rhs with the last factorisation.
-  virtual Eigen::VectorXd solve_jacobian(const Eigen::VectorXd& rhs) = 0;
+  /// Solves J dx = rhs for the Jacobian of the last factorize_jacobian call, to a relative
+  /// residual `tolerance` or better.
+  virtual Eigen::VectorXd solve_jacobian(const Eigen::VectorXd& rhs, double tolerance) = 0;
 };
 
 /// Solves R(x) = 0 from the initial x; `scale` = |R(x = 0)| is the reference of the relative

@@ -1,5 +1,6 @@
 #include "magnetostatics/solver.hpp"
 
+#include <Eigen/IterativeLinearSolvers>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -20,10 +21,10 @@ class MagnetostaticSolver::System : public NonlinearSystem {
     return r.norm();
   }
   void factorize_jacobian(const Eigen::VectorXd& x) override {
-    solver_.factorize_at(solver_.free_to_nodes(x));
+    solver_.prepare_jacobian(solver_.free_to_nodes(x));
   }
-  Eigen::VectorXd solve_jacobian(const Eigen::VectorXd& rhs) override {
-    return solver_.solve_factorized(rhs);
+  Eigen::VectorXd solve_jacobian(const Eigen::VectorXd& rhs, double tolerance) override {
+    return solver_.solve_jacobian(rhs, tolerance);
   }
 
  private:
@@ -70,17 +71,76 @@ Eigen::VectorXd MagnetostaticSolver::free_to_nodes(const Eigen::VectorXd& x) con
   return a;
 }
 
-void MagnetostaticSolver::factorize_at(const Eigen::VectorXd& a_nodes) {
-  if (linear_ && factorized_linear_) return;
+namespace {
+
+/// Eigen preconditioner applying an existing Cholesky factorisation (of a nearby matrix).
+class FactorPreconditioner {
+ public:
+  using Factor = Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>;
+  void set(const Factor* factor) { factor_ = factor; }
+  template <class Matrix>
+  FactorPreconditioner& analyzePattern(const Matrix&) {
+    return *this;
+  }
+  template <class Matrix>
+  FactorPreconditioner& factorize(const Matrix&) {
+    return *this;
+  }
+  template <class Matrix>
+  FactorPreconditioner& compute(const Matrix&) {
+    return *this;
+  }
+  template <class Rhs>
+  Eigen::VectorXd solve(const Rhs& b) const {
+    return factor_->solve(b);
+  }
+  Eigen::ComputationInfo info() const { return Eigen::Success; }
+
+ private:
+  const Factor* factor_ = nullptr;
+};
+
+}  // namespace
+
+void MagnetostaticSolver::prepare_jacobian(const Eigen::VectorXd& a_nodes) {
+  if (linear_ && factorized_linear_) {
+    factor_current_ = true;
+    return;
+  }
   Eigen::VectorXd r;
   assembler_->assemble(a_nodes, r, &tangent_);
+  factor_current_ = false;
+  if (!has_factor_ || refactor_next_ || linear_) factorize_tangent();
+}
+
+void MagnetostaticSolver::factorize_tangent() {
   cholesky_.factorize(tangent_);
   ++factorizations_;
   if (cholesky_.info() != Eigen::Success) {
+    has_factor_ = false;
     throw ConvergenceError("CHOLMOD factorisation failed (tangent not positive definite, " +
                            std::to_string(dofs_.free_count()) + " unknowns)");
   }
+  has_factor_ = factor_current_ = true;
+  refactor_next_ = false;
   factorized_linear_ = linear_;
+}
+
+Eigen::VectorXd MagnetostaticSolver::solve_jacobian(const Eigen::VectorXd& rhs, double tolerance) {
+  if (factor_current_) return solve_factorized(rhs);
+  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower, FactorPreconditioner> cg;
+  cg.preconditioner().set(&cholesky_);
+  cg.setMaxIterations(kReuseIterations);
+  cg.setTolerance(tolerance);
+  cg.compute(tangent_);
+  Eigen::VectorXd x = cg.solve(rhs);
+  reuse_iterations_ += static_cast<int>(cg.iterations());
+  if (cg.info() == Eigen::Success && x.allFinite()) {
+    if (2 * cg.iterations() > kReuseIterations) refactor_next_ = true;
+    return x;
+  }
+  factorize_tangent();
+  return solve_factorized(rhs);
 }
 
 Eigen::VectorXd MagnetostaticSolver::solve_factorized(const Eigen::VectorXd& rhs) {
@@ -148,12 +208,13 @@ Solution MagnetostaticSolver::solve_with(const std::vector<double>& currents,
   solution.a = free_to_nodes(x);
   for (const Eigen::VectorXd& f : sources_) solution.flux_linkage.push_back(f.dot(solution.a));
   if (incremental && n > 0) {
-    // dlambda_c/dI_c = F_c^T K_t^{-1} F_c with K_t the exact tangent at the solution.
-    factorize_at(solution.a);
+    // dlambda_c/dI_c = F_c^T K_t^{-1} F_c with K_t the exact tangent at the solution (solved to
+    // 1e-12 relative residual).
+    prepare_jacobian(solution.a);
     for (const Eigen::VectorXd& f : sources_) {
       Eigen::VectorXd f_free(n);
       for (int d = 0; d < n; ++d) f_free[d] = f[dofs_.node_of_dof[d]];
-      solution.incremental_inductance.push_back(f_free.dot(solve_factorized(f_free)));
+      solution.incremental_inductance.push_back(f_free.dot(solve_jacobian(f_free, 1e-12)));
     }
   }
   solution.seconds =

@@ -45,7 +45,10 @@ struct SweepPoint {
 
 /// Nonlinear magnetostatic finite-element solver on a fixed mesh (see element_kernel.hpp for the
 /// weak form). Newton with the exact Jacobian; CHOLMOD supernodal Cholesky whose symbolic analysis
-/// is done once in the constructor and reused by every factorisation of every solve.
+/// is done once in the constructor and reused by every factorisation of every solve. A Newton
+/// step whose Jacobian is close to the last factorised one is solved by conjugate gradients
+/// preconditioned with that factorisation (to Newton's forcing tolerance); the Jacobian is
+/// refactorised when that takes more than kReuseIterations iterations.
 class MagnetostaticSolver {
  public:
   /// Takes the problem (regions, materials, circuits, boundaries) and a mesh of it
@@ -77,13 +80,20 @@ class MagnetostaticSolver {
   SparseMatrix tangent(const Eigen::VectorXd& a) const;
   /// Number of numeric factorisations done so far (symbolic analysis is done once).
   int factorizations() const { return factorizations_; }
+  /// Conjugate-gradient iterations done with a reused factorisation so far.
+  int reuse_iterations() const { return reuse_iterations_; }
+
+  /// Most CG iterations accepted with a reused factorisation before refactorising.
+  static constexpr int kReuseIterations = 8;
 
  private:
   class System;
   Solution solve_with(const std::vector<double>& currents, const Eigen::VectorXd* initial_guess,
                       bool incremental);
   Eigen::VectorXd free_to_nodes(const Eigen::VectorXd& x) const;
-  void factorize_at(const Eigen::VectorXd& a_nodes);
+  void prepare_jacobian(const Eigen::VectorXd& a_nodes);
+  void factorize_tangent();
+  Eigen::VectorXd solve_jacobian(const Eigen::VectorXd& rhs, double tolerance);
   Eigen::VectorXd solve_factorized(const Eigen::VectorXd& rhs);
 
   Problem problem_;
@@ -96,7 +106,11 @@ class MagnetostaticSolver {
   SparseMatrix tangent_;
   bool linear_ = true;
   bool factorized_linear_ = false;  // linear problem: the one factorisation stays valid
+  bool has_factor_ = false;         // cholesky_ holds a factorisation of some tangent
+  bool factor_current_ = false;     // ... of the current tangent_
+  bool refactor_next_ = true;       // the last reuse was slow: factorise at the next Jacobian
   int factorizations_ = 0;
+  int reuse_iterations_ = 0;
 };
 
 }  // namespace rheomag::magnetostatics
