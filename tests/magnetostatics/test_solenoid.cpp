@@ -73,5 +73,43 @@ TEST(Solenoid, FiniteLongSolenoidInOpenSpace) {
   EXPECT_NEAR(centre[1], exact, 0.001 * exact);
 }
 
+TEST(Solenoid, PlanarCurrentSlabFieldAndInductance) {
+  // Planar analogue of the infinite solenoid (checks the planar path and the depth scaling): a
+  // slab a < x < b of N turns carrying I along z, height h, A = 0 on x = 0, natural boundaries
+  // elsewhere. Ampere: B_y = -mu0 N I / h for x < a, 0 for x > b; flux linkage
+  // lambda = depth (N / (t h)) integral A dA gives L = mu0 N^2 depth (a + t/3) / h, t = b - a.
+  // A is piecewise quadratic in x, so P2 is exact: tolerance 1e-9 relative; P1 0.5 %.
+  const double a = 4e-3, b = 6e-3, width = 10e-3, height = 5e-3, depth = 0.2;
+  const double turns = 30, current = 1.5;
+  for (int order : {2, 1}) {
+    Problem p;
+    p.symmetry = Symmetry::planar;
+    p.depth = depth;
+    p.order = order;
+    p.outer = OuterBoundary::none;
+    p.geometry.regions = {{{2e-3, 2e-3}, "air"}, {{5e-3, 2e-3}, "coil"}};
+    p.materials = {{"air", 1.0, {}, 0.0, "vacuum"}};
+    p.regions = {{0, -1, 0.0}, {0, 0, turns}};
+    p.circuits = {{"coil", current}};
+    p.boundaries = {{"A = 0", BoundaryKind::prescribed_a, 0.0, 0.0, 0.0}};
+    const auto x = test::join(test::join(test::uniform(0, a, 8), test::uniform(a, b, 8)),
+                              test::uniform(b, width, 8));
+    const mesh::Mesh m = test::structured_mesh(
+        x, test::uniform(0, height, 4), order,
+        [&](double xx, double) { return xx > a && xx < b ? 1 : 0; }, {0, -1, -1, -1});
+    MagnetostaticSolver solver(p, m);
+    const Solution s = solver.solve();
+    std::array<double, 2> inside{};
+    ASSERT_TRUE(flux_density_at(solver, s, {2e-3, 1e-3}, -1, inside));
+    const double b_expected = -kMu0 * turns * current / height;
+    const double l_expected = kMu0 * turns * turns * depth * (a + (b - a) / 3) / height;
+    const double tolerance = order == 2 ? 1e-9 : 5e-3;
+    std::printf("planar P%d: B_y %.6e T (expected %.6e), L %.6e H (expected %.6e)\n", order,
+                inside[1], b_expected, s.flux_linkage[0] / current, l_expected);
+    EXPECT_NEAR(inside[1], b_expected, tolerance * std::abs(b_expected));
+    EXPECT_NEAR(s.flux_linkage[0] / current, l_expected, tolerance * l_expected);
+  }
+}
+
 }  // namespace
 }  // namespace rheomag::magnetostatics
