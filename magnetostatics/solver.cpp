@@ -1,6 +1,7 @@
 #include "magnetostatics/solver.hpp"
 
 #include <Eigen/IterativeLinearSolvers>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -49,6 +50,18 @@ MagnetostaticSolver::MagnetostaticSolver(Problem problem, mesh::Mesh mesh, Solve
     }
   }
   dofs_ = build_dof_map(mesh_, problem_);
+  const bool robin = std::any_of(
+      mesh_.boundary_edges.begin(), mesh_.boundary_edges.end(), [&](const mesh::BoundaryEdge& e) {
+        return e.boundary >= 0 && problem_.boundaries[e.boundary].kind == BoundaryKind::mixed &&
+               problem_.boundaries[e.boundary].c0 > 0.0;
+      });
+  if (dofs_.free_count() == static_cast<int>(mesh_.nodes.size()) && !robin) {
+    throw InputError(problem_.geometry.source +
+                     ": A is not determined (no prescribed-A boundary, no mixed boundary with "
+                     "c0 > 0" +
+                     (problem_.symmetry == Symmetry::axisymmetric ? ", no node on the axis" : "") +
+                     "); add one, or use the automatic open outer boundary");
+  }
   assembler_ = std::make_unique<Assembler>(problem_, mesh_, dofs_);
   linear_ = !assembler_->nonlinear();
   for (int c = 0; c < static_cast<int>(problem_.circuits.size()); ++c) {
