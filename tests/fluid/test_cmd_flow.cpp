@@ -1,0 +1,109 @@
+// The `rheomag flow` command: JSON keys and values against the library, and exit code 2 on bad
+// input. Runs the built CLI (RHEOMAG_BINARY).
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "fluid/annulus_bingham.hpp"
+#include "fluid/radial_bingham.hpp"
+#include "fluid/slit_bingham.hpp"
+
+using namespace rheomag::fluid;
+
+namespace {
+
+struct CliRun {
+  int exit_code = -1;
+  std::string out;
+};
+
+CliRun run(const std::string& args) {
+  const std::string command = std::string(RHEOMAG_BINARY) + " " + args + " 2>/dev/null";
+  CliRun result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return result;
+  std::array<char, 512> buffer{};
+  while (fgets(buffer.data(), buffer.size(), pipe)) result.out += buffer.data();
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+double json_number(const std::string& json, const std::string& key) {
+  const std::regex pattern("\"" + key + "\": *([-+0-9.eE]+)");
+  std::smatch match;
+  if (!std::regex_search(json, match, pattern)) {
+    ADD_FAILURE() << "key " << key << " missing in " << json;
+    return NAN;
+  }
+  return std::stod(match[1]);
+}
+
+void expect_matches(const std::string& json, const GapPressureDrop& ref) {
+  // Reference: the library call with the same inputs; the CLI prints 12 significant digits.
+  EXPECT_NEAR(json_number(json, "dp") / ref.dp, 1.0, 1e-10) << json;
+  EXPECT_NEAR(json_number(json, "dp_viscous") / ref.dp_viscous, 1.0, 1e-10);
+  EXPECT_NEAR(json_number(json, "dp_yield") / ref.dp_yield, 1.0, 1e-9);
+  EXPECT_NEAR(json_number(json, "plug_fraction"), ref.plug_fraction, 1e-11);
+  EXPECT_NEAR(json_number(json, "bingham_number") / ref.bingham_number, 1.0, 1e-10);
+  // dp_yield is defined as dp - dp_viscous.
+  EXPECT_NEAR(json_number(json, "dp_yield"),
+              json_number(json, "dp") - json_number(json, "dp_viscous"),
+              1e-9 * json_number(json, "dp"));
+}
+
+}  // namespace
+
+TEST(CmdFlow, AnnularExactAndApproxJson) {
+  const std::string common =
+      "flow --kind annular --gap 1e-3 --length 0.01 --radius 0.0195 --tau-y 20000 "
+      "--viscosity 0.106 --flow 1e-6 --json";
+  const AnnulusGeometry g{1e-3, 0.0195, 0.01};
+  const CliRun exact = run(common);
+  ASSERT_EQ(exact.exit_code, 0) << exact.out;
+  expect_matches(exact.out, annulus_bingham(g, 2e4, 0.106, 1e-6));
+  const CliRun approx = run(common + " --model approx");
+  ASSERT_EQ(approx.exit_code, 0);
+  expect_matches(approx.out, annulus_paper000(g, 2e4, 0.106, 1e-6));
+  // Sanity of magnitude: dp ~ 2 tau_y L / h = 4 bar for Bi >> 1 (slit limit c -> 2).
+  EXPECT_NEAR(json_number(exact.out, "dp") / 4e5, 1.0, 0.05);
+}
+
+TEST(CmdFlow, RadialJson) {
+  const CliRun r =
+      run("flow --kind radial --gap 0.5e-3 --r-in 0.005 --r-out 0.02 --tau-y 3e4 --viscosity 0.11 "
+          "--flow 2e-5 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  expect_matches(r.out, radial_bingham(RadialGeometry{0.5e-3, 0.005, 0.02}, 3e4, 0.11, 2e-5));
+}
+
+TEST(CmdFlow, BadInputExitsTwo) {
+  const std::string tail = " --tau-y 1e4 --viscosity 0.1 --flow 1e-6";
+  for (const std::string& args : std::vector<std::string>{
+           "flow --kind annular --gap 0 --length 0.01 --radius 0.02" + tail,
+           "flow --kind annular --gap -1e-3 --length 0.01 --radius 0.02" + tail,
+           "flow --kind annular --gap 1e-3 --length 0.01 --radius 0.02 --tau-y 1e4 "
+           "--viscosity 0 --flow 1e-6",
+           "flow --kind annular --gap 1e-3 --length 0.01 --radius 0.02 --tau-y 1e4 "
+           "--viscosity 0.1 --flow -1e-6",
+           "flow --kind annular --gap 1e-3 --length 0.01" + tail,            // no --radius
+           "flow --kind radial --gap 1e-3 --r-in 0.02 --r-out 0.01" + tail,  // r_out <= r_in
+           "flow --kind radial --gap 1e-3 --r-in 0.01" + tail,               // no --r-out
+           "flow --kind radial --gap 1e-3 --r-in 0.01 --r-out 0.02 --length 0.1" + tail,
+           "flow --kind annular --gap 1e-3 --length 0.01 --radius 0.02 --tau-y -5 "
+           "--viscosity 0.1 --flow 1e-6",
+           "flow --kind conical --gap 1e-3" + tail,
+           "flow --kind annular --gap 1e-3 --length 0.01 --radius 0.02 --model magic" + tail,
+       }) {
+    const CliRun r = run(args);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_TRUE(r.out.empty()) << args << " printed " << r.out;
+  }
+}
