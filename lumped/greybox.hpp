@@ -1,0 +1,82 @@
+#pragma once
+// Grey-box (physical) identification: Bingham, LuGre, modified Bouc-Wen, Maxwell, Dahl fitted to a
+// recording with Ceres (bounded trust region, automatic differentiation through a fixed-step RK4
+// simulation), multi-start, and standard errors from the Jacobian.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lumped/metrics.hpp"
+#include "lumped/phenomenological.hpp"
+#include "lumped/recording.hpp"
+
+namespace rheomag::lumped {
+
+/// Options of a grey-box fit.
+struct GreyboxOptions {
+  std::optional<SampleRange> train;  ///< samples to fit on; whole recording if empty
+  int starts = 4;                    ///< multi-start: number of starting points (first = nominal)
+  unsigned seed = 1;                 ///< seed of the perturbed starting points
+  int max_iterations = 60;           ///< Levenberg-Marquardt iterations per start
+  double max_substep = 2.5e-4;       ///< [s] largest RK4 substep inside the fit
+  double eps_fraction = 1e-3;        ///< sign/|.| regularisation width as a fraction of rms motion
+};
+
+/// One fitted parameter in SI units (units spelled out for this recording's columns).
+struct FittedParameter {
+  std::string name;
+  std::string unit;
+  double value = 0.0;
+  std::optional<double> standard_error;  ///< empty when held fixed or not identifiable
+  bool fixed = false;                    ///< held constant (e.g. field terms without a field input)
+  bool at_bound = false;                 ///< ended on a bound
+};
+
+/// How a model reads a recording: which columns drive it and the fixed settings.
+struct GreyboxSetup {
+  PhenoKind kind = PhenoKind::bingham;
+  std::string motion_column;    ///< "velocity" or "flow"
+  std::string position_column;  ///< "displacement", or empty (integrated motion)
+  std::string field_column;     ///< "command", "current", "current_cmd", or empty
+  std::string output_column;    ///< "force" or "pressure"
+  double orientation = 1.0;     ///< +1 or -1: model output is multiplied by this
+  PhenoSettings settings;
+};
+
+/// Result of fit_greybox.
+struct GreyboxFit {
+  std::string model;
+  GreyboxSetup setup;
+  std::vector<FittedParameter> params;  ///< in the order of pheno_params(kind)
+  std::vector<double> simulated;        ///< free-run model output over the whole recording
+  Metrics train;                        ///< simulation-mode metrics on the training samples
+  SampleRange train_range;
+  double residual_sigma = 0.0;  ///< [output unit] rms residual on the training samples
+  int starts_run = 0;
+  int best_start = 0;
+  bool converged = false;  ///< Ceres reported convergence for the best start
+};
+
+/// Names accepted by fit_greybox: bingham, lugre, bouc-wen, maxwell, dahl.
+const std::vector<std::string>& greybox_model_names();
+
+/// True if `model` is a grey-box model name.
+bool is_greybox_model(const std::string& model);
+
+/// Fits `model` to `rec` (output column vs motion, position and field drive columns). Throws
+/// InputError for an unknown model, a recording without a velocity/flow drive, or too few samples.
+GreyboxFit fit_greybox(const Recording& rec, const std::string& model,
+                       const GreyboxOptions& options = {});
+
+/// Free-run output of a fitted model on another recording of the same device (stiff integrator).
+std::vector<double> simulate_greybox(const Recording& rec, const GreyboxFit& fit);
+
+/// Free-run output of `setup` with parameter vector `params` on `rec` (stiff integrator).
+std::vector<double> simulate_pheno(const Recording& rec, const GreyboxSetup& setup,
+                                   const std::vector<double>& params);
+
+/// Reads the drive columns of `rec` that `setup` names; fills setup's columns from the sidecar.
+GreyboxSetup greybox_setup_for(const Recording& rec, PhenoKind kind);
+
+}  // namespace rheomag::lumped

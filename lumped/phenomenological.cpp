@@ -1,0 +1,102 @@
+// Parameter tables of the phenomenological models.
+
+#include "lumped/phenomenological.hpp"
+
+namespace rheomag::lumped {
+
+bool parse_pheno_kind(const std::string& name, PhenoKind& kind) {
+  if (name == "bingham")
+    kind = PhenoKind::bingham;
+  else if (name == "lugre")
+    kind = PhenoKind::lugre;
+  else if (name == "bouc-wen")
+    kind = PhenoKind::bouc_wen;
+  else if (name == "maxwell")
+    kind = PhenoKind::maxwell;
+  else if (name == "dahl")
+    kind = PhenoKind::dahl;
+  else
+    return false;
+  return true;
+}
+
+std::string pheno_name(PhenoKind kind) {
+  switch (kind) {
+    case PhenoKind::bingham:
+      return "bingham";
+    case PhenoKind::lugre:
+      return "lugre";
+    case PhenoKind::bouc_wen:
+      return "bouc-wen";
+    case PhenoKind::maxwell:
+      return "maxwell";
+    case PhenoKind::dahl:
+      return "dahl";
+  }
+  return "";
+}
+
+const std::vector<PhenoParam>& pheno_params(PhenoKind kind) {
+  static const std::vector<PhenoParam> bingham = {
+      {"yield", "Y", false},      {"yield_per_field", "Y/U", true},
+      {"viscous", "Y/M", false},  {"viscous_per_field", "Y/(M U)", true},
+      {"transition", "M", false}, {"offset", "Y", false}};
+  static const std::vector<PhenoParam> lugre = {
+      {"stiffness", "Y", false}, {"stiffness_per_field", "Y/U", true},
+      {"damping", "Y s", false}, {"rate", "1/X", false},
+      {"viscous", "Y", false},   {"viscous_per_field", "Y/U", true},
+      {"exponent", "1", false},  {"offset", "Y", false}};
+  static const std::vector<PhenoParam> bouc_wen = {
+      {"alpha_a", "Y/X", false}, {"alpha_b", "Y/(X U)", true},
+      {"c0_a", "Y/M", false},    {"c0_b", "Y/(M U)", true},
+      {"c1_a", "Y/M", false},    {"c1_b", "Y/(M U)", true},
+      {"k0", "Y/X", false},      {"k1", "Y/X", false},
+      {"gamma", "1/X^2", false}, {"beta", "1/X^2", false},
+      {"A", "1", false},         {"eta", "1/s", true},
+      {"offset", "Y", false}};
+  static const std::vector<PhenoParam> maxwell = {
+      {"time_constant", "s", false}, {"viscous", "Y/M", false},
+      {"field_force", "Y", false},   {"field_force_per_field", "Y/U", true},
+      {"shape", "1/M", false},       {"offset", "Y", false}};
+  static const std::vector<PhenoParam> dahl = {
+      {"viscous", "Y/M", false}, {"dahl_force", "Y", false},  {"dahl_force_per_field", "Y/U", true},
+      {"sigma", "1/X", false},   {"stiffness", "Y/X", false}, {"offset", "Y", false}};
+  switch (kind) {
+    case PhenoKind::bingham:
+      return bingham;
+    case PhenoKind::lugre:
+      return lugre;
+    case PhenoKind::bouc_wen:
+      return bouc_wen;
+    case PhenoKind::maxwell:
+      return maxwell;
+    case PhenoKind::dahl:
+      return dahl;
+  }
+  return bingham;
+}
+
+std::size_t pheno_state_count(PhenoKind kind) {
+  switch (kind) {
+    case PhenoKind::bingham:
+      return 0;
+    case PhenoKind::lugre:
+      return 1;
+    case PhenoKind::bouc_wen:
+      return 3;
+    case PhenoKind::maxwell:
+      return 1;
+    case PhenoKind::dahl:
+      return 1;
+  }
+  return 0;
+}
+
+int pheno_param_index(PhenoKind kind, const std::string& name) {
+  const auto& params = pheno_params(kind);
+  for (std::size_t i = 0; i < params.size(); ++i)
+    if (params[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+}  // namespace rheomag::lumped
