@@ -5,32 +5,16 @@
 
 #include <benchmark/benchmark.h>
 
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "magnetostatics/solver.hpp"
 #include "tests/magnetostatics/pot_core.hpp"
+#include "tests/magnetostatics/steel.hpp"
 
 namespace {
 
 using namespace rheomag;
 using namespace rheomag::magnetostatics;
-
-Material aisi1010() {
-  Material m{"AISI 1010", 1.0, {}, 0.0, "shared data"};
-  std::ifstream in(RHEOMAG_SOURCE_DIR "/../shared/data/materials/bh_aisi1010_dosa.csv");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line[0] == 'H') continue;
-    std::istringstream fields(line);
-    double h = 0.0, b = 0.0;
-    char comma = 0;
-    fields >> h >> comma >> b;
-    m.bh.push_back({b, h});
-  }
-  return m;
-}
 
 /// Cells per millimetre giving about `dofs` P2 unknowns on the pot core (2400 p^2).
 double cells_per_mm(double dofs) {
@@ -40,7 +24,7 @@ double cells_per_mm(double dofs) {
 /// Nonlinear solve at 2 A (B_gap ~ 1 T) from A = 0; setup (mesh, pattern, analysis) excluded.
 void BM_NonlinearSolve(benchmark::State& state) {
   const test::PotCore core;
-  const Material steel = aisi1010();
+  const Material steel = test::aisi1010();
   if (steel.bh.empty()) {
     state.SkipWithError("AISI 1010 B-H table not found");
     return;
@@ -68,7 +52,7 @@ BENCHMARK(BM_NonlinearSolve)
 /// Setup cost on the same meshes: dof map, sparsity pattern, scatter map, symbolic analysis.
 void BM_SolverSetup(benchmark::State& state) {
   const test::PotCore core;
-  const Material steel = aisi1010();
+  const Material steel = test::aisi1010();
   const mesh::Mesh m = test::pot_core_mesh(core, cells_per_mm(state.range(0)), 2);
   for (auto _ : state) {
     MagnetostaticSolver solver(test::pot_core_problem(steel, 400, 2.0, 2), m);
@@ -80,7 +64,7 @@ BENCHMARK(BM_SolverSetup)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealT
 /// 21-point sweep 0..4 A (lambda(I), L(I), dlambda/dI), warm-started, one symbolic analysis.
 void BM_CurrentSweep21(benchmark::State& state) {
   const test::PotCore core;
-  MagnetostaticSolver solver(test::pot_core_problem(aisi1010(), 400, 0.0, 2),
+  MagnetostaticSolver solver(test::pot_core_problem(test::aisi1010(), 400, 0.0, 2),
                              test::pot_core_mesh(core, cells_per_mm(state.range(0)), 2));
   std::vector<double> currents;
   for (int k = 0; k <= 20; ++k) currents.push_back(0.2 * k);

@@ -5,37 +5,20 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <sstream>
 #include <string>
 
 #include "magnetostatics/bh_curve.hpp"
 #include "magnetostatics/constants.hpp"
 #include "mesh/error.hpp"
+#include "tests/magnetostatics/steel.hpp"
 
 namespace rheomag::magnetostatics {
 namespace {
 
-/// AISI 1010 B-H table from the shared data (CSV: H [A/m], B [T]).
-std::vector<BhPoint> aisi1010() {
-  std::ifstream in(RHEOMAG_SHARED_DIR "/data/materials/bh_aisi1010_dosa.csv");
-  std::vector<BhPoint> table;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line[0] == 'H') continue;
-    std::istringstream fields(line);
-    double h = 0.0, b = 0.0;
-    char comma = 0;
-    fields >> h >> comma >> b;
-    table.push_back({b, h});
-  }
-  return table;
-}
-
 TEST(BhCurve, ReproducesTheTablePoints) {
   // Reference: the table itself; tolerance 1e-9 relative (interpolation is exact at the nodes).
-  const auto table = aisi1010();
+  const auto table = test::aisi1010().bh;
   ASSERT_GE(table.size(), 30u);
   const BhCurve curve(table, "AISI 1010");
   for (const BhPoint& p : table) EXPECT_NEAR(curve.h(p.b), p.h, 1e-9 * (1.0 + p.h));
@@ -44,7 +27,7 @@ TEST(BhCurve, ReproducesTheTablePoints) {
 TEST(BhCurve, IsStrictlyMonotoneWithConsistentDerivatives) {
   // Reference: dH/dB, d nu/d(B^2) and H = dw/dB against central finite differences (step 1e-6 T,
   // tolerance 1e-5 relative); dH/dB > 0 everywhere (monotone interpolation, issue 2).
-  const BhCurve curve(aisi1010(), "AISI 1010");
+  const BhCurve curve(test::aisi1010().bh, "AISI 1010");
   double previous = -1.0;
   for (double b = 1e-4; b < 3.0; b += 0.00731) {
     const double h = curve.h(b);
@@ -67,7 +50,7 @@ TEST(BhCurve, IsStrictlyMonotoneWithConsistentDerivatives) {
 TEST(BhCurve, ReluctivityHasAFiniteLimitAtZero) {
   // Reference: nu(0) is the limit of H/B for B -> 0 (tolerance 1e-6 relative) and d nu/d(B^2)
   // is continuous there (no 1/B singularity).
-  const BhCurve curve(aisi1010(), "AISI 1010");
+  const BhCurve curve(test::aisi1010().bh, "AISI 1010");
   const double nu0 = curve.nu(0.0);
   EXPECT_TRUE(std::isfinite(nu0));
   EXPECT_GT(nu0, 0.0);
@@ -81,7 +64,7 @@ TEST(BhCurve, ExtrapolatesTowardsVacuumPermeability) {
   // Reference: documented extrapolation H = H_n + x/mu0 + (d_n - 1/mu0) tau (1 - exp(-x/tau)),
   // x = B - B_n, tau = last table spacing: dH/dB continuous at B_n (1e-6 relative) and -> 1/mu0
   // (1e-9 relative at x = 40 tau); the magnetisation B/mu0 - H stays near iron's saturation.
-  const auto table = aisi1010();
+  const auto table = test::aisi1010().bh;
   const BhCurve curve(table, "AISI 1010");
   const BhPoint last = table.back();
   const double tau = last.b - table[table.size() - 2].b;

@@ -2,31 +2,15 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "magnetostatics/results.hpp"
 #include "magnetostatics/solver.hpp"
 #include "tests/magnetostatics/pot_core.hpp"
+#include "tests/magnetostatics/steel.hpp"
 
 namespace rheomag::magnetostatics {
 namespace {
-
-Material aisi1010() {
-  Material m{"AISI 1010", 1.0, {}, 0.0, "shared data"};
-  std::ifstream in(RHEOMAG_SHARED_DIR "/data/materials/bh_aisi1010_dosa.csv");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line[0] == 'H') continue;
-    std::istringstream fields(line);
-    double h = 0.0, b = 0.0;
-    char comma = 0;
-    fields >> h >> comma >> b;
-    m.bh.push_back({b, h});
-  }
-  return m;
-}
 
 SolveOptions tight() {
   SolveOptions options;
@@ -39,7 +23,7 @@ TEST(Incremental, ExactIncrementalInductanceEqualsFiniteDifference) {
   // (iron partly saturated, so dlambda/dI differs from lambda/I). Truncation O(h^2) ~ 1e-6,
   // Newton tolerance 1e-11: tolerance 1e-4 relative.
   const test::PotCore core;
-  MagnetostaticSolver solver(test::pot_core_problem(aisi1010(), 400, 3.0, 2),
+  MagnetostaticSolver solver(test::pot_core_problem(test::aisi1010(), 400, 3.0, 2),
                              test::pot_core_mesh(core, 1.0, 2), tight());
   const double current = 3.0, h = 1e-3;
   const Solution s = solver.solve({current});
@@ -58,7 +42,7 @@ TEST(Incremental, SweepCoenergyIsTheIntegralOfFluxLinkage) {
   // tolerance 2e-3 relative. Also W + W' = lambda I (= integral B.H dV), tolerance 1e-7, and the
   // sweep's incremental inductance at I = 0 equals its linear secant limit.
   const test::PotCore core;
-  MagnetostaticSolver solver(test::pot_core_problem(aisi1010(), 400, 0.0, 2),
+  MagnetostaticSolver solver(test::pot_core_problem(test::aisi1010(), 400, 0.0, 2),
                              test::pot_core_mesh(core, 1.0, 2), tight());
   std::vector<double> currents;
   for (int k = 0; k <= 20; ++k) currents.push_back(0.2 * k);

@@ -3,9 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <numbers>
-#include <sstream>
 #include <string>
 
 #include "magnetostatics/bh_curve.hpp"
@@ -14,26 +12,12 @@
 #include "magnetostatics/solver.hpp"
 #include "mesh/error.hpp"
 #include "tests/magnetostatics/pot_core.hpp"
+#include "tests/magnetostatics/steel.hpp"
 
 namespace rheomag::magnetostatics {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-Material aisi1010() {
-  Material m{"AISI 1010", 1.0, {}, 5.8e6, "shared/data/materials/bh_aisi1010_dosa.csv"};
-  std::ifstream in(RHEOMAG_SHARED_DIR "/data/materials/bh_aisi1010_dosa.csv");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line[0] == 'H') continue;
-    std::istringstream fields(line);
-    double h = 0.0, b = 0.0;
-    char comma = 0;
-    fields >> h >> comma >> b;
-    m.bh.push_back({b, h});
-  }
-  return m;
-}
 
 /// B_z in the middle of the gap, 2.5 mm from the axis (2.5 gap widths from the post edge).
 double gap_centre_b(const MagnetostaticSolver& solver, const Solution& s) {
@@ -101,7 +85,7 @@ TEST(IronCircuit, NonlinearIronMatchesMagneticCircuitAndNewtonIsQuadratic) {
   // whose residual is above the round-off floor (1e-10) is >= 1.8 (measured values printed;
   // earlier steps are pre-asymptotic where |B| crosses B-H table intervals).
   const test::PotCore core;
-  const Material steel = aisi1010();
+  const Material steel = test::aisi1010();
   const BhCurve curve(steel.bh, steel.name);
   const Problem problem = test::pot_core_problem(steel, 400, 2.0, 2);
   MagnetostaticSolver solver(problem, test::pot_core_mesh(core, 2.0, 2));
@@ -136,7 +120,7 @@ TEST(IronCircuit, SaturatedIronLimitsTheGapField) {
   // between the unsaturated result at N I = 800 A and the leakage-free circuit estimate (an
   // upper bound: leakage flux adds to the post's saturation). Newton must still converge.
   const test::PotCore core;
-  const Material steel = aisi1010();
+  const Material steel = test::aisi1010();
   const BhCurve curve(steel.bh, steel.name);
   MagnetostaticSolver solver(test::pot_core_problem(steel, 400, 6.0, 2),
                              test::pot_core_mesh(core, 2.0, 2));
@@ -157,7 +141,7 @@ TEST(IronCircuit, NewtonFailureThrowsConvergenceErrorWithTheResidual) {
   const test::PotCore core;
   SolveOptions options;
   options.newton.max_iterations = 1;
-  MagnetostaticSolver solver(test::pot_core_problem(aisi1010(), 400, 2.0, 1),
+  MagnetostaticSolver solver(test::pot_core_problem(test::aisi1010(), 400, 2.0, 1),
                              test::pot_core_mesh(core, 1.0, 1), options);
   try {
     solver.solve();

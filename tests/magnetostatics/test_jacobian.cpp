@@ -3,31 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
-#include <fstream>
 #include <random>
-#include <sstream>
 #include <string>
 
 #include "magnetostatics/solver.hpp"
 #include "tests/magnetostatics/pot_core.hpp"
+#include "tests/magnetostatics/steel.hpp"
 
 namespace rheomag::magnetostatics {
 namespace {
-
-Material aisi1010() {
-  Material m{"AISI 1010", 1.0, {}, 0.0, "shared data"};
-  std::ifstream in(RHEOMAG_SHARED_DIR "/data/materials/bh_aisi1010_dosa.csv");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line[0] == 'H') continue;
-    std::istringstream fields(line);
-    double h = 0.0, b = 0.0;
-    char comma = 0;
-    fields >> h >> comma >> b;
-    m.bh.push_back({b, h});
-  }
-  return m;
-}
 
 void check_tangent(int order, double current) {
   // Reference: central difference (R(A + e d) - R(A - e d)) / 2e, e = 1e-6 |A|/|d|, whose
@@ -36,7 +20,7 @@ void check_tangent(int order, double current) {
   const test::PotCore core;
   SolveOptions options;
   options.incremental_inductance = false;
-  MagnetostaticSolver solver(test::pot_core_problem(aisi1010(), 400, current, order),
+  MagnetostaticSolver solver(test::pot_core_problem(test::aisi1010(), 400, current, order),
                              test::pot_core_mesh(core, 0.7, order), options);
   const Solution s = solver.solve();
   // Evaluate away from the solution, where the iron is partly saturated.
