@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
+#include "magnetostatics/constants.hpp"
 #include "magnetostatics/solve_problem.hpp"
 #include "tests/magnetostatics/coil_problem.hpp"
 #include "tests/magnetostatics/coil_reference.hpp"
@@ -56,6 +58,50 @@ TEST(AirCore, OpenBoundaryInductanceWithinHalfPercent) {
     EXPECT_NEAR(open.results.energy, 0.5 * l_open, 1e-9 * l_open);
     EXPECT_NEAR(open.results.coenergy, open.results.energy, 1e-9 * l_open);
   }
+}
+
+TEST(AirCore, PlanarTwoWireLineWithOpenBoundary) {
+  // Reference: inductance per unit length of a two-wire line of round conductors (radius a,
+  // centre distance d, uniform current, go and return in one series circuit): by geometric mean
+  // distances (self GMD a e^{-1/4}, mutual GMD d, both exact for circles)
+  //   L' = (mu0 / pi) (ln(d / a) + 1/4).
+  // Planar path with the automatic open circle (dipole Robin condition, R0 = 5 x bounding
+  // radius), CGAL mesh, P2; conductors are 128-gons with their area-equivalent radius.
+  // Tolerance 0.5 %.
+  constexpr double pi = std::numbers::pi;
+  const double radius = 1e-3, distance = 10e-3, depth = 2.0;
+  const int sides = 128;
+  Problem p;
+  p.symmetry = Symmetry::planar;
+  p.depth = depth;
+  p.order = 2;
+  p.outer = OuterBoundary::open;
+  p.geometry.source = "two-wire line (test)";
+  p.materials = {{"copper", 1.0, {}, 5.8e7, "nonmagnetic"}};
+  p.circuits = {{"line", 3.0}};
+  for (int wire = 0; wire < 2; ++wire) {
+    const double centre = (wire == 0 ? -0.5 : 0.5) * distance;
+    const int first = static_cast<int>(p.geometry.points.size());
+    for (int k = 0; k < sides; ++k) {
+      const double angle = 2 * pi * k / sides;
+      p.geometry.points.push_back({centre + radius * std::cos(angle), radius * std::sin(angle)});
+      p.geometry.segments.push_back({first + k, first + (k + 1) % sides});
+    }
+    mesh::RegionSeed seed;
+    seed.seed = {centre, 0.0};
+    seed.name = wire == 0 ? "go" : "return";
+    seed.mesh_size = 0.25e-3;
+    p.geometry.regions.push_back(seed);
+    p.regions.push_back({0, 0, wire == 0 ? 1.0 : -1.0});
+  }
+  const SolveResult result = solve_problem(p);
+  const double polygon_area = 0.5 * sides * radius * radius * std::sin(2 * pi / sides);
+  const double equivalent = std::sqrt(polygon_area / pi);
+  const double expected = depth * kMu0 / pi * (std::log(distance / equivalent) + 0.25);
+  const double inductance = result.results.circuits.at(0).inductance;
+  std::printf("two-wire line: L %.6e H, GMD formula %.6e H (%+.3f %%), %d dofs\n", inductance,
+              expected, 100 * (inductance / expected - 1), result.results.dofs);
+  EXPECT_NEAR(inductance, expected, 0.005 * expected);
 }
 
 }  // namespace
