@@ -42,6 +42,7 @@ RegionOutline read_region(const TomlSection& section, double unit, double max_ar
   if (!section.has("material"))
     section.fail("material", "region '" + region.name + "' has no material");
   region.material = section.required_string("material");
+  region.material_where = section.where("material");
   region.mesh_size = section.positive_or("mesh_size", 0.0) * unit;
   region.gap = gap_kind(section);
   if (auto coil = section.table("coil")) {
@@ -201,9 +202,9 @@ Case parse_case(std::string_view text, const std::string& source, const Material
   double max_arc_degrees = 5.0;
   if (geometry) {
     max_arc_degrees = geometry->number_or("max_arc_angle", 5.0);
-    if (!(max_arc_degrees > 0.0 && max_arc_degrees <= 90.0))
+    if (!(max_arc_degrees >= 0.1 && max_arc_degrees <= 90.0))
       geometry->fail("max_arc_angle",
-                     "expected degrees in (0, 90], got " + format_number(max_arc_degrees));
+                     "expected degrees in [0.1, 90], got " + format_number(max_arc_degrees));
     background_material = geometry->string("background_material").value_or(background_material);
   }
   if (geometry && geometry->has("template")) {
@@ -267,7 +268,9 @@ Case parse_case(std::string_view text, const std::string& source, const Material
   };
   for (const RegionOutline& region : outlines) {
     RegionData data;
-    data.material = use_material(region.material, region.where + ": region '" + region.name + "'");
+    data.material = use_material(
+        region.material, (region.material_where.empty() ? region.where : region.material_where) +
+                             ": region '" + region.name + "'");
     if (!region.circuit.empty()) {
       auto it = circuit_index.find(region.circuit);
       if (it == circuit_index.end())

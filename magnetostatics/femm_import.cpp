@@ -555,9 +555,10 @@ Problem parse_femm(std::string_view text, const std::string& source) {
       fail(a.line, "arc segment joins point " + std::to_string(a.n0) + " to itself");
     if (!(a.degrees > 0.0 && a.degrees <= 180.0))
       fail(a.line, "arc angle must be in (0, 180] degrees, got " + format_number(a.degrees));
-    if (!(a.max_side_degrees > 0.0))
+    if (!(a.max_side_degrees >= 0.01))
       fail(a.line,
-           "arc maximum segment angle must be positive, got " + format_number(a.max_side_degrees));
+           "arc maximum segment angle must be at least 0.01 degrees (FEMM's minimum), got " +
+               format_number(a.max_side_degrees));
     const int boundary = check_boundary_use(a.marker, a.line);
     if (boundary >= 0 && file.boundaries[boundary].type == 0) has_prescribed = true;
     std::vector<mesh::Point> pieces;

@@ -139,11 +139,6 @@ void check_simple_polygon(const RegionOutline& region, double tolerance) {
       throw InputError(region.where + ": region '" + region.name + "': repeated point " +
                        text(poly[i]) + " (point " + std::to_string(i + 1) + ")");
   }
-  const Box box = bounding_box(poly);
-  const double extent = std::max(box.r1 - box.r0, box.z1 - box.z0);
-  if (std::abs(signed_area(poly)) <= tolerance * extent)
-    throw InputError(region.where + ": region '" + region.name +
-                     "': outline encloses no area (all points on one line)");
   for (std::size_t i = 0; i < n; ++i) {
     const Point& a = poly[i];
     const Point& b = poly[(i + 1) % n];
@@ -163,6 +158,11 @@ void check_simple_polygon(const RegionOutline& region, double tolerance) {
                          " meets edge " + text(d) + "-" + text(e));
     }
   }
+  const Box box = bounding_box(poly);
+  const double extent = std::max(box.r1 - box.r0, box.z1 - box.z0);
+  if (std::abs(signed_area(poly)) <= tolerance * extent)
+    throw InputError(region.where + ": region '" + region.name +
+                     "': outline encloses no area (all points on one line)");
 }
 
 void check_disjoint(const RegionOutline& a, const RegionOutline& b, double tolerance) {

@@ -19,6 +19,7 @@ struct RegionOutline {
   mesh::GapKind gap = mesh::GapKind::none;  ///< fluid gap kind, for flux-density reports
   double mesh_size = 0.0;                   ///< target element size [m], 0 = automatic
   std::string where;                        ///< "file:line: region[i]" for error messages
+  std::string material_where;               ///< "file:line: region[i].material" ("" = where)
 };
 
 /// Appends the points of a circular arc from `from` to `to` to `out` (excluding `from`, including
