@@ -1,0 +1,47 @@
+#pragma once
+// Electrical side of a valve coil: wire gauge (AWG or metric), resistance at temperature,
+// copper fill, current density, power I^2 R and time constant L/R.
+
+#include <string>
+
+namespace rheomag::fluid {
+
+/// Bare copper diameter [m] of American Wire Gauge `gauge` (ASTM B258: d = 0.127 mm x
+/// 92^((36 - n)/39); 0, 00, 000, 0000 are n = 0, -1, -2, -3), for n in [-3, 56].
+double awg_diameter(int gauge);
+
+/// Bare diameter [m] from a wire specification: "AWG 24", "awg24", "24 AWG", "0.5 mm", "0.5mm".
+/// Throws InputError naming the text and the accepted forms.
+double wire_diameter(const std::string& spec);
+
+/// Resistivity of annealed copper [Ohm m] at `temperature` [deg C]: 1.7241e-8 (100 % IACS at
+/// 20 C) x (1 + 0.00393 (T - 20)).
+double copper_resistivity(double temperature);
+
+/// What is known about a coil before the field solve.
+struct CoilSpec {
+  double turns = 0.0;             ///< number of turns
+  double wire_diameter = 0.0;     ///< bare copper diameter [m]
+  double mean_turn_length = 0.0;  ///< 2 pi x mean winding radius [m]
+  double window_area = 0.0;       ///< winding cross-section (meridian plane) [m^2]
+  double temperature = 20.0;      ///< winding temperature [deg C]
+};
+
+/// Coil quantities at one current.
+struct CoilProperties {
+  double turns = 0.0;
+  double wire_length = 0.0;      ///< [m]
+  double resistance = 0.0;       ///< at CoilSpec::temperature [Ohm]
+  double copper_fill = 0.0;      ///< copper area / window area
+  double current_density = 0.0;  ///< in the copper [A/m^2]
+  double power = 0.0;            ///< I^2 R [W]
+  double inductance = 0.0;       ///< the given (e.g. FE secant) inductance [H]
+  double time_constant = 0.0;    ///< L / R [s]
+};
+
+/// Coil quantities at `current` [A] with inductance `inductance` [H] (from the field solve).
+/// Throws InputError for non-positive turns, diameter, turn length or window area, or a copper
+/// fill above the pi/4 of perfect square packing of bare wire.
+CoilProperties coil_properties(const CoilSpec& spec, double current, double inductance);
+
+}  // namespace rheomag::fluid
