@@ -200,3 +200,32 @@ TEST(Arcs, SemicircleMatchesInscribedPolygonArea) {
   append_arc(cw, {radius, 0}, {-radius, 0}, -180.0, 7.0);
   EXPECT_NEAR(signed_area(cw), -expected, 1e-12);
 }
+
+// Planar cases: depth in file units, negative coordinates allowed, solver options read.
+TEST(CaseFile, PlanarCaseAndSolverOptions) {
+  const Case c = parse_case(R"(
+[case]
+units = "mm"
+symmetry = "planar"
+depth = 40
+[solver]
+order = 1
+min_gap_elements = 6
+outer_boundary = "dirichlet"
+outer_radius_factor = 3
+[[region]]
+name = "bar"
+material = "AISI 1018"
+points = [[-10, -5], [10, -5], [10, 5], [-10, 5], [-10, -5]]
+)",
+                            "planar.toml");
+  const Problem& p = c.problem;
+  EXPECT_EQ(p.symmetry, Symmetry::planar);
+  EXPECT_DOUBLE_EQ(p.depth, 0.04);
+  EXPECT_EQ(p.order, 1);
+  EXPECT_EQ(p.min_gap_elements, 6);
+  EXPECT_EQ(p.outer, OuterBoundary::dirichlet);
+  EXPECT_EQ(p.outer_radius_factor, 3.0);
+  EXPECT_NEAR(p.geometry.regions[0].seed.r, 0.0, 1e-12);
+  EXPECT_TRUE(c.fluid.empty());  // no gap region, no [case] fluid
+}
