@@ -4,7 +4,8 @@ set -euo pipefail
 pkgs=(build-essential cmake pkg-config git ca-certificates
   libeigen3-dev libsuitesparse-dev libcgal-dev libvtk9-dev
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
-  libboost-dev coinor-libipopt-dev libceres-dev libsvm-dev gnuplot-nox)
+  libboost-dev libopenblas0-pthread coinor-libipopt-dev libceres-dev libsvm-dev gnuplot-nox)
+pkgs+=(libopenmpi-dev openmpi-bin)  # rheomag sweep under mpirun (optional at build time)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
