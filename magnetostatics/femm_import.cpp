@@ -470,8 +470,9 @@ Problem parse_femm(std::string_view text, const std::string& source) {
       bc.a_value = b.a0;
     } else if (b.type == 2) {
       bc.kind = BoundaryKind::mixed;
+      // FEMM: (1/mu) dA/dn + c0 A + c1 = 0; rheomag: nu dA/dn + c0 A = c1.
       bc.c0 = b.c0;
-      bc.c1 = b.c1;
+      bc.c1 = -b.c1;
     }
     problem.boundaries.push_back(bc);
   }

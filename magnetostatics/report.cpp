@@ -43,14 +43,19 @@ std::vector<std::array<double, 3>> as_vectors(const std::vector<double>& x,
 nlohmann::json results_json(const MagnetostaticSolver& solver, const Results& results) {
   nlohmann::json gaps = nlohmann::json::array();
   for (const GapResult& g : results.gaps) {
+    // B_avg: area average. B_max / B_min: along the gap's mid-line, because the extremes over
+    // the area sit at the pole corners, where the field is singular and grows with refinement
+    // (they are still reported as B_area_max / B_area_min).
     gaps.push_back({{"name", g.name},
                     {"kind", gap_kind_name(g.kind)},
                     {"B_avg", number(g.b.average)},
-                    {"B_max", number(g.b.maximum)},
-                    {"B_min", number(g.b.minimum)},
+                    {"B_max", number(g.line_b.maximum)},
+                    {"B_min", number(g.line_b.minimum)},
+                    {"B_area_max", number(g.b.maximum)},
+                    {"B_area_min", number(g.b.minimum)},
                     {"Bn_avg", number(g.b_normal.average)},
-                    {"Bn_max", number(g.b_normal.maximum)},
-                    {"Bn_min", number(g.b_normal.minimum)},
+                    {"Bn_max", number(g.line_b_normal.maximum)},
+                    {"Bn_min", number(g.line_b_normal.minimum)},
                     {"midline",
                      {{"B", stats_json(g.line_b)},
                       {"Bn", stats_json(g.line_b_normal)},
@@ -99,11 +104,12 @@ std::string results_summary(const MagnetostaticSolver& solver, const Results& re
                 residual, results.seconds);
   out << line;
   if (!results.gaps.empty()) {
-    out << "\nfluid gap [T]         kind      |B| avg     min     max   |Bn| avg  mid-line |B|\n";
+    out << "\nfluid gap [T]          kind     |B| area avg  |Bn| area avg  mid-line |B| avg"
+           "     min     max\n";
     for (const GapResult& g : results.gaps) {
-      std::snprintf(line, sizeof line, "  %-20.20s %-8s %8.3f %7.3f %7.3f %9.3f %13.3f\n",
-                    g.name.c_str(), gap_kind_name(g.kind), g.b.average, g.b.minimum, g.b.maximum,
-                    g.b_normal.average, g.line_b.average);
+      std::snprintf(line, sizeof line, "  %-20.20s %-8s %13.3f %14.3f %17.3f %7.3f %7.3f\n",
+                    g.name.c_str(), gap_kind_name(g.kind), g.b.average, g.b_normal.average,
+                    g.line_b.average, g.line_b.minimum, g.line_b.maximum);
       out << line;
     }
   }

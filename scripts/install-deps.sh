@@ -6,6 +6,7 @@ pkgs=(build-essential cmake pkg-config git ca-certificates
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
   libboost-dev libopenblas0-pthread coinor-libipopt-dev libceres-dev libsvm-dev gnuplot-nox)
 pkgs+=(libopenmpi-dev openmpi-bin)  # rheomag sweep under mpirun (optional at build time)
+pkgs+=(chromium)  # headless screenshot test of the diagnosis report (skipped when absent)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
