@@ -10,8 +10,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <numeric>
 #include <random>
 
@@ -291,7 +289,7 @@ class PhenoOde : public OdeSystem {
       case PhenoKind::bouc_wen:
         return {X, X, std::max(1.0, rms(d_.field, all))};
       case PhenoKind::maxwell:
-        return {std::max(rms(d_.y, all), 1e-12)};
+        return {std::max(rms(d_.y, all), 1.0)};  // [N or Pa]
       default:
         return std::vector<double>(state_size(), 1.0);
     }
@@ -381,9 +379,6 @@ void run_fit(const DriveSeries& d, const GreyboxSetup& setup, const ParamGuess& 
     so.logging_type = ceres::SILENT;
     ceres::Solver::Summary summary;
     ceres::Solve(so, &problem, &summary);
-    if (std::getenv("RHEOMAG_DEBUG_FIT"))
-      std::fprintf(stderr, "start %d: %s\n", start,
-                   (summary.BriefReport() + " " + summary.message).c_str());
     ++fit.starts_run;
     // A FAILURE termination still leaves the last accepted iterate in theta; cost < 0 = no start.
     if (summary.final_cost >= 0.0 && std::isfinite(summary.final_cost) &&

@@ -1,0 +1,78 @@
+// Algebraic laws of the lumped blocks.
+
+#include "lumped/blocks.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "lumped/smooth.hpp"
+#include "mesh/error.hpp"
+
+namespace rheomag::lumped {
+
+namespace {
+
+/// Piecewise-linear interpolation on increasing x, linear extrapolation at the right end.
+double interpolate(const std::vector<double>& x, const std::vector<double>& y, double v) {
+  if (x.size() == 1) return y[0];
+  auto it = std::upper_bound(x.begin(), x.end(), v);
+  std::size_t k = it == x.begin() ? 0 : std::min<std::size_t>(it - x.begin() - 1, x.size() - 2);
+  return y[k] + (y[k + 1] - y[k]) * (v - x[k]) / (x[k + 1] - x[k]);
+}
+
+}  // namespace
+
+double CoilBlock::flux_of_current(double i) const {
+  const double s = i < 0 ? -1.0 : 1.0;
+  return s * interpolate(table_current, table_flux, std::abs(i));
+}
+
+double CoilBlock::current_of_flux(double lambda) const {
+  const double s = lambda < 0 ? -1.0 : 1.0;
+  return s * interpolate(table_flux, table_current, std::abs(lambda));
+}
+
+double DuhemBlock::incremental_inductance(double i, double lambda, double direction) const {
+  const double f = b1 * std::tanh(b2 * i);
+  // Kept >= 0.05 d so di/dt stays finite (the Duhem operator needs a positive slope).
+  return std::max(d + a * direction * (f - lambda), 0.05 * d);
+}
+
+double eddy_time_constant(double relative_permeability, double conductivity, double radius) {
+  constexpr double mu0 = 4e-7 * 3.14159265358979323846, j01 = 2.404825557695773;
+  if (!(relative_permeability > 0 && conductivity > 0 && radius > 0))
+    throw InputError("eddy_time_constant: permeability, conductivity and radius must be > 0");
+  return mu0 * relative_permeability * conductivity * radius * radius / (j01 * j01);
+}
+
+double DriverBlock::saturate(double v) const {
+  return voltage_limit * std::tanh(v / voltage_limit);
+}
+
+double ValveMapBlock::yield(double current) const {
+  if (yield_current.empty()) return 0.0;
+  const double i = std::clamp(std::abs(current), yield_current.front(), yield_current.back());
+  return yield_scale * interpolate(yield_current, yield_pressure, i);
+}
+
+double ValveMapBlock::pressure_drop(double flow, double current) const {
+  return yield(current) * smooth_sign(flow, regularisation_flow) + viscous_resistance * flow;
+}
+
+double ValveMapBlock::flow(double dp, double current) const {
+  const double py = yield(current), width = viscous_resistance * regularisation_flow;
+  return (smooth_ramp(dp - py, width) - smooth_ramp(-dp - py, width)) / viscous_resistance;
+}
+
+double ChamberBlock::capacitance(double pressure) const {
+  double c = oil_volume / bulk_modulus;
+  if (air_volume > 0.0) {
+    // Absolute pressure kept above 1 kPa (cavitation is not modelled).
+    const double p = 1e3 + smooth_ramp(pressure - 1e3, 1e3);
+    const double v_air = air_volume * std::pow(precharge / p, 1.0 / polytropic);
+    c += v_air / (polytropic * p);
+  }
+  return c;
+}
+
+}  // namespace rheomag::lumped

@@ -1,0 +1,350 @@
+// Composition of the lumped blocks into one OdeSystem per rig, and its simulation.
+
+#include "lumped/rig_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "lumped/ode.hpp"
+#include "lumped/smooth.hpp"
+#include "mesh/error.hpp"
+
+namespace rheomag::lumped {
+
+bool parse_rig_kind(const std::string& name, RigKind& kind) {
+  if (name == "constant_velocity_pump")
+    kind = RigKind::constant_velocity_pump;
+  else if (name == "bypass_cylinder")
+    kind = RigKind::bypass_cylinder;
+  else if (name == "damper")
+    kind = RigKind::damper;
+  else if (name == "coil_bench")
+    kind = RigKind::coil_bench;
+  else
+    return false;
+  return true;
+}
+
+std::string rig_kind_name(RigKind kind) {
+  switch (kind) {
+    case RigKind::constant_velocity_pump:
+      return "constant_velocity_pump";
+    case RigKind::bypass_cylinder:
+      return "bypass_cylinder";
+    case RigKind::damper:
+      return "damper";
+    case RigKind::coil_bench:
+      return "coil_bench";
+  }
+  return "";
+}
+
+std::vector<std::string> rig_drive_columns(const RigSpec& spec) {
+  std::vector<std::string> cols;
+  if (spec.kind != RigKind::coil_bench) cols.push_back("velocity");
+  switch (spec.driver_mode) {
+    case DriverMode::current_source:
+      cols.push_back("current");
+      break;
+    case DriverMode::voltage:
+      cols.push_back(spec.voltage_column);
+      break;
+    case DriverMode::current_pi:
+      cols.push_back("current_cmd");
+      break;
+  }
+  return cols;
+}
+
+std::string rig_output_column(const RigSpec& spec) {
+  switch (spec.kind) {
+    case RigKind::damper:
+      return "force";
+    case RigKind::coil_bench:
+      return "current";
+    default:
+      return "pressure";
+  }
+}
+
+namespace {
+
+/// Piecewise-linear drive signals with their segment slopes.
+struct DriveInputs {
+  const std::vector<double>* t = nullptr;
+  std::map<std::string, const std::vector<double>*> columns;
+  /// Value and slope of `name` at time tt.
+  std::pair<double, double> at(const std::string& name, double tt) const {
+    const auto& v = *columns.at(name);
+    const auto& ts = *t;
+    auto it = std::upper_bound(ts.begin(), ts.end(), tt);
+    std::size_t k =
+        it == ts.begin() ? 0 : std::min<std::size_t>(it - ts.begin() - 1, ts.size() - 2);
+    const double slope = (v[k + 1] - v[k]) / (ts[k + 1] - ts[k]);
+    if (tt <= ts.front()) return {v.front(), slope};
+    if (tt >= ts.back()) return {v.back(), slope};
+    return {v[k] + slope * (tt - ts[k]), slope};
+  }
+};
+
+/// Every signal of the chain at one instant (the algebraic part y = g(x, u)).
+struct RigSignals {
+  double voltage = 0, current = 0, flux = 0, temperature = 20, field_current = 0;
+  double valve_current = 0, flow_in = 0, flow = 0, pressure = 0, force = 0, velocity = 0;
+};
+
+/// The composed rig as an OdeSystem; state indices are assigned to the enabled blocks.
+class RigSystem : public OdeSystem {
+ public:
+  RigSystem(const RigSpec& spec, const DriveInputs& in) : s_(spec), in_(in) {
+    const bool coil_dynamic = spec.driver_mode != DriverMode::current_source;
+    if (coil_dynamic) {
+      if (spec.magnetic_hysteresis) {
+        i_current_ = add(1.0);
+        i_flux_ = add(0.1);
+      } else if (spec.coil.nonlinear()) {
+        i_flux_ = add(0.1);
+      } else if (spec.coil.inductance > 0.0) {
+        i_current_ = add(1.0);
+      }
+      if (spec.driver_mode == DriverMode::current_pi) i_integral_ = add(0.01);
+    }
+    if (spec.coil_heating) i_temperature_ = add(50.0);
+    if (spec.eddy_time_constant && *spec.eddy_time_constant > 0) i_eddy_ = add(1.0);
+    if (spec.mr_response_time && *spec.mr_response_time > 0) i_mr_ = add(1.0);
+    if (spec.kind != RigKind::coil_bench) {
+      if (spec.compressibility) {
+        i_p1_ = add(1e6);
+        i_p2_ = add(1e6);
+        if (spec.inertance) i_flow_ = add(1e-5);
+      }
+    }
+  }
+  std::size_t state_size() const override { return scales_.size(); }
+  std::vector<double> state_scales() const override { return scales_; }
+
+  std::vector<double> initial_state() const {
+    std::vector<double> x(scales_.size(), 0.0);
+    const double t0 = in_.t->front();
+    if (i_temperature_ >= 0) x[i_temperature_] = s_.coil_heating->ambient_c;
+    if (i_p1_ >= 0) x[i_p1_] = x[i_p2_] = s_.compressibility->precharge;
+    // Electrical states start at the DC operating point of the first sample.
+    RigSignals sig;
+    if (s_.driver_mode == DriverMode::current_source) {
+      sig.current = in_.at("current", t0).first;
+    } else if (s_.driver_mode == DriverMode::voltage) {
+      sig.current = s_.driver.gain * in_.at(s_.voltage_column, t0).first /
+                    s_.coil.resistance(temperature(x.data()));
+    } else {
+      sig.current = in_.at("current_cmd", t0).first;
+      if (i_integral_ >= 0 && s_.driver.ki > 0)
+        x[i_integral_] = sig.current * s_.coil.resistance(temperature(x.data())) / s_.driver.ki;
+    }
+    if (i_current_ >= 0) x[i_current_] = sig.current;
+    if (i_flux_ >= 0)
+      x[i_flux_] = s_.magnetic_hysteresis ? s_.magnetic_hysteresis->b1 *
+                                                std::tanh(s_.magnetic_hysteresis->b2 * sig.current)
+                                          : s_.coil.flux_of_current(sig.current);
+    const double field = field_current(x.data(), sig.current);
+    if (i_eddy_ >= 0) x[i_eddy_] = field;
+    if (i_mr_ >= 0) x[i_mr_] = field;
+    return x;
+  }
+
+  void derivatives(double t, const double* x, double* dxdt) const override {
+    RigSignals sig;
+    evaluate(t, x, dxdt, sig);
+  }
+
+  /// The algebraic signals at (t, x); writes x' too when dxdt is not null.
+  void evaluate(double t, const double* x, double* dxdt, RigSignals& sig) const {
+    std::vector<double> scratch;
+    if (!dxdt) {
+      scratch.resize(scales_.size());
+      dxdt = scratch.data();
+    }
+    std::fill(dxdt, dxdt + scales_.size(), 0.0);
+    const double temp = temperature(x);
+    sig.temperature = temp;
+    const double resistance = s_.coil.resistance(temp);
+    // Driver and coil.
+    double voltage = 0.0;
+    if (s_.driver_mode == DriverMode::current_source) {
+      sig.current = in_.at("current", t).first;
+      voltage = sig.current * resistance;
+    } else {
+      double current = 0.0;
+      if (i_current_ >= 0)
+        current = x[i_current_];
+      else if (i_flux_ >= 0)
+        current = s_.coil.current_of_flux(x[i_flux_]);
+      if (s_.driver_mode == DriverMode::voltage) {
+        voltage = s_.driver.gain * in_.at(s_.voltage_column, t).first;
+      } else {
+        const double command = in_.at("current_cmd", t).first;
+        const double error = i_current_ >= 0 || i_flux_ >= 0 ? command - current : 0.0;
+        const double raw = s_.driver.kp * error + s_.driver.ki * x[i_integral_];
+        voltage = s_.driver.saturate(raw);
+        // Back-calculation acts only beyond the limit, so the loop has no steady error inside it.
+        const double limited = std::clamp(raw, -s_.driver.voltage_limit, s_.driver.voltage_limit);
+        dxdt[i_integral_] = error + (limited - raw) / std::max(s_.driver.kp, 1e-12);
+      }
+      if (i_current_ < 0 && i_flux_ < 0) current = voltage / resistance;  // resistive coil
+      sig.current = current;
+      const double excess = voltage - current * resistance;  // = dlambda/dt
+      if (s_.magnetic_hysteresis) {
+        // Paper 004 eqs. 1-3: sign(di/dt) = sign(u - iR) while dlambda/di > 0.
+        const double direction = smooth_sign(excess, 1e-3 * std::max(std::abs(voltage), 1e-3));
+        const double slope =
+            s_.magnetic_hysteresis->incremental_inductance(current, x[i_flux_], direction);
+        dxdt[i_current_] = excess / slope;
+        dxdt[i_flux_] = excess;
+      } else if (i_flux_ >= 0) {
+        dxdt[i_flux_] = excess;
+      } else if (i_current_ >= 0) {
+        dxdt[i_current_] = excess / s_.coil.inductance;
+      }
+      if (i_flux_ >= 0) sig.flux = x[i_flux_];
+    }
+    if (!s_.magnetic_hysteresis && s_.coil.inductance > 0 && !s_.coil.nonlinear())
+      sig.flux = s_.coil.inductance * sig.current;
+    sig.voltage = voltage;
+    if (i_temperature_ >= 0)
+      dxdt[i_temperature_] = s_.coil_heating->rate(sig.current * sig.current * resistance, temp);
+    // Field chain: magnetising current -> eddy lag -> MR response lag.
+    sig.field_current = field_current(x, sig.current);
+    double field = sig.field_current;
+    if (i_eddy_ >= 0) {
+      dxdt[i_eddy_] = (field - x[i_eddy_]) / *s_.eddy_time_constant;
+      field = x[i_eddy_];
+    }
+    if (i_mr_ >= 0) {
+      dxdt[i_mr_] = (field - x[i_mr_]) / *s_.mr_response_time;
+      field = x[i_mr_];
+    }
+    sig.valve_current = field;
+    if (s_.kind == RigKind::coil_bench) return;
+    // Hydraulics.
+    const auto [velocity, acceleration] = in_.at("velocity", t);
+    sig.velocity = velocity;
+    sig.flow_in = s_.piston_area * velocity;
+    if (!s_.compressibility) {
+      sig.flow = sig.flow_in;
+      sig.pressure = s_.valve.pressure_drop(sig.flow, field);
+      if (s_.inertance) sig.pressure += *s_.inertance * s_.piston_area * acceleration;
+    } else {
+      const double p1 = x[i_p1_], p2 = x[i_p2_];
+      sig.pressure = p1 - p2;
+      if (i_flow_ >= 0) {
+        sig.flow = x[i_flow_];
+        dxdt[i_flow_] = (sig.pressure - s_.valve.pressure_drop(sig.flow, field)) / *s_.inertance;
+      } else {
+        sig.flow = s_.valve.flow(sig.pressure, field);
+      }
+      dxdt[i_p1_] = (sig.flow_in - sig.flow) / s_.compressibility->capacitance(p1);
+      dxdt[i_p2_] = (sig.flow - sig.flow_in) / s_.compressibility->capacitance(p2);
+    }
+    sig.force = s_.piston_area * sig.pressure + s_.gas_force;
+    if (s_.coulomb_force)
+      sig.force += *s_.coulomb_force * smooth_sign(velocity, s_.friction_velocity);
+  }
+
+ private:
+  int add(double scale) {
+    scales_.push_back(scale);
+    return static_cast<int>(scales_.size()) - 1;
+  }
+  double temperature(const double* x) const {
+    return i_temperature_ >= 0 ? x[i_temperature_] : 20.0;
+  }
+  /// Current that magnetises the core: the coil current, or flux / (flux per ampere) with Duhem.
+  double field_current(const double* x, double current) const {
+    if (s_.magnetic_hysteresis && i_flux_ >= 0 && s_.magnetic_hysteresis->flux_per_ampere > 0)
+      return x[i_flux_] / s_.magnetic_hysteresis->flux_per_ampere;
+    return current;
+  }
+
+  const RigSpec& s_;
+  const DriveInputs& in_;
+  std::vector<double> scales_;
+  int i_current_ = -1, i_flux_ = -1, i_integral_ = -1, i_temperature_ = -1, i_eddy_ = -1,
+      i_mr_ = -1, i_p1_ = -1, i_p2_ = -1, i_flow_ = -1;
+};
+
+}  // namespace
+
+Recording simulate_rig(const RigSpec& spec, const Recording& drive) {
+  if (drive.t.size() < 2) throw InputError("simulate: the drive needs at least 2 samples");
+  DriveInputs in;
+  in.t = &drive.t;
+  for (const auto& c : rig_drive_columns(spec)) in.columns[c] = &drive.column(c);
+  if (spec.inertance && *spec.inertance <= 0) throw InputError("simulate: inertance must be > 0");
+  RigSystem system(spec, in);
+  IntegratorOptions opt;
+  opt.abs_tol = 1e-7;
+  opt.rel_tol = 1e-6;
+  auto states = integrate_stiff(system, system.initial_state(), drive.t, opt);
+
+  Recording rec;
+  rec.t = drive.t;
+  for (const auto& c : rig_drive_columns(spec)) rec.columns[c] = drive.column(c);
+  if (drive.columns.count("displacement") && spec.kind != RigKind::coil_bench)
+    rec.columns["displacement"] = drive.column("displacement");
+  std::vector<double> current, voltage, flux, temp, flow, pressure, force;
+  for (std::size_t k = 0; k < drive.t.size(); ++k) {
+    RigSignals sig;
+    system.evaluate(drive.t[k], states[k].data(), nullptr, sig);
+    current.push_back(sig.current);
+    voltage.push_back(sig.voltage);
+    flux.push_back(sig.flux);
+    temp.push_back(sig.temperature);
+    flow.push_back(sig.flow);
+    pressure.push_back(sig.pressure);
+    force.push_back(sig.force);
+  }
+  rec.columns["current"] = current;
+  if (spec.driver_mode != DriverMode::current_source) {
+    rec.columns["voltage"] = voltage;
+    if (spec.magnetic_hysteresis || spec.coil.nonlinear() || spec.coil.inductance > 0)
+      rec.columns["flux_linkage"] = flux;
+  }
+  if (spec.coil_heating) rec.columns["temperature"] = temp;
+  if (spec.kind != RigKind::coil_bench) {
+    rec.columns["flow"] = flow;
+    rec.columns["pressure"] = pressure;
+    if (spec.kind == RigKind::damper) rec.columns["force"] = force;
+  }
+  // Sensor noise, seeded.
+  std::mt19937 rng(spec.noise_seed);
+  for (const auto& [column, sigma] : spec.sensor_noise) {
+    auto it = rec.columns.find(column);
+    if (it == rec.columns.end())
+      throw InputError("simulate: [sensor_noise] " + column + " is not a column this rig writes");
+    if (!(sigma >= 0)) throw InputError("simulate: [sensor_noise] " + column + " must be >= 0");
+    std::normal_distribution<double> noise(0.0, sigma);
+    for (double& v : it->second) v += noise(rng);
+  }
+  rec.meta.description = spec.description;
+  rec.meta.drive = rig_drive_columns(spec);
+  rec.meta.output = rig_output_column(spec);
+  rec.meta.rig.kind = rig_kind_name(spec.kind);
+  if (spec.kind != RigKind::coil_bench) {
+    rec.meta.rig.piston_area = spec.piston_area;
+    if (spec.compressibility) rec.meta.rig.chamber_volume = spec.compressibility->oil_volume;
+  }
+  if (spec.kind == RigKind::damper) {
+    rec.meta.rig.rod_area = spec.rod_area;
+    rec.meta.rig.gas_force = spec.gas_force;
+  }
+  if (spec.kind != RigKind::coil_bench && !spec.valve.yield_current.empty()) {
+    rec.meta.valve.yield_current = spec.valve.yield_current;
+    rec.meta.valve.yield_pressure = spec.valve.yield_pressure;
+    rec.meta.valve.viscous_resistance = spec.valve.viscous_resistance;
+  }
+  rec.meta.coil.resistance = spec.coil.resistance_20c;
+  if (spec.coil.inductance > 0) rec.meta.coil.inductance = spec.coil.inductance;
+  return rec;
+}
+
+}  // namespace rheomag::lumped

@@ -1,0 +1,41 @@
+#pragma once
+// The TOML model spec of `rheomag simulate` (the "virtual rig"): a rig built from lumped blocks
+// with switchable concealed effects and sensor noise, or a ready phenomenological model / TF14.
+// The format is documented in docs/dynamics.md; examples are in cases/rigs/.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lumped/greybox.hpp"
+#include "lumped/recording.hpp"
+#include "lumped/rig_model.hpp"
+
+namespace rheomag::lumped {
+
+/// A phenomenological model with given parameters (from [model] of a spec).
+struct PhenoSpec {
+  GreyboxSetup setup;
+  std::vector<double> params;  ///< in the order of pheno_params(kind)
+};
+
+/// A parsed simulation spec: exactly one of rig, pheno or tf14 is active.
+struct SimulationSpec {
+  std::string path;
+  std::optional<RigSpec> rig;
+  std::optional<PhenoSpec> pheno;
+  bool tf14 = false;  ///< paper 000 Table 7 transfer function, current -> pressure
+  std::map<std::string, double> sensor_noise;
+  unsigned noise_seed = 1;
+};
+
+/// Reads a spec file; throws InputError naming the file and key for anything malformed or unknown.
+SimulationSpec read_simulation_spec(const std::string& path);
+
+/// Columns the spec's model is driven by.
+std::vector<std::string> spec_drive_columns(const SimulationSpec& spec);
+
+/// Runs the spec on the drive columns of `drive`; returns a recording in the fixed format.
+Recording simulate_spec(const SimulationSpec& spec, const Recording& drive);
+
+}  // namespace rheomag::lumped
