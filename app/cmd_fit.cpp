@@ -1,0 +1,279 @@
+// rheomag fit: identify a model of a recording (black-box or grey-box) and report FIT%, RMSE%
+// and RE on the training and validation parts. The methods live in lumped/ident_*.hpp and
+// lumped/greybox.hpp; this file maps options to them and prints the result.
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "app/command.hpp"
+#include "lumped/greybox.hpp"
+#include "lumped/ident_fit.hpp"
+#include "lumped/ident_plot.hpp"
+#include "lumped/metrics.hpp"
+#include "lumped/recording_io.hpp"
+#include "mesh/error.hpp"
+
+namespace {
+
+using namespace rheomag::lumped;
+
+struct FitOptions {
+  std::string recording;
+  std::string model;
+  std::string train;
+  std::string validate;
+  EvalMode mode = EvalMode::simulation;
+  bool json = false;
+  std::string plot;
+};
+
+/// Where the validation data come from.
+struct Validation {
+  std::optional<SampleRange> range;  ///< part of the same recording
+  std::optional<Recording> other;    ///< another recording of the same device
+};
+
+/// What one fit produced, whatever the model kind.
+struct FitReport {
+  std::string model;
+  nlohmann::json params = nlohmann::json::object();
+  nlohmann::json standard_errors;  ///< grey-box only
+  Metrics train;
+  std::optional<Metrics> validation;
+  std::vector<double> train_output, validation_output;
+};
+
+bool looks_like_file(const std::string& text) {
+  return text.find(':') == std::string::npos || std::filesystem::exists(text) ||
+         (text.size() > 4 && text.compare(text.size() - 4, 4, ".csv") == 0);
+}
+
+std::string range_text(const SampleRange& r) {
+  return std::to_string(r.begin) + ":" + std::to_string(r.end);
+}
+
+Validation read_validation(const FitOptions& o, const Recording& rec, const SampleRange& train) {
+  Validation v;
+  if (o.validate.empty()) return v;
+  if (looks_like_file(o.validate)) {
+    v.other = read_recording(o.validate);
+    if (v.other->meta.drive != rec.meta.drive || v.other->meta.output != rec.meta.output)
+      throw rheomag::InputError("--validate " + o.validate +
+                                ": its sidecar's drive/output columns differ from " +
+                                rec.meta.sidecar_path);
+    return v;
+  }
+  v.range = parse_sample_range(o.validate, rec.t.size(), "--validate");
+  if (v.range->begin < train.end && train.begin < v.range->end)
+    throw rheomag::InputError("--train " + range_text(train) + " and --validate " +
+                              range_text(*v.range) + " overlap; validation samples must be unseen");
+  return v;
+}
+
+Metrics metrics_on(const std::vector<double>& y, const std::vector<double>& yhat, SampleRange r) {
+  return compute_metrics(std::span<const double>(y), std::span<const double>(yhat), r);
+}
+
+std::vector<double> to_std(const Eigen::VectorXd& v) {
+  return {v.data(), v.data() + v.size()};
+}
+
+FitReport fit_black_box_model(const FitOptions& o, const Recording& rec, const SampleRange& train,
+                              const Validation& val) {
+  const ModelSpec spec = parse_model_spec(o.model);
+  const IoData all = io_data_from_recording(rec);
+  const IoData train_data =
+      slice(all, static_cast<std::ptrdiff_t>(train.begin), static_cast<std::ptrdiff_t>(train.end));
+  const std::unique_ptr<IdentModel> model = fit_black_box(spec, train_data);
+  FitReport report;
+  report.model = model->name();
+  for (const auto& [name, value] : model->params()) report.params[name] = value;
+  Eigen::VectorXd out;
+  report.train = evaluate(*model, train_data, o.mode, &out);
+  report.train_output = to_std(out);
+  std::optional<IoData> val_data;
+  if (val.range)
+    val_data = slice(all, static_cast<std::ptrdiff_t>(val.range->begin),
+                     static_cast<std::ptrdiff_t>(val.range->end));
+  else if (val.other)
+    val_data = io_data_from_recording(*val.other);
+  if (val_data) {
+    report.validation = evaluate(*model, *val_data, o.mode, &out);
+    report.validation_output = to_std(out);
+  }
+  return report;
+}
+
+FitReport fit_grey_box_model(const FitOptions& o, const Recording& rec, const SampleRange& train,
+                             const Validation& val) {
+  if (o.mode == EvalMode::prediction)
+    throw rheomag::InputError("--mode prediction: grey-box model '" + o.model +
+                              "' is a state-space model run in free simulation only");
+  GreyboxOptions options;
+  options.train = train;
+  const GreyboxFit fit = fit_greybox(rec, o.model, options);
+  FitReport report;
+  report.model = fit.model;
+  report.standard_errors = nlohmann::json::object();
+  for (const auto& p : fit.params) {
+    report.params[p.name] = p.value;
+    report.standard_errors[p.name] =
+        p.standard_error ? nlohmann::json(*p.standard_error) : nlohmann::json(nullptr);
+  }
+  report.train = fit.train;
+  report.train_output.assign(fit.simulated.begin() + static_cast<std::ptrdiff_t>(train.begin),
+                             fit.simulated.begin() + static_cast<std::ptrdiff_t>(train.end));
+  const std::vector<double>& y = rec.column(rec.meta.output);
+  if (val.range) {
+    report.validation = metrics_on(y, fit.simulated, *val.range);
+    report.validation_output.assign(
+        fit.simulated.begin() + static_cast<std::ptrdiff_t>(val.range->begin),
+        fit.simulated.begin() + static_cast<std::ptrdiff_t>(val.range->end));
+  } else if (val.other) {
+    report.validation_output = simulate_greybox(*val.other, fit);
+    const std::vector<double>& yv = val.other->column(val.other->meta.output);
+    report.validation = metrics_on(yv, report.validation_output, SampleRange{0, yv.size()});
+  }
+  return report;
+}
+
+nlohmann::json metrics_json(const Metrics& m) {
+  return {{"fit_percent", m.fit_percent}, {"rmse_percent", m.rmse_percent}, {"re", m.re}};
+}
+
+void print_text(const FitReport& r, const FitOptions& o, const SampleRange& train,
+                const Validation& val) {
+  auto line = [](const std::string& what, const Metrics& m) {
+    std::printf("%-34s FIT %7.2f %%   RMSE %7.2f %%   RE %.4f\n", what.c_str(), m.fit_percent,
+                m.rmse_percent, m.re);
+  };
+  std::printf("model %s (%s mode)\n", r.model.c_str(),
+              o.mode == EvalMode::simulation ? "simulation" : "prediction");
+  line("train " + range_text(train), r.train);
+  if (r.validation)
+    line("validation " + (val.range ? range_text(*val.range) : o.validate), *r.validation);
+  std::printf("parameters:\n");
+  for (const auto& [name, value] : r.params.items()) {
+    std::printf("  %-28s %.6g", name.c_str(), value.get<double>());
+    if (r.standard_errors.is_object() && r.standard_errors.contains(name) &&
+        r.standard_errors[name].is_number())
+      std::printf("  +- %.3g", r.standard_errors[name].get<double>());
+    std::printf("\n");
+  }
+}
+
+std::vector<double> part(const std::vector<double>& v, const SampleRange& r) {
+  return {v.begin() + static_cast<std::ptrdiff_t>(r.begin),
+          v.begin() + static_cast<std::ptrdiff_t>(r.end)};
+}
+
+void write_plot(const FitReport& r, const FitOptions& o, const Recording& rec,
+                const SampleRange& train, const Validation& val) {
+  const std::vector<double>& y = rec.column(rec.meta.output);
+  std::vector<PlotSegment> segments{
+      {"training", part(rec.t, train), part(y, train), r.train_output}};
+  if (val.range)
+    segments.push_back(
+        {"validation", part(rec.t, *val.range), part(y, *val.range), r.validation_output});
+  else if (val.other)
+    segments.push_back(
+        {"validation (" + std::filesystem::path(o.validate).filename().string() + ")", val.other->t,
+         val.other->column(val.other->meta.output), r.validation_output});
+  char title[256];
+  std::snprintf(
+      title, sizeof title, "%s on %s (%s): FIT %.1f %% train%s", r.model.c_str(),
+      std::filesystem::path(o.recording).filename().c_str(),
+      o.mode == EvalMode::simulation ? "simulation" : "one-step prediction", r.train.fit_percent,
+      r.validation
+          ? (", " + std::to_string(r.validation->fit_percent).substr(0, 5) + " % validation")
+                .c_str()
+          : "");
+  write_fit_plot(o.plot, title, rec.meta.output, segments);
+}
+
+void run_fit(const FitOptions& o) {
+  const bool black_box = is_black_box_model(o.model);
+  if (!black_box && !is_greybox_model(o.model)) {
+    if (o.model == "valve-chain")
+      throw rheomag::InputError(
+          "--model valve-chain is not available yet (grey-box models available: bingham, lugre, "
+          "bouc-wen, maxwell, dahl)");
+    throw rheomag::InputError("--model '" + o.model +
+                              "' is not a model rheomag knows; did you mean '" +
+                              closest_model_name(o.model, known_model_names()) + "'?");
+  }
+  if (!o.plot.empty() && !gnuplot_available())
+    throw rheomag::InputError("--plot needs gnuplot on PATH (Debian package gnuplot-nox)");
+  const Recording rec = read_recording(o.recording);
+  const std::size_t n = rec.t.size();
+  const SampleRange train =
+      o.train.empty() ? SampleRange{0, n} : parse_sample_range(o.train, n, "--train");
+  const Validation val = read_validation(o, rec, train);
+  const FitReport report =
+      black_box ? fit_black_box_model(o, rec, train, val) : fit_grey_box_model(o, rec, train, val);
+  if (!o.plot.empty()) write_plot(report, o, rec, train, val);
+  if (!o.json) {
+    print_text(report, o, train, val);
+    return;
+  }
+  nlohmann::json j;
+  j["model"] = report.model;
+  j["params"] = report.params;
+  if (report.standard_errors.is_object()) j["standard_errors"] = report.standard_errors;
+  j["train"] = metrics_json(report.train);
+  j["train_range"] = {train.begin, train.end};
+  j["validation"] = report.validation ? metrics_json(*report.validation) : nlohmann::json(nullptr);
+  if (val.range) j["validation_range"] = {val.range->begin, val.range->end};
+  if (val.other) j["validation_file"] = o.validate;
+  j["mode"] = o.mode == EvalMode::simulation ? "simulation" : "prediction";
+  std::cout << j.dump() << std::endl;
+}
+
+const bool registered = rheomag::app::register_command([](CLI::App& root) {
+  auto o = std::make_shared<FitOptions>();
+  CLI::App* cmd = root.add_subcommand(
+      "fit",
+      "Identify a model of a recording (CSV + TOML sidecar; the sidecar's drive columns are the\n"
+      "inputs, its output column the signal to explain) and report FIT% (MATLAB compare),\n"
+      "RMSE% (paper 000 eq. 6) and RE (paper 001 eq. 10) on the training and validation parts.\n"
+      "Models:\n"
+      "  arx:na,nb,nk | arx:auto[,aic|,fpe]  linear ARX, least squares; auto = AIC/FPE order\n"
+      "                                      search over na 1..5, nb 1..5, nk 0..3\n"
+      "  tf:np,nz | tf:auto                  continuous transfer function (tfest-like: SRIV\n"
+      "                                      start, Levenberg-Marquardt on simulation error)\n"
+      "  narx[:na,nb,nk[,degree]]            polynomial NARX, terms by FROLS (default degree 3)\n"
+      "  hw[:nb,nf,nk[,breakpoints]]         Hammerstein-Wiener, piecewise-linear in/out maps\n"
+      "  svr[:na,nb,nk]                      libsvm epsilon-SVR NARX with (C, gamma, eps) search\n"
+      "  bingham | lugre | bouc-wen | maxwell | dahl   grey-box physical models\n"
+      "tf and hw are output-error models: their prediction equals their simulation.");
+  cmd->add_option("recording", o->recording, "Recording CSV (its .toml sidecar beside it)")
+      ->required();
+  cmd->add_option("--model", o->model, "Model name (see above)")->required();
+  cmd->add_option("--train", o->train,
+                  "Training samples a:b, half-open sample indices [a, b) ('a:' to the end); "
+                  "default all");
+  cmd->add_option("--validate", o->validate,
+                  "Validation samples c:d (half-open, must not overlap --train) or another "
+                  "recording CSV of the same device");
+  cmd->add_option("--mode", o->mode,
+                  "simulation (free run, default) or prediction (one step ahead)")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, EvalMode>{{"simulation", EvalMode::simulation},
+                                          {"prediction", EvalMode::prediction}},
+          CLI::ignore_case));
+  cmd->add_flag("--json", o->json,
+                "Print one JSON object: model, params, train and validation "
+                "({fit_percent, rmse_percent, re}), mode");
+  cmd->add_option("--plot", o->plot,
+                  "Write a PNG figure (measured vs model, residual) with gnuplot");
+  cmd->callback([o]() { run_fit(*o); });
+});
+
+}  // namespace

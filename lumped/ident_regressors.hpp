@@ -1,0 +1,40 @@
+#pragma once
+// Lagged regressors of ARX-type models: past outputs y(k-1..k-na) and, for each drive j,
+// u_j(k-nk .. k-nk-nb+1); and the loop that runs such a model in simulation or prediction.
+
+#include <Eigen/Dense>
+#include <functional>
+
+#include "lumped/ident_data.hpp"
+#include "lumped/ident_model.hpp"
+
+namespace rheomag::lumped {
+
+/// Orders of an ARX-type regressor: na past outputs, nb past inputs per drive, input delay nk.
+struct LagOrders {
+  int na = 2;  ///< number of past outputs
+  int nb = 2;  ///< number of input samples per drive
+  int nk = 1;  ///< input delay [samples]
+
+  /// First sample index whose regressor is fully defined by the data.
+  int max_lag() const { return std::max(na, nb + nk - 1); }
+  /// Regressor length for `inputs` drives.
+  int size(std::ptrdiff_t inputs) const { return na + nb * static_cast<int>(inputs); }
+};
+
+/// Fills phi with the regressor at sample k, past outputs taken from `y_history`.
+void fill_regressor(const Eigen::VectorXd& y_history, const Eigen::MatrixXd& u, std::ptrdiff_t k,
+                    const LagOrders& orders, Eigen::Ref<Eigen::VectorXd> phi);
+
+/// Regressor matrix (rows k = max_lag .. N-1) from measured data, and matching targets.
+void regressor_matrix(const IoData& data, const LagOrders& orders, Eigen::MatrixXd& phi,
+                      Eigen::VectorXd& target);
+
+/// Runs y(k) = f(phi(k)) over `data`: the first max_lag samples are the measured ones; in
+/// simulation mode phi uses past model outputs, in prediction mode past measured outputs.
+/// A run whose output leaves 1e3 x the measured range is held there (unstable free run).
+Eigen::VectorXd run_regression_model(const IoData& data, const LagOrders& orders,
+                                     const std::function<double(const Eigen::VectorXd&)>& f,
+                                     EvalMode mode);
+
+}  // namespace rheomag::lumped
