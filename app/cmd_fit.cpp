@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -187,15 +188,23 @@ void write_plot(const FitReport& r, const FitOptions& o, const Recording& rec,
         {"validation (" + std::filesystem::path(o.validate).filename().string() + ")", val.other->t,
          val.other->column(val.other->meta.output), r.validation_output});
   char title[256];
-  std::snprintf(
-      title, sizeof title, "%s on %s (%s): FIT %.1f %% train%s", r.model.c_str(),
-      std::filesystem::path(o.recording).filename().c_str(),
-      o.mode == EvalMode::simulation ? "simulation" : "one-step prediction", r.train.fit_percent,
-      r.validation
-          ? (", " + std::to_string(r.validation->fit_percent).substr(0, 5) + " % validation")
-                .c_str()
-          : "");
-  write_fit_plot(o.plot, title, rec.meta.output, segments);
+  std::snprintf(title, sizeof title, "%s on %s (%s): FIT %.1f %% training", r.model.c_str(),
+                std::filesystem::path(o.recording).filename().c_str(),
+                o.mode == EvalMode::simulation ? "simulation" : "one-step prediction",
+                r.train.fit_percent);
+  std::string heading = title;
+  if (r.validation) {
+    std::snprintf(title, sizeof title, ", %.1f %% validation", r.validation->fit_percent);
+    heading += title;
+  }
+  // SI units of the recording format's output columns (shared/docs/recording-format.md).
+  static const std::map<std::string, std::string> units{
+      {"force", "N"},    {"pressure", "Pa"},     {"current", "A"},       {"voltage", "V"},
+      {"flow", "m^3/s"}, {"flux_linkage", "Wb"}, {"temperature", "degC"}};
+  const auto unit = units.find(rec.meta.output);
+  const std::string label =
+      rec.meta.output + (unit == units.end() ? std::string() : " [" + unit->second + "]");
+  write_fit_plot(o.plot, heading, label, segments);
 }
 
 void run_fit(const FitOptions& o) {
