@@ -324,6 +324,23 @@ std::vector<double> simulate_stiff(const DriveSeries& d, const GreyboxSetup& set
   return y;
 }
 
+/// Model output for reports: rosenbrock4; if it gives up (parameters that make the model
+/// extremely stiff), the fixed-step RK4 of the fit (stability-limited substeps) is used instead.
+std::vector<double> simulate_for_report(const DriveSeries& d, const GreyboxSetup& setup,
+                                        const std::vector<double>& params, double max_substep) {
+  try {
+    return simulate_stiff(d, setup, params);
+  } catch (const ConvergenceError&) {
+    std::vector<double> y(d.t.size());
+    if (!simulate_rk4(setup.kind, params.data(), d, setup.settings, 0, d.t.size(), max_substep,
+                      y.data()))
+      throw ConvergenceError("model " + pheno_name(setup.kind) +
+                             ": the simulation diverges with these parameters");
+    for (double& v : y) v *= setup.orientation;
+    return y;
+  }
+}
+
 /// One multi-start fit of a model with N parameters; fills `fit`.
 template <int N>
 void run_fit(const DriveSeries& d, const GreyboxSetup& setup, const ParamGuess& guess,
@@ -538,7 +555,7 @@ GreyboxFit fit_greybox(const Recording& rec, const std::string& model,
   }
   std::vector<double> values;
   for (const auto& p : fit.params) values.push_back(p.value);
-  fit.simulated = simulate_stiff(d, fit.setup, values);
+  fit.simulated = simulate_for_report(d, fit.setup, values, options.max_substep);
   fit.train = compute_metrics(d.y, fit.simulated, range);
   double ss = 0.0;
   for (std::size_t i = range.begin; i < range.end; ++i)
@@ -553,7 +570,7 @@ std::vector<double> simulate_pheno(const Recording& rec, const GreyboxSetup& set
     throw InputError("model " + pheno_name(setup.kind) + " takes " +
                      std::to_string(pheno_params(setup.kind).size()) + " parameters, got " +
                      std::to_string(params.size()));
-  return simulate_stiff(drive_series(rec, setup), setup, params);
+  return simulate_for_report(drive_series(rec, setup), setup, params, GreyboxOptions{}.max_substep);
 }
 
 std::vector<double> simulate_greybox(const Recording& rec, const GreyboxFit& fit) {
