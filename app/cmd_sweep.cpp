@@ -12,6 +12,7 @@
 #include "optimise/sweep_mpi.hpp"
 #include "optimise/sweep_run.hpp"
 #include "optimise/sweep_spec.hpp"
+#include "optimise/sweep_valve_columns.hpp"
 
 namespace {
 
@@ -59,6 +60,7 @@ void run(const SweepCommandOptions& o) {
   SweepRunOptions options;
   options.jobs = o.jobs;
   options.out_dir = o.out;
+  options.extra_columns = valve_columns(spec);  // pressure drop and coil, with a [valve] table
   if (!o.shard.empty()) options.shard = parse_shard(o.shard);
   options.progress = o.quiet ? nullptr : &std::cerr;
   options.progress_terminal = ::isatty(STDERR_FILENO) == 1;
@@ -84,7 +86,9 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
       "Batch design sweep: a base case plus axes over any of its keys (lists, ranges, Latin "
       "hypercube or full factorial; format in docs/sweep-format.md). Solves every design in "
       "parallel and writes one CSV row per design (inputs, |B| per gap, flux linkage and "
-      "inductance per circuit, status, error text); a failing design becomes an error row. "
+      "inductance per circuit; with a [valve] table in the base case also the pressure drop at "
+      "its flow and the coil's resistance, L/R and power; status, error text); a failing design "
+      "becomes an error row. "
       "Interrupted (Ctrl-C, kill), every finished row is kept and the same command resumes. "
       "Under 'mpirun -n K' rank 0 hands designs to the other ranks and writes one CSV.");
   cmd->add_option("sweep", options->sweep_path, "sweep file (.toml)")->required();

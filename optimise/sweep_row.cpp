@@ -54,8 +54,12 @@ RowLayout::RowLayout(const SweepSpec& spec, std::vector<ColumnGroup> extra)
 
 std::string RowLayout::header() const {
   std::string line;
-  for (std::size_t i = 0; i < names_.size(); ++i) line += (i ? "," : "") + csv_field(names_[i]);
-  return line + "\n";
+  for (std::size_t i = 0; i < names_.size(); ++i) {
+    if (i > 0) line += ',';
+    line += csv_field(names_[i]);
+  }
+  line += '\n';
+  return line;
 }
 
 std::string RowLayout::prefix(const Design& design) const {

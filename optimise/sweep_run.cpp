@@ -110,6 +110,26 @@ double vtu_bytes_estimate(const SweepSpec& spec) {
          kVtuBytesPerElement * static_cast<double>(m.triangles.size());
 }
 
+long long mesh_sharing_block(const SweepSpec& spec) {
+  if (spec.method != SweepMethod::factorial) return 1;
+  auto keeps_geometry = [](const ResolvedKey& key) {
+    const std::string& top = key.path.front();
+    const std::string& last = key.path.back();
+    for (const char* section : {"circuit", "valve", "fluid", "damper", "lumped", "material"}) {
+      if (top == section) return true;
+    }
+    const std::string suffix = "_material";
+    return last == "turns" || last == "circuit" ||
+           (last.size() >= suffix.size() &&
+            last.compare(last.size() - suffix.size(), suffix.size(), suffix) == 0);
+  };
+  long long block = 1;
+  for (std::size_t a = spec.axes.size(); a-- > 0 && keeps_geometry(spec.axes[a].key);) {
+    block *= static_cast<long long>(spec.axes[a].levels.size());
+  }
+  return block;
+}
+
 PreparedSweep prepare_sweep(const SweepSpec& spec, const RowLayout& layout,
                             const DesignGenerator& designs, const SweepRunOptions& options) {
   PreparedSweep prepared;
@@ -165,16 +185,25 @@ SweepSummary run_sweep(const SweepSpec& spec, const SweepRunOptions& options) {
   jobs = static_cast<unsigned>(
       std::min<std::size_t>(jobs, std::max<std::size_t>(1, prepared.pending.size())));
 
+  // Workers take blocks of consecutive pending designs (sharing a mesh), at most an even
+  // share each so that all workers get work.
+  const std::size_t share = (prepared.pending.size() + jobs - 1) / jobs;
+  const std::size_t block = std::max<std::size_t>(
+      1, std::min<std::size_t>(static_cast<std::size_t>(mesh_sharing_block(spec)), share));
   std::atomic<std::size_t> next{0};
   std::atomic<bool> failed{false};
   std::mutex mutex;  // guards prepared.rows, failure and the mesh counters
   std::exception_ptr failure;
   auto work = [&] {
     DesignEvaluator evaluator(spec, layout, prepared.vtu_dir);
+    std::size_t i = 0, end = 0;
     while (!g_stop.load() && !failed.load()) {
-      const std::size_t i = next.fetch_add(1);
+      if (i == end) {
+        i = next.fetch_add(block);
+        end = std::min(i + block, prepared.pending.size());
+      }
       if (i >= prepared.pending.size()) break;
-      const Design design = designs.design(prepared.pending[i]);
+      const Design design = designs.design(prepared.pending[i++]);
       const std::string row = evaluator.row(design);
       try {
         appender.append(row);

@@ -79,6 +79,12 @@ PreparedSweep prepare_sweep(const SweepSpec& spec, const RowLayout& layout,
 /// failures throw InputError (rows written so far are kept).
 SweepSummary run_sweep(const SweepSpec& spec, const SweepRunOptions& options);
 
+/// Consecutive design ids a worker takes at once so that they share a mesh: for a factorial
+/// sweep, the product of the level counts of the trailing axes that do not change the geometry
+/// (keys under circuit, valve, fluid, damper, lumped, material, or named turns, circuit or
+/// *_material); 1 for a Latin hypercube. Only speed depends on it, never the results.
+long long mesh_sharing_block(const SweepSpec& spec);
+
 /// True once SIGINT or SIGTERM arrived during a run with handle_signals.
 bool stop_requested();
 

@@ -5,11 +5,13 @@
 
 #include <algorithm>
 
+#include "fluid/valve_chain.hpp"
 #include "magnetostatics/case_file.hpp"
 #include "magnetostatics/solve_problem.hpp"
 #include "mesh/error.hpp"
 #include "optimise/sweep_evaluate.hpp"
 #include "optimise/sweep_run.hpp"
+#include "optimise/sweep_valve_columns.hpp"
 #include "sweep_fixture.hpp"
 
 namespace rheomag::optimise {
@@ -25,9 +27,10 @@ const std::string kAxes =
     "[[axis]]\nkey = \"circuit.current\"\nvalues = [0.5, 1.0]\n";
 
 SweepSummary run_in(const std::filesystem::path& dir, const std::string& text, int jobs,
-                    Shard shard = {}) {
+                    Shard shard = {}, bool valve = false) {
   const SweepSpec spec = parse_sweep(text, dir / "sweep.toml");
   SweepRunOptions options;
+  if (valve) options.extra_columns = valve_columns(spec);
   options.jobs = jobs;
   options.out_dir = dir;
   options.shard = shard;
@@ -189,6 +192,40 @@ TEST(SweepRun, VtuPerDesign) {
   run_in(dir, text, 2);
   EXPECT_GT(std::filesystem::file_size(dir / "r_vtu" / "design-000000.vtu"), 1000u);
   EXPECT_GT(std::filesystem::file_size(dir / "r_vtu" / "design-000001.vtu"), 1000u);
+}
+
+TEST(SweepRun, ValveColumnsEqualADirectValveChainAndGrowWithCurrent) {
+  // Reference: fluid::ValveChain on the same design case (docs/fluid.md); the sweep must pass
+  // its pressure drop and coil numbers through unchanged. Physics check: the yield part of the
+  // pressure drop grows with the current (tau_y grows with B below saturation).
+  const auto dir = scratch_dir("valve");
+  const auto base = write_file(
+      dir, "valve.toml", read_text(tiny_valve()) + "\n[valve]\nwire = \"AWG 24\"\nflow = 2.0e-6\n");
+  const std::string text = "[sweep]\nbase = \"" + base.string() +
+                           "\"\n[[axis]]\nkey = \"circuit.current\"\nvalues = [0.25, 1.0]\n";
+  const SweepSummary summary = run_in(dir, text, 2, {}, true);
+  EXPECT_EQ(summary.errors, 0);
+  const auto lines = lines_of(read_text(dir / "results.csv"));
+  ASSERT_EQ(lines.size(), 3u);
+  const std::size_t dp = column(lines[0], "dp_total_Pa");
+  const std::size_t dp_yield = column(lines[0], "dp_yield_Pa");
+  const std::size_t resistance = column(lines[0], "coil_resistance_Ohm");
+  const std::size_t power = column(lines[0], "coil_power_W");
+  ASSERT_LT(power, split(lines[0]).size());
+  const SweepSpec spec = parse_sweep(text, dir / "sweep.toml");
+  const DesignGenerator designs(spec);
+  for (long long id = 0; id < 2; ++id) {
+    const auto design_case =
+        magnetostatics::parse_case(design_case_text(spec, designs.design(id)), base.string());
+    const auto options = fluid::read_valve_options(design_case);
+    fluid::ValveChain chain(design_case, options);
+    const double current = design_case.problem.circuits.at(0).current;
+    const auto point = chain.evaluate({current}, options.flows).at(0);
+    const auto cells = split(lines[static_cast<std::size_t>(id) + 1]);
+    EXPECT_EQ(cells[dp], csv_number(point.dp_total));
+    EXPECT_EQ(cells[resistance], csv_number(chain.coil(current, point.inductance).resistance));
+  }
+  EXPECT_GT(std::stod(split(lines[2])[dp_yield]), std::stod(split(lines[1])[dp_yield]));
 }
 
 }  // namespace

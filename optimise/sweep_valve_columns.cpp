@@ -1,0 +1,54 @@
+#include "optimise/sweep_valve_columns.hpp"
+
+#include "fluid/valve_chain.hpp"
+
+namespace rheomag::optimise {
+
+namespace {
+
+double first_current(const magnetostatics::Case& c) {
+  return c.problem.circuits.empty() ? 0.0 : c.problem.circuits.front().current;
+}
+
+double first_inductance(const SolvedDesign& solved) {
+  return solved.results.circuits.empty() ? 0.0 : solved.results.circuits.front().inductance;
+}
+
+}  // namespace
+
+std::vector<ColumnGroup> valve_columns(const SweepSpec& spec) {
+  if (!spec.base.table.contains("valve")) return {};
+  const fluid::ValveOptions base = fluid::read_valve_options(spec.base);
+  const bool pressure = !base.flows.empty();
+  const bool coil = !base.wire.empty();
+  if (!pressure && !coil) return {};
+  ColumnGroup group;
+  if (pressure) {
+    group.names = {"dp_total_Pa", "dp_yield_Pa", "dp_viscous_Pa", "dp_total_average_b_Pa"};
+  }
+  if (coil) {
+    group.names.insert(group.names.end(),
+                       {"coil_resistance_Ohm", "coil_time_constant_s", "coil_power_W"});
+  }
+  group.evaluate = [pressure, coil](const SolvedDesign& solved) {
+    const magnetostatics::Case& c = solved.design_case;
+    const fluid::ValveOptions options = fluid::read_valve_options(c);
+    fluid::ValveChain chain(c, options);
+    const double current = first_current(c);
+    std::vector<double> values;
+    if (pressure) {
+      const fluid::ValvePoint point = chain.evaluate({current}, options.flows).front();
+      values.insert(values.end(),
+                    {point.dp_total, point.dp_yield, point.dp_viscous, point.dp_total_average_b});
+    }
+    if (coil) {
+      const fluid::CoilProperties properties = chain.coil(current, first_inductance(solved));
+      values.insert(values.end(),
+                    {properties.resistance, properties.time_constant, properties.power});
+    }
+    return values;
+  };
+  return {group};
+}
+
+}  // namespace rheomag::optimise
