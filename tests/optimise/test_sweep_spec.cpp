@@ -156,6 +156,17 @@ TEST(SweepSpec, BadAxesAreInputErrors) {
             std::string::npos);
 }
 
+TEST(SweepSpec, ShippedExampleReads) {
+  // cases/sweeps/annular_gap_current.toml: 5 widths x 6 currents; the current range is
+  // 0.25 + 0.25 k, and the 6 currents of a width form one mesh-sharing block.
+  const SweepSpec spec = read_sweep(std::filesystem::path(RHEOMAG_SOURCE_DIR) /
+                                    "cases/sweeps/annular_gap_current.toml");
+  EXPECT_EQ(design_count(spec), 30);
+  EXPECT_EQ(mesh_sharing_block(spec), 6);
+  const DesignGenerator designs(spec);
+  EXPECT_DOUBLE_EQ(std::get<double>(designs.design(7).values[1]), 0.5);
+}
+
 TEST(SweepSpec, ShardParsing) {
   const Shard s = parse_shard("1/4");
   EXPECT_EQ(s.index, 1);
