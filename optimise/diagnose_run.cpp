@@ -1,0 +1,428 @@
+// Forward selection of missing physics on top of the calibrated baseline.
+
+#include "optimise/diagnose_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+#include "lumped/metrics.hpp"
+#include "mesh/error.hpp"
+
+namespace rheomag::optimise {
+
+namespace {
+
+constexpr std::size_t kMinSamples = 100;
+
+double bic(double sse, std::size_t n, std::size_t k) {
+  const double nn = static_cast<double>(n);
+  return nn * std::log(std::max(sse, 1e-300) / nn) + static_cast<double>(k) * std::log(nn);
+}
+
+double fit_percent_of(const std::vector<double>& y, const std::vector<double>& yhat) {
+  return lumped::fit_percent(y, yhat);
+}
+
+bool has_effect(const ModelFit& f, Effect e) {
+  return std::find(f.effects.begin(), f.effects.end(), e) != f.effects.end();
+}
+
+/// True if `c` did not make the fit clearly worse (BIC up by more than `margin`) when tried alone
+/// at the first step: a candidate masked by a larger effect then still gets its second chance.
+bool worth_retrying(const std::vector<CandidateScore>& scores, Effect c, double margin) {
+  for (const auto& s : scores)
+    if (s.step == 0 && s.effect == c) return s.delta_bic > -margin;
+  return false;
+}
+
+/// Candidates whose output fits tie (within 5 % of the best's improvement) are told apart by
+/// the measured coil current when the recording has one that the model does not take as input:
+/// coil inductance delays that current, field and fluid lags do not.
+template <class Tried>
+void prefer_by_measured_current(const DiagnosisModel& model, std::vector<Tried>& tried) {
+  const auto& rec = model.recording();
+  if (tried.size() < 2 || model.output_column() == "current" || !rec.columns.count("current") ||
+      std::find(rec.meta.drive.begin(), rec.meta.drive.end(), "current") != rec.meta.drive.end())
+    return;
+  const double best = tried.front().fit.sse;
+  const double spread = 0.05 * std::abs(best);
+  std::size_t tied = 1;
+  while (tied < tried.size() && tried[tied].fit.sse - best < spread) ++tied;
+  if (tied < 2) return;
+  const auto& measured = rec.column("current");
+  std::vector<double> current_sse(tied);
+  for (std::size_t i = 0; i < tied; ++i) {
+    try {
+      const auto c = model.predict_column(tried[i].fit.effects, tried[i].fit.values, "current");
+      current_sse[i] = masked_sse(measured, c, {});
+    } catch (const std::exception&) {
+      current_sse[i] = std::numeric_limits<double>::infinity();
+    }
+  }
+  const auto best_i = static_cast<std::size_t>(
+      std::min_element(current_sse.begin(), current_sse.end()) - current_sse.begin());
+  if (current_sse[best_i] < 0.5 * current_sse[0]) std::swap(tried[0], tried[best_i]);
+}
+
+/// Rejects recordings that cannot support a diagnosis, saying why.
+void check_informative(const DiagnosisModel& model) {
+  const auto& rec = model.recording();
+  const std::string name = rec.csv_path.empty() ? std::string("recording") : rec.csv_path;
+  if (rec.t.size() < kMinSamples)
+    throw InputError(name + ": too short to diagnose: " + std::to_string(rec.t.size()) +
+                     " samples, at least " + std::to_string(kMinSamples) + " needed");
+  const auto& y = model.measured();
+  const auto [lo, hi] = std::minmax_element(y.begin(), y.end());
+  const double span = *hi - *lo;
+  if (!(span > 1e-9 * std::max(std::abs(*hi), std::abs(*lo))) || span == 0.0)
+    throw InputError(name + ": the output column '" + model.output_column() +
+                     "' is flat; nothing to diagnose");
+  bool any_moving = false;
+  for (const auto& c : rec.meta.drive) {
+    auto it = rec.columns.find(c);
+    if (it == rec.columns.end()) continue;
+    const auto [a, b] = std::minmax_element(it->second.begin(), it->second.end());
+    if (*b > *a) any_moving = true;
+  }
+  if (!any_moving)
+    throw InputError(name +
+                     ": every drive column is constant; the recording is too flat to "
+                     "diagnose");
+}
+
+std::vector<bool> block_mask(std::size_t n, int blocks, bool even) {
+  std::vector<bool> mask(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto b = static_cast<int>(k * static_cast<std::size_t>(blocks) / n);
+    mask[k] = (b % 2 == 0) == even;
+  }
+  return mask;
+}
+
+/// Held-out squared error: fit on even blocks, score on odd, and the other way round.
+double heldout_sse(const DiagnosisModel& model, const ModelFit& full, int blocks, int iterations) {
+  double total = 0.0;
+  for (bool even : {true, false}) {
+    FitSettings s;
+    s.mask = block_mask(model.measured().size(), blocks, even);
+    s.max_iterations = iterations;
+    const auto f = fit_model(model, full.effects, full.values, s);
+    auto other = s.mask;
+    other.flip();
+    total += masked_sse(model.measured(), f.prediction, other);
+  }
+  return total;
+}
+
+std::string fmt(double v, int digits = 3) {
+  std::ostringstream o;
+  o.precision(digits);
+  o << v;
+  return o.str();
+}
+
+double regime_share(const std::vector<MismatchWindow>& windows, const std::string& regime) {
+  double s = 0.0;
+  for (const auto& w : windows)
+    if (w.regime == regime) s += w.share;
+  return s;
+}
+
+std::string evidence_for(Effect e, const Diagnosis& d, const ModelFit& fit) {
+  std::ostringstream o;
+  const auto& st = d.baseline_stats;
+  const double lag_ms = 1e3 * st.output_lag;
+  auto value = [&](const std::string& name) {
+    for (std::size_t j = 0; j < fit.layout.size(); ++j)
+      if (fit.layout[j].name == name) return fit.values[j];
+    return 0.0;
+  };
+  switch (e) {
+    case Effect::compressibility:
+      o << "the output lags the baseline by " << fmt(lag_ms) << " ms; "
+        << fmt(100 * regime_share(d.mismatch, "flow reversal"), 2)
+        << " % of the residual energy sits at flow reversals, where a chamber with "
+        << fmt(value("air_volume")) << " m^3 of air per chamber must be compressed before "
+        << "pressure can build";
+      break;
+    case Effect::fluid_inertia:
+      o << "the residual follows the piston acceleration (pressure leads the baseline by "
+        << fmt(-lag_ms) << " ms); an inertance of " << fmt(value("inertance"))
+        << " Pa s^2/m^3 explains it";
+      break;
+    case Effect::eddy_currents:
+    case Effect::mr_response_time:
+      o << "the output lags the baseline by " << fmt(lag_ms) << " ms, mostly at current edges ("
+        << fmt(100 * (regime_share(d.mismatch, "current rising edge") +
+                      regime_share(d.mismatch, "current falling edge")),
+               2)
+        << " % of the residual energy in rising/falling-edge windows); a first-order lag of "
+        << fmt(1e3 * value("time_constant")) << " ms between current and yield stress removes it";
+      break;
+    case Effect::coil_inductance:
+      o << "the response lags the coil voltage at its edges (output " << fmt(lag_ms)
+        << " ms behind the baseline); an inductance of " << fmt(value("inductance"))
+        << " H (L/R = " << fmt(1e3 * value("inductance") / d.final_fit.values.front()) << " ms"
+        << ") explains it";
+      break;
+    case Effect::coil_heating:
+      o << "the residual drifts slowly (it follows the integral of the coil drive); a coil "
+           "warming with thermal resistance "
+        << fmt(value("thermal_resistance")) << " K/W and time constant "
+        << fmt(value("thermal_time_constant")) << " s loses current as R(T) rises";
+      break;
+    case Effect::friction: {
+      double opening = 0.0, ratio = 0.0;
+      for (const auto& l : st.loops)
+        if (l.input == "velocity") opening = l.opening, ratio = l.slow_fast_ratio;
+      o << "the residual steps with the sign of the velocity (loop opening " << fmt(opening, 2)
+        << " of the residual rms, " << fmt(ratio, 2)
+        << " as wide at slow as at fast rates: rate-independent); a Coulomb force of "
+        << fmt(value("coulomb_force")) << " N explains it";
+      break;
+    }
+    case Effect::magnetic_hysteresis:
+      break;
+  }
+  if (!st.correlations.empty())
+    o << "; strongest residual correlation: " << st.correlations.front().signal << " ("
+      << fmt(st.correlations.front().value, 2) << ")";
+  return o.str();
+}
+
+std::string separating_measurement(Effect a, Effect b) {
+  auto pair = [&](Effect x, Effect y) { return (a == x && b == y) || (a == y && b == x); };
+  if (pair(Effect::eddy_currents, Effect::mr_response_time))
+    return "both are one first-order lag between coil current and yield stress; measure the "
+           "flux in the gap (search coil or Hall probe): eddy currents delay the flux behind the "
+           "current, a slow MR response does not; or repeat with a laminated core";
+  if (pair(Effect::compressibility, Effect::fluid_inertia))
+    return "change the frequency: a compliance lag shrinks with stiffer fluid and grows with the "
+           "pressure swing, inertia grows with the square of the frequency";
+  if (pair(Effect::coil_inductance, Effect::eddy_currents) ||
+      pair(Effect::coil_inductance, Effect::mr_response_time))
+    return "record the coil current: inductance delays the current itself, field and fluid lags "
+           "do not";
+  return "excite the device at several frequencies and amplitudes: the two effects scale "
+         "differently with rate and amplitude";
+}
+
+}  // namespace
+
+Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options) {
+  DiagnosisModel model(rec);
+  check_informative(model);
+  Diagnosis d;
+  d.recording = rec.csv_path;
+  d.output_column = model.output_column();
+  d.t = rec.t;
+  d.measured = model.measured();
+  const auto& y = model.measured();
+  const std::size_t n = y.size();
+
+  // 1. Baseline: calibrate the static parameters.
+  std::vector<double> start;
+  for (const auto& p : model.static_params()) start.push_back(p.nominal);
+  FitSettings calib;
+  calib.max_iterations = 50;
+  d.baseline = fit_model(model, {}, start, calib);
+  d.baseline_fit_percent = fit_percent_of(y, d.baseline.prediction);
+
+  // 2. Locate.
+  std::vector<double> residual(n);
+  for (std::size_t k = 0; k < n; ++k) residual[k] = y[k] - d.baseline.prediction[k];
+  d.mismatch = locate_mismatch(model.recording(), residual);
+  d.baseline_stats =
+      residual_statistics(model.recording(), rec.meta.drive, y, d.baseline.prediction);
+
+  // 3. Name: forward selection.
+  ModelFit current = d.baseline;
+  FitSettings settings;
+  settings.max_iterations = options.max_iterations;
+  const auto candidates = model.applicable_effects();
+  for (int step = 0; step < options.max_effects; ++step) {
+    struct Tried {
+      Effect effect;
+      ModelFit fit;
+      double delta_bic;
+    };
+    std::vector<Tried> tried;
+    const double bic_now = bic(current.sse, n, current.values.size());
+    const bool first_step = step == 0;
+    for (Effect c : candidates) {
+      if (std::find(current.effects.begin(), current.effects.end(), c) != current.effects.end())
+        continue;
+      // After the first step, candidates that made the fit clearly worse alone are not retried.
+      if (!first_step && !worth_retrying(d.candidates, c, options.bic_margin)) continue;
+      // Eddy currents and MR response time are the same first-order lag block in the rig model:
+      // when neither is in yet, the second is the first's fit under another name.
+      if (c == Effect::eddy_currents && !has_effect(current, Effect::mr_response_time)) {
+        auto twin = std::find_if(tried.begin(), tried.end(), [](const auto& t) {
+          return t.effect == Effect::mr_response_time;
+        });
+        if (twin != tried.end()) {
+          d.candidates.push_back(
+              {c, step, fit_percent_of(y, twin->fit.prediction), twin->delta_bic});
+          tried.push_back({c, twin->fit, twin->delta_bic});
+          tried.back().fit.effects.back() = c;
+          continue;
+        }
+      }
+      auto effects = current.effects;
+      effects.push_back(c);
+      auto s = current.values;
+      for (const auto& p : model.effect_params(c)) s.push_back(p.nominal);
+      try {
+        const auto started = std::chrono::steady_clock::now();
+        s = grid_start(model, effects, s);
+        auto f = fit_model(model, effects, s, settings);
+        const double db = bic_now - bic(f.sse, n, f.values.size());
+        if (options.trace)
+          std::cerr
+              << "diagnose: step " << step + 1 << " " << effect_name(c) << " dBIC " << db << " in "
+              << std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()
+              << " s\n";
+        d.candidates.push_back({c, step, fit_percent_of(y, f.prediction), db});
+        tried.push_back({c, std::move(f), db});
+      } catch (const ConvergenceError&) {
+        d.notes.push_back("candidate " + effect_name(c) + " could not be simulated at step " +
+                          std::to_string(step + 1));
+      }
+    }
+    if (tried.empty()) break;
+    std::stable_sort(tried.begin(), tried.end(),
+                     [](const Tried& a, const Tried& b) { return a.delta_bic > b.delta_bic; });
+    prefer_by_measured_current(model, tried);
+    const auto& best = tried.front();
+    if (best.delta_bic <= options.bic_margin) break;
+    const int cv_iterations = std::max(options.max_iterations / 3, 5);
+    const double held_now = heldout_sse(model, current, options.blocks, cv_iterations);
+    const double held_new = heldout_sse(model, best.fit, options.blocks, cv_iterations);
+    const double gain = held_now > 0 ? 1.0 - held_new / held_now : 0.0;
+    if (gain < options.heldout_margin) {
+      d.notes.push_back(effect_name(best.effect) + " lowered BIC by " + fmt(best.delta_bic) +
+                        " but cut the held-out error by only " + fmt(100 * gain, 2) +
+                        " %: not accepted");
+      break;
+    }
+    Finding f;
+    f.effect = best.effect;
+    f.fit_percent = fit_percent_of(y, best.fit.prediction);
+    f.delta_bic = best.delta_bic;
+    f.heldout_gain = gain;
+    const double reduction = current.sse - best.fit.sse;
+    for (std::size_t i = 1; i < tried.size(); ++i)
+      if (tried[i].fit.sse - best.fit.sse < 0.05 * reduction) {
+        f.ambiguous_with.push_back(tried[i].effect);
+        if (f.separating_measurement.empty())
+          f.separating_measurement = separating_measurement(best.effect, tried[i].effect);
+      }
+    d.findings.push_back(std::move(f));
+    current = best.fit;
+  }
+
+  // Re-fit all accepted effects together.
+  if (!d.findings.empty()) {
+    FitSettings polish;
+    polish.max_iterations = 2 * options.max_iterations;
+    auto refit = fit_model(model, current.effects, current.values, polish);
+    if (refit.sse <= current.sse) current = std::move(refit);
+  }
+  d.final_fit = current;
+  d.final_fit_percent = fit_percent_of(y, current.prediction);
+  d.final_stats = residual_statistics(model.recording(), rec.meta.drive, y, current.prediction);
+  for (std::size_t k = 0; k < n; ++k) residual[k] = y[k] - current.prediction[k];
+  d.final_mismatch = locate_mismatch(model.recording(), residual);
+  std::size_t offset = model.static_params().size();
+  for (auto& f : d.findings) {
+    for (const auto& p : model.effect_params(f.effect)) {
+      f.param_names.push_back(p.name);
+      f.params.push_back(current.values[offset]);
+      f.standard_errors.push_back(current.standard_errors[offset]);
+      ++offset;
+    }
+    f.evidence = evidence_for(f.effect, d, current);
+  }
+  if (!model.chamber_volume_given() && !d.findings.empty())
+    d.notes.push_back(
+        "[rig] chamber_volume not given: compressibility assumed 2e-5 m^3 of oil "
+        "per chamber");
+  if (model.constant_field())
+    d.notes.push_back("the recording has no coil input: the field is taken as constant");
+  if (d.findings.empty() && !d.baseline_stats.white)
+    d.notes.push_back("the residual is not white but no candidate explains it significantly");
+  return d;
+}
+
+nlohmann::json diagnosis_json(const Diagnosis& d) {
+  using nlohmann::json;
+  auto params_of = [](const ModelFit& f, std::size_t from, std::size_t to) {
+    json p = json::object();
+    for (std::size_t j = from; j < to; ++j) p[f.layout[j].name] = f.values[j];
+    return p;
+  };
+  const std::size_t n_static = d.baseline.values.size();
+  json out;
+  out["recording"] = d.recording;
+  out["baseline"] = {{"fit_percent", d.baseline_fit_percent},
+                     {"params", params_of(d.baseline, 0, n_static)}};
+  out["mismatch"] = json::array();
+  for (const auto& w : d.mismatch)
+    out["mismatch"].push_back({{"t_start", w.t_start},
+                               {"t_end", w.t_end},
+                               {"share_of_residual", w.share},
+                               {"regime", w.regime}});
+  out["missing_physics"] = json::array();
+  for (const auto& f : d.findings) {
+    json p = json::object(), u = json::object();
+    for (std::size_t j = 0; j < f.params.size(); ++j) {
+      p[f.param_names[j]] = f.params[j];
+      u[f.param_names[j]] =
+          std::isfinite(f.standard_errors[j]) ? json(f.standard_errors[j]) : json();
+    }
+    if (f.effect == Effect::compressibility && !f.params.empty())
+      p["hydraulic_capacitance"] = f.params[0] / 1e5;  // isothermal air at the 1e5 Pa precharge
+    json e = {{"name", effect_name(f.effect)}, {"params", p},
+              {"standard_errors", u},          {"fit_percent", f.fit_percent},
+              {"delta_bic", f.delta_bic},      {"heldout_gain", f.heldout_gain},
+              {"evidence", f.evidence}};
+    if (!f.ambiguous_with.empty()) {
+      e["ambiguous_with"] = json::array();
+      for (Effect a : f.ambiguous_with) e["ambiguous_with"].push_back(effect_name(a));
+      e["separating_measurement"] = f.separating_measurement;
+    }
+    out["missing_physics"].push_back(e);
+  }
+  out["final"] = {{"fit_percent", d.final_fit_percent},
+                  {"params", params_of(d.final_fit, 0, d.final_fit.values.size())}};
+  json stats;
+  stats["whiteness"] = {{"lag1_autocorrelation", d.baseline_stats.lag1_autocorrelation},
+                        {"ljung_box_q", d.baseline_stats.ljung_box_q},
+                        {"white", d.baseline_stats.white}};
+  stats["correlations"] = json::array();
+  for (const auto& c : d.baseline_stats.correlations)
+    stats["correlations"].push_back({{"signal", c.signal}, {"value", c.value}, {"lag", c.lag}});
+  stats["loops"] = json::array();
+  for (const auto& l : d.baseline_stats.loops)
+    stats["loops"].push_back({{"input", l.input},
+                              {"opening", l.opening},
+                              {"slow_fast_ratio", l.slow_fast_ratio},
+                              {"rate_independent", l.rate_independent}});
+  stats["output_lag"] = d.baseline_stats.output_lag;
+  stats["final_white"] = d.final_stats.white;
+  out["residual_statistics"] = stats;
+  out["candidates"] = json::array();
+  for (const auto& c : d.candidates)
+    out["candidates"].push_back({{"name", effect_name(c.effect)},
+                                 {"step", c.step + 1},
+                                 {"fit_percent", c.fit_percent},
+                                 {"delta_bic", c.delta_bic}});
+  out["notes"] = d.notes;
+  return out;
+}
+
+}  // namespace rheomag::optimise
