@@ -70,8 +70,9 @@ void write_fit_plot(const std::string& png_path, const std::string& title,
     data_files.push_back(file.string());
   }
   const std::filesystem::path target(png_path);
-  const std::filesystem::path temp =
-      target.parent_path() / ("." + target.filename().string() + ".tmp");
+  std::string temp_name(".");  // hidden sibling, renamed into place when gnuplot is done
+  temp_name.append(target.filename().string()).append(".tmp");
+  const std::filesystem::path temp = target.parent_path() / temp_name;
   const auto script_path = scratch.path / "plot.gp";
   {
     std::ofstream gp(script_path);
