@@ -1,0 +1,205 @@
+// Gap pressure drop: as in fluid/valve_chain.cpp (every gap region in series; annular: mean
+// radius = mid-line r, length = z extent, clearance = area / length; radial: r extent), with
+// the normal flux density sampled at kSamples mid-line points. Off state: B = 0 along the gap.
+// Coil: turns and the winding window from the circuit-0 regions of the (morphed) mesh.
+
+#include "optimise/optimise_evaluate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "fluid/coil.hpp"
+#include "fluid/field_coupling.hpp"
+#include "fluid/valve_chain.hpp"
+#include "magnetostatics/domain.hpp"
+#include "magnetostatics/material_library.hpp"
+#include "mesh/error.hpp"
+#include "mesh/mesher.hpp"
+#include "optimise/optimise_case_edit.hpp"
+
+namespace rheomag::optimise {
+
+namespace {
+
+constexpr int kSamples = 101;
+
+struct GapDrops {
+  double on = 0.0, off = 0.0, b_average = 0.0, min_gap = INFINITY;
+};
+
+GapDrops gap_drops(const magnetostatics::MagnetostaticSolver& solver,
+                   const magnetostatics::Solution& solution, const magnetostatics::Results& results,
+                   const fluid::Fluid& fluid, double flow, double inlet_radius) {
+  GapDrops out;
+  double b_sum = 0.0;
+  int b_count = 0;
+  for (const auto& gap : results.gaps) {
+    const double dr = gap.line_end.r - gap.line_start.r, dz = gap.line_end.z - gap.line_start.z;
+    const double length = std::hypot(dr, dz);
+    const bool annular = gap.kind == mesh::GapKind::annular;
+    fluid::GapFieldSamples field, zero;
+    for (int i = 0; i < kSamples; ++i) {
+      const double t = (i + 0.5) / kSamples;
+      const mesh::Point p{gap.line_start.r + t * dr, gap.line_start.z + t * dz};
+      std::array<double, 2> b{};
+      if (!magnetostatics::flux_density_at(solver, solution, p, gap.region, b)) continue;
+      const double position = annular ? t * length : p.r;
+      if (!annular && position < inlet_radius) continue;
+      field.position.push_back(position);
+      field.b.push_back(std::abs(annular ? b[0] : b[1]));
+      b_sum += field.b.back();
+      ++b_count;
+    }
+    if (field.position.size() < 2)
+      throw InputError("gap \"" + gap.name + "\": fewer than 2 mid-line field samples found");
+    zero = field;
+    std::fill(zero.b.begin(), zero.b.end(), 0.0);
+    if (annular) {
+      const double h = gap.area / std::abs(dz);
+      const fluid::AnnulusGeometry g{h, gap.line_start.r, std::abs(dz)};
+      out.on += fluid::annular_gap_in_field(g, field, fluid, flow).integrated.dp;
+      out.off += fluid::annular_gap_in_field(g, zero, fluid, flow).integrated.dp;
+      out.min_gap = std::min(out.min_gap, h);
+    } else {
+      const double r_in = std::max(std::min(gap.line_start.r, gap.line_end.r), inlet_radius);
+      const double r_out = std::max(gap.line_start.r, gap.line_end.r);
+      if (!(r_in > 0.0))
+        throw InputError("gap \"" + gap.name + "\" starts on the axis: set [valve] inlet_radius");
+      const double h = gap.area / std::abs(dr);
+      const fluid::RadialGeometry g{h, r_in, r_out};
+      out.on += fluid::radial_gap_in_field(g, field, fluid, flow).integrated.dp;
+      out.off += fluid::radial_gap_in_field(g, zero, fluid, flow).integrated.dp;
+      out.min_gap = std::min(out.min_gap, h);
+    }
+  }
+  out.b_average = b_count > 0 ? b_sum / b_count : 0.0;
+  return out;
+}
+
+}  // namespace
+
+DesignEvaluator::DesignEvaluator(magnetostatics::Case base, OptimiseSpec spec)
+    : base_(std::move(base)), spec_(std::move(spec)) {
+  const std::string where = base_.source.string();
+  for (const auto& v : spec_.variables) keys_.push_back(v.key);
+  if (base_.fluid.empty()) throw InputError(where + ": the case names no MR fluid ([case] fluid)");
+  fluid_ =
+      fluid::read_fluid(magnetostatics::MaterialLibrary::standard().get(base_.fluid, where).file);
+  if (base_.problem.circuits.empty()) throw InputError(where + ": the case has no coil circuit");
+  const auto valve = fluid::read_valve_options(base_);
+  wire_ = valve.wire;
+  temperature_ = valve.temperature;
+  if (!wire_.empty()) wire_diameter_ = fluid::wire_diameter(wire_);
+  static const std::vector<std::string> needs_wire = {"resistance", "time_constant", "power",
+                                                      "current_density", "copper_fill"};
+  auto uses = [&](const std::string& q) {
+    if (spec_.objective == q) return true;
+    for (const auto& c : spec_.constraints)
+      if (c.quantity == q) return true;
+    return false;
+  };
+  for (const auto& q : needs_wire)
+    if (wire_.empty() && uses(q))
+      throw InputError(where + ": \"" + q +
+                       "\" needs the coil wire: set [valve] wire = \"AWG 24\" (or \"0.5 mm\")");
+}
+
+magnetostatics::Case DesignEvaluator::case_at(const std::vector<double>& x) const {
+  return case_from_table(with_values(base_.table, keys_, x), base_.source.string());
+}
+
+mesh::Mesh DesignEvaluator::mesh_for(const magnetostatics::Problem& closed,
+                                     const Breakpoints& breakpoints) {
+  if (have_mesh_) {
+    if (auto morphed = morph_mesh(reference_mesh_, reference_breakpoints_, breakpoints))
+      return std::move(*morphed);
+  }
+  mesh::MeshOptions options;
+  options.order = closed.order;
+  options.min_gap_elements = closed.min_gap_elements;
+  reference_mesh_ = mesh::generate_mesh(closed.geometry, options);
+  reference_breakpoints_ = breakpoints;
+  have_mesh_ = true;
+  ++meshes_;
+  return reference_mesh_;
+}
+
+Quantities DesignEvaluator::evaluate(const std::vector<double>& x) {
+  const auto c = case_at(x);
+  const auto breakpoints = geometry_breakpoints(c.problem.geometry);
+  magnetostatics::Problem closed = magnetostatics::close_domain(c.problem);
+  mesh::Mesh mesh = mesh_for(closed, breakpoints);
+  magnetostatics::SolveOptions options;
+  options.incremental_inductance = false;
+  auto solver =
+      std::make_unique<magnetostatics::MagnetostaticSolver>(closed, std::move(mesh), options);
+  std::vector<double> currents(closed.circuits.size(), 0.0);
+  for (std::size_t k = 1; k < currents.size(); ++k) currents[k] = closed.circuits[k].current;
+  currents[0] = spec_.current;
+  auto solution = solver->solve(currents);
+  ++fe_solves_;
+  auto results = magnetostatics::compute_results(*solver, solution);
+  if (results.gaps.empty()) throw InputError(base_.source.string() + ": the case has no fluid gap");
+
+  Quantities q;
+  const auto valve = fluid::read_valve_options(c);
+  const auto drops = gap_drops(*solver, solution, results, fluid_, spec_.flow, valve.inlet_radius);
+  q["dp_on"] = drops.on;
+  q["dp_off"] = drops.off;
+  q["dynamic_range"] = drops.on / drops.off;
+  q["b_gap"] = drops.b_average;
+  q["min_gap"] = drops.min_gap;
+  const double inductance = results.circuits.empty() ? 0.0 : results.circuits[0].inductance;
+  q["inductance"] = inductance;
+
+  // Peak |B| over the elements of nonlinear (steel) materials.
+  const auto& m = solver->mesh();
+  const auto& regions = solver->problem().regions;
+  const auto& materials = solver->problem().materials;
+  double peak = 0.0, area = 0.0, moment = 0.0, turns = 0.0;
+  for (std::size_t e = 0; e < m.triangles.size(); ++e) {
+    const auto& region = regions[m.region[e]];
+    if (region.material >= 0 && !materials[region.material].bh.empty())
+      peak = std::max(peak, results.element_b[e]);
+    if (region.circuit != 0) continue;
+    const auto& t = m.triangles[e];
+    const mesh::Point a = m.nodes[t[0]], b = m.nodes[t[1]], d = m.nodes[t[2]];
+    const double triangle = 0.5 * std::abs((b.r - a.r) * (d.z - a.z) - (d.r - a.r) * (b.z - a.z));
+    area += triangle;
+    moment += triangle * (a.r + b.r + d.r) / 3.0;
+  }
+  for (const auto& region : regions)
+    if (region.circuit == 0) turns += std::abs(region.turns);
+  q["peak_steel_b"] = peak;
+
+  double r_max = 0.0, z_min = INFINITY, z_max = -INFINITY;
+  for (const auto& p : c.problem.geometry.points) {
+    r_max = std::max(r_max, p.r);
+    z_min = std::min(z_min, p.z);
+    z_max = std::max(z_max, p.z);
+  }
+  q["outer_radius"] = r_max;
+  q["length"] = z_max - z_min;
+
+  if (wire_diameter_ > 0.0 && area > 0.0 && turns > 0.0) {
+    fluid::CoilSpec coil;
+    coil.turns = turns;
+    coil.wire_diameter = wire_diameter_;
+    coil.window_area = area;
+    coil.mean_turn_length = 2.0 * std::numbers::pi * moment / area;
+    coil.temperature = temperature_;
+    const auto p = fluid::coil_properties(coil, spec_.current, inductance);
+    q["resistance"] = p.resistance;
+    q["time_constant"] = p.time_constant;
+    q["power"] = p.power;
+    q["current_density"] = p.current_density;
+    q["copper_fill"] = p.copper_fill;
+  }
+  last_.solver = std::move(solver);
+  last_.solution = std::move(solution);
+  last_.results = std::move(results);
+  return q;
+}
+
+}  // namespace rheomag::optimise
