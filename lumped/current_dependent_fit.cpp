@@ -1,0 +1,70 @@
+// Family fits: join recordings, fit one grey-box model, evaluate it on every member.
+
+#include "lumped/current_dependent_fit.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "mesh/error.hpp"
+
+namespace rheomag::lumped {
+
+namespace {
+
+FamilyMember evaluate_member(const Recording& rec, const GreyboxFit& fit) {
+  FamilyMember m;
+  m.csv_path = rec.csv_path;
+  if (!fit.setup.field_column.empty()) {
+    const auto& u = rec.column(fit.setup.field_column);
+    m.field = std::accumulate(u.begin(), u.end(), 0.0) / static_cast<double>(u.size());
+  }
+  m.simulated = simulate_greybox(rec, fit);
+  m.metrics = compute_metrics(rec.column(fit.setup.output_column), m.simulated);
+  return m;
+}
+
+}  // namespace
+
+Recording join_recordings(const std::vector<Recording>& recs, int decimation) {
+  if (recs.empty()) throw InputError("join_recordings: no recordings given");
+  if (decimation < 1)
+    throw InputError("decimation must be at least 1, got " + std::to_string(decimation));
+  const Recording& first = recs.front();
+  Recording joined;
+  joined.meta = first.meta;
+  joined.csv_path = first.csv_path;
+  for (const auto& [name, values] : first.columns) {
+    (void)values;
+    const bool everywhere = std::all_of(recs.begin(), recs.end(),
+                                        [&](const Recording& r) { return r.columns.count(name); });
+    if (everywhere) joined.columns[name];
+  }
+  for (const Recording& r : recs) {
+    if (r.meta.drive != first.meta.drive || r.meta.output != first.meta.output)
+      throw InputError(r.csv_path + ": drive/output columns differ from " + first.csv_path +
+                       "; a family fit needs recordings of the same kind");
+    if (r.t.size() < 2) throw InputError(r.csv_path + ": fewer than 2 samples");
+    const double step = (r.t[1] - r.t[0]) * decimation;
+    const double shift = joined.t.empty() ? -r.t.front() : joined.t.back() + step - r.t.front();
+    for (std::size_t i = 0; i < r.t.size(); i += static_cast<std::size_t>(decimation)) {
+      joined.t.push_back(r.t[i] + shift);
+      for (auto& [name, values] : joined.columns) values.push_back(r.columns.at(name)[i]);
+    }
+  }
+  return joined;
+}
+
+FamilyFit fit_current_dependent(const std::vector<Recording>& training, const std::string& model,
+                                const std::vector<Recording>& prediction,
+                                const FamilyFitOptions& options) {
+  const Recording joined = join_recordings(training, options.decimation);
+  GreyboxOptions gb = options.greybox;
+  gb.train.reset();
+  FamilyFit out;
+  out.fit = fit_greybox(joined, model, gb);
+  for (const Recording& r : training) out.training.push_back(evaluate_member(r, out.fit));
+  for (const Recording& r : prediction) out.predicted.push_back(evaluate_member(r, out.fit));
+  return out;
+}
+
+}  // namespace rheomag::lumped

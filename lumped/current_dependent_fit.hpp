@@ -1,0 +1,50 @@
+#pragma once
+// Current-dependent grey-box fits across a family of recordings of one device (paper 001's
+// protocol): one parameter set, with the field-scaled terms of the model linear in the current,
+// fitted jointly on recordings at several currents and frequencies, then used to predict other
+// recordings (e.g. another frequency), with per-recording metrics (RE of paper 001 eq. 10).
+
+#include <string>
+#include <vector>
+
+#include "lumped/greybox.hpp"
+#include "lumped/metrics.hpp"
+#include "lumped/recording.hpp"
+
+namespace rheomag::lumped {
+
+/// Options of a family fit: the grey-box options plus how the recordings are joined.
+struct FamilyFitOptions {
+  GreyboxOptions greybox;  ///< `train` is ignored (every joined sample is fitted)
+  int decimation = 4;      ///< keep every n-th sample of each recording in the joint fit
+};
+
+/// Metrics of the fitted model on one recording of the family (free run, full rate).
+struct FamilyMember {
+  std::string csv_path;
+  double field = 0.0;  ///< [A or V] mean of the field drive column (the recording's current)
+  Metrics metrics;
+  std::vector<double> simulated;  ///< free-run model output at the recording's samples
+};
+
+/// Result of fit_current_dependent.
+struct FamilyFit {
+  GreyboxFit fit;                       ///< the joint fit (its metrics are on the joined data)
+  std::vector<FamilyMember> training;   ///< the fitted model on each training recording
+  std::vector<FamilyMember> predicted;  ///< the fitted model on each prediction recording
+};
+
+/// The recordings joined end to end, each decimated by `decimation` and shifted in time to
+/// follow the previous one by one (decimated) sample step; columns present in all are kept.
+/// InputError if the list is empty, decimation < 1, or the recordings' sidecars disagree on the
+/// drive or output columns.
+Recording join_recordings(const std::vector<Recording>& recs, int decimation);
+
+/// Fits `model` (a grey-box name) jointly on `training` (joined, see join_recordings) so that its
+/// field-scaled parameters are linear functions of the current, then simulates every training
+/// and `prediction` recording separately with the fitted parameters.
+FamilyFit fit_current_dependent(const std::vector<Recording>& training, const std::string& model,
+                                const std::vector<Recording>& prediction,
+                                const FamilyFitOptions& options = {});
+
+}  // namespace rheomag::lumped
