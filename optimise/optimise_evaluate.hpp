@@ -39,6 +39,9 @@ class DesignEvaluator {
   /// All quantities of design `x` (one nonlinear FE solve). Throws InputError for an invalid
   /// design and ConvergenceError if Newton fails.
   Quantities evaluate(const std::vector<double>& x);
+  /// Makes the next evaluate() generate a fresh mesh (the one `rheomag solve` would use for that
+  /// design) and use it as the reference of later morphs.
+  void remesh_next() { have_mesh_ = false; }
   /// The field of the last evaluate() call.
   const EvaluatedField& last_field() const { return last_; }
   /// FE solves done so far.

@@ -1,0 +1,217 @@
+// FE-in-the-loop optimisation on a coarse P1 annular valve: gradient consistency on the morphed
+// mesh, constraints respected at the written optimum (re-solved from the file), infeasible
+// specifications reported, bad input rejected.
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "magnetostatics/case_file.hpp"
+#include "mesh/error.hpp"
+#include "optimise/optimise_evaluate.hpp"
+#include "optimise/optimise_run.hpp"
+#include "optimise/optimise_spec.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace rheomag;
+
+// Paper 000's annular valve on a coarse P1 mesh (1 element across the gap) so each FE solve is
+// fast; the [optimise] table is appended per test.
+const std::string kBase = R"(
+[case]
+name = "coarse_annular"
+units = "mm"
+fluid = "MRC-C1L"
+[geometry]
+template = "annular_valve"
+neck_radius = 10.5
+pole_length = 5.0
+coil_length = 32.0
+turns = 600
+[[circuit]]
+name = "coil"
+current = 1.0
+[solver]
+order = 1
+min_gap_elements = 1
+outer_radius_factor = 3.0
+[valve]
+wire = "AWG 24"
+)";
+
+const std::string kTwoVariables = R"(
+[optimise]
+objective = "dp_on"
+current = 1.0
+flow = 6.91e-6
+max_iterations = 12
+[[optimise.variable]]
+key = "geometry.neck_radius"
+lower = 8.0
+upper = 12.5
+[[optimise.variable]]
+key = "geometry.pole_length"
+lower = 3.0
+upper = 8.0
+)";
+
+magnetostatics::Case make_case(const std::string& optimise) {
+  return magnetostatics::parse_case(kBase + optimise, "coarse_annular.toml");
+}
+
+fs::path temp_dir(const std::string& name) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("rheomag_optimise_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// Central differences of dp_on in neck_radius on the morphed mesh at three steps (0.2, 0.05,
+// 0.0125 mm): with a smooth objective the O(h^2) truncation error makes successive estimates
+// agree to well under 2 %, and all designs share one mesh (no re-meshing noise).
+TEST(OptimiseFe, GradientIsConsistentAcrossStepSizesOnTheMorphedMesh) {
+  const auto c = make_case(kTwoVariables);
+  optimise::DesignEvaluator evaluator(c, optimise::read_optimise_spec(c));
+  const double r0 = 10.5, p0 = 5.0;
+  std::vector<double> slopes;
+  for (double h : {0.2, 0.05, 0.0125}) {
+    const double up = evaluator.evaluate({r0 + h, p0}).at("dp_on");
+    const double down = evaluator.evaluate({r0 - h, p0}).at("dp_on");
+    slopes.push_back((up - down) / (2.0 * h));
+  }
+  EXPECT_EQ(evaluator.meshes(), 1);
+  EXPECT_EQ(evaluator.fe_solves(), 6);
+  ASSERT_NE(slopes[2], 0.0);
+  EXPECT_NEAR(slopes[0] / slopes[2], 1.0, 0.02) << slopes[0] << " " << slopes[2];
+  EXPECT_NEAR(slopes[1] / slopes[2], 1.0, 0.02) << slopes[1] << " " << slopes[2];
+}
+
+// Optimise with L/R and length constraints; the written case is re-loaded and re-evaluated on a
+// fresh mesh (as `rheomag solve` does): every constraint holds there within the feasibility
+// tolerance kFeasibilityTolerance (0.1 % of the limit).
+TEST(OptimiseFe, WrittenOptimumRespectsEveryConstraint) {
+  // Limits below the initial design's values (L/R 68 ms, length 44 mm) so that they bind.
+  const std::string spec = kTwoVariables + R"(
+[[optimise.constraint]]
+quantity = "time_constant"
+max = 0.05
+[[optimise.constraint]]
+quantity = "length"
+max = 0.043
+)";
+  const auto c = make_case(spec);
+  const fs::path dir = temp_dir("constraints");
+  optimise::OptimiseOptions options;
+  options.out_dir = dir;
+  const auto r = optimise::run_optimisation(c, options);
+  ASSERT_TRUE(r.optimal.feasible) << optimise::format_summary(r);
+  ASSERT_TRUE(fs::exists(r.case_file));
+  ASSERT_TRUE(fs::exists(r.history_file));
+  ASSERT_TRUE(fs::exists(r.vtu_file));
+
+  const auto reloaded = magnetostatics::load_case(r.case_file);
+  const auto reloaded_spec = optimise::read_optimise_spec(reloaded);
+  optimise::DesignEvaluator check(reloaded, reloaded_spec);
+  std::vector<double> x;
+  for (const auto& v : reloaded_spec.variables) x.push_back(v.initial);
+  for (std::size_t i = 0; i < x.size(); ++i) EXPECT_DOUBLE_EQ(x[i], r.optimal.x[i]);
+  const auto q = check.evaluate(x);
+  for (const auto& k : reloaded_spec.constraints) {
+    const double value = q.at(k.quantity);
+    if (std::isfinite(k.upper)) {
+      EXPECT_LE(value, k.upper * (1.0 + optimise::kFeasibilityTolerance)) << k.quantity;
+    }
+    if (std::isfinite(k.lower)) {
+      EXPECT_GE(value, k.lower * (1.0 - optimise::kFeasibilityTolerance)) << k.quantity;
+    }
+  }
+  fs::remove_all(dir);
+}
+
+// L/R at most 1 ms and dp_on at least 50 MPa cannot both hold in these bounds: the run ends
+// infeasible and names both constraints.
+TEST(OptimiseFe, InfeasibleSpecificationNamesTheConflictingConstraints) {
+  const std::string spec = kTwoVariables + R"(
+[[optimise.constraint]]
+quantity = "time_constant"
+max = 0.001
+[[optimise.constraint]]
+quantity = "dp_on"
+min = 5e7
+)";
+  auto c = make_case(spec);
+  const fs::path dir = temp_dir("infeasible");
+  optimise::OptimiseOptions options;
+  options.out_dir = dir;
+  const auto r = optimise::run_optimisation(c, options);
+  EXPECT_FALSE(r.optimal.feasible);
+  std::string all;
+  for (const auto& text : r.conflicts) all += text + "\n";
+  EXPECT_NE(all.find("time_constant"), std::string::npos) << all;
+  EXPECT_NE(all.find("dp_on"), std::string::npos) << all;
+  EXPECT_NE(optimise::format_summary(r).find("No feasible design"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+std::string input_error(const std::string& optimise) {
+  try {
+    optimise::read_optimise_spec(make_case(optimise));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(OptimiseFe, BadInputIsAnInputErrorNamingTheKey) {
+  const std::string head = "[optimise]\nflow = 1e-6\n";
+  // Bounds reversed.
+  EXPECT_NE(input_error(head + "[[optimise.variable]]\nkey = \"geometry.neck_radius\"\n"
+                               "lower = 12.0\nupper = 8.0\n")
+                .find("bounds reversed"),
+            std::string::npos);
+  // Not a case key: the closest key is suggested.
+  EXPECT_NE(input_error(head + "[[optimise.variable]]\nkey = \"geometry.neck_radios\"\n"
+                               "lower = 8.0\nupper = 12.0\n")
+                .find("did you mean \"geometry.neck_radius\""),
+            std::string::npos);
+  // A dimension bound that is not physical.
+  EXPECT_NE(input_error(head + "[[optimise.variable]]\nkey = \"geometry.pole_length\"\n"
+                               "lower = -1.0\nupper = 8.0\n")
+                .find("> 0"),
+            std::string::npos);
+  // Unknown constraint quantity.
+  EXPECT_NE(input_error(head + "[[optimise.variable]]\nkey = \"geometry.neck_radius\"\n"
+                               "lower = 8.0\nupper = 12.0\n[[optimise.constraint]]\n"
+                               "quantity = \"time_constnt\"\nmax = 0.03\n")
+                .find("did you mean \"time_constant\""),
+            std::string::npos);
+}
+
+// The CLI exits 2 on bad input and prints nothing on stdout.
+TEST(OptimiseFe, CliExitsTwoOnBadInput) {
+  const fs::path dir = temp_dir("cli");
+  const fs::path file = dir / "bad.toml";
+  std::ofstream(file) << kBase
+                      << "[optimise]\nflow = 1e-6\n[[optimise.variable]]\n"
+                         "key = \"geometry.neck_radius\"\nlower = 12.0\nupper = 8.0\n";
+  const std::string command = std::string(RHEOMAG_BINARY) + " optimise " + file.string() +
+                              " --out " + dir.string() + " --json > " + (dir / "out.txt").string() +
+                              " 2>/dev/null";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  EXPECT_EQ(fs::file_size(dir / "out.txt"), 0u);
+  fs::remove_all(dir);
+}
+
+}  // namespace
