@@ -1,0 +1,105 @@
+// rheomag optimise CASE: design optimisation of a case's valve with the FE in the loop (Ipopt,
+// central-difference gradients on a morphed fixed-topology mesh). Logic in
+// optimise/optimise_run.hpp; format of the [optimise] table in docs/optimisation.md.
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "app/command.hpp"
+#include "magnetostatics/case_file.hpp"
+#include "optimise/optimise_run.hpp"
+
+namespace {
+
+struct OptimiseCli {
+  std::string case_file;
+  std::string out_dir = ".";
+  bool json = false;
+  bool verbose = false;
+};
+
+nlohmann::json design_json(const rheomag::optimise::DesignReport& d,
+                           const rheomag::optimise::OptimiseSpec& spec) {
+  nlohmann::json variables = nlohmann::json::object();
+  for (std::size_t i = 0; i < spec.variables.size(); ++i) variables[spec.variables[i].key] = d.x[i];
+  nlohmann::json quantities = nlohmann::json::object();
+  for (const auto& [name, value] : d.quantities) quantities[name] = value;
+  nlohmann::json constraints = nlohmann::json::array();
+  for (const auto& s : d.constraints) {
+    nlohmann::json c = {{"quantity", s.constraint.quantity},
+                        {"value", s.value},
+                        {"satisfied", s.satisfied},
+                        {"active", s.active}};
+    if (std::isfinite(s.constraint.lower)) c["min"] = s.constraint.lower;
+    if (std::isfinite(s.constraint.upper)) c["max"] = s.constraint.upper;
+    constraints.push_back(c);
+  }
+  return {{"objective", d.objective},   {"feasible", d.feasible},
+          {"variables", variables},     {"quantities", quantities},
+          {"constraints", constraints}, {"variables_at_bounds", d.variables_at_bounds}};
+}
+
+int run_optimise(const OptimiseCli& o) {
+  using namespace rheomag;
+  const auto c = magnetostatics::load_case(o.case_file);
+  optimise::OptimiseOptions options;
+  options.out_dir = o.out_dir;
+  options.print_level = o.verbose && !o.json ? 5 : 0;
+  const auto r = optimise::run_optimisation(c, options);
+  if (o.json) {
+    nlohmann::json out = {{"case", c.name},
+                          {"objective", r.spec.objective},
+                          {"sense", r.spec.maximise ? "maximise" : "minimise"},
+                          {"status", r.status},
+                          {"converged", r.converged},
+                          {"iterations", r.iterations},
+                          {"initial", design_json(r.initial, r.spec)},
+                          {"optimal", design_json(r.optimal, r.spec)},
+                          {"conflicts", r.conflicts},
+                          {"case_file", r.case_file.string()},
+                          {"history_file", r.history_file.string()},
+                          {"vtu_file", r.vtu_file.string()},
+                          {"fe_solves", r.fe_solves},
+                          {"meshes", r.meshes},
+                          {"seconds", r.seconds}};
+    std::cout << out.dump(2) << "\n";
+  } else {
+    std::cout << optimise::format_summary(r);
+  }
+  return r.optimal.feasible ? 0 : 1;
+}
+
+const bool registered = rheomag::app::register_command([](CLI::App& root) {
+  auto o = std::make_shared<OptimiseCli>();
+  CLI::App* cmd = root.add_subcommand(
+      "optimise",
+      "Design optimisation of a case's MR valve with the FE in the loop. The case's [optimise]\n"
+      "table names the design variables (any numeric case key, e.g. geometry.neck_radius, with\n"
+      "bounds in the file's units), the objective (dp_on, dp_off, dynamic_range, power,\n"
+      "time_constant, ...; maximise or minimise), constraints on those quantities (SI units),\n"
+      "the current and the flow. Ipopt (interior point, L-BFGS) with central-difference\n"
+      "gradients on a morphed mesh of fixed topology. Writes CASE_optimal.toml (solvable by\n"
+      "'rheomag solve'), CASE_history.csv and CASE_optimal.vtu; prints initial vs optimal.\n"
+      "Exit 1 if no feasible design was found (the conflicting constraints are listed).\n"
+      "See docs/optimisation.md.");
+  cmd->add_option("case", o->case_file, "Case file (.toml) with an [optimise] table")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--out", o->out_dir, "Output directory (default: current directory)");
+  cmd->add_flag("--json", o->json, "Print one JSON object to stdout");
+  cmd->add_flag("--verbose", o->verbose, "Show Ipopt's iteration log");
+  cmd->callback([o] {
+    const int code = run_optimise(*o);
+    if (code != 0) {  // infeasible: the report is printed; exit 1 (not an input error)
+      std::cout.flush();
+      std::exit(code);
+    }
+  });
+});
+
+}  // namespace
