@@ -177,7 +177,7 @@ ModelFit fit_model(const DiagnosisModel& model, const std::vector<Effect>& effec
 }
 
 std::vector<double> grid_start(const DiagnosisModel& model, const std::vector<Effect>& effects,
-                               std::vector<double> start) {
+                               std::vector<double> start, double* best_sse) {
   const auto layout = model.layout(effects);
   const std::size_t j = layout.size() - model.effect_params(effects.back()).size();
   const auto& d = layout[j];
@@ -195,6 +195,7 @@ std::vector<double> grid_start(const DiagnosisModel& model, const std::vector<Ef
     }
   }
   start[j] = best_value;
+  if (best_sse) *best_sse = best;
   return start;
 }
 

@@ -37,8 +37,9 @@ double masked_sse(const std::vector<double>& measured, const std::vector<double>
                   const std::vector<bool>& mask);
 
 /// Best start for `effects.back()`'s first parameter: a decade grid over its bounds with the
-/// other values held at `start`; returns `start` with that parameter replaced.
+/// other values held at `start`; returns `start` with that parameter replaced and, in
+/// `best_sse` when given, the squared error there.
 std::vector<double> grid_start(const DiagnosisModel& model, const std::vector<Effect>& effects,
-                               std::vector<double> start);
+                               std::vector<double> start, double* best_sse = nullptr);
 
 }  // namespace rheomag::optimise

@@ -124,6 +124,12 @@ DiagnosisModel::DiagnosisModel(const lumped::Recording& rec) : rec_(rec) {
     throw InputError(where + ": [recording] output = \"" + meta.output + "\" but a " +
                      meta.rig.kind + " rig explains \"" + output_ + "\"");
   measured_ = rec_.column(output_);
+  // [rig] orientation = -1: the output is recorded with the opposite sign (e.g. mrdamper).
+  if (auto o = meta.rig.extra.find("orientation"); o != meta.rig.extra.end()) {
+    if (o->second != 1.0 && o->second != -1.0)
+      throw InputError(where + ": [rig] orientation must be 1 or -1");
+    for (double& y : measured_) y *= o->second;
+  }
   for (const auto& c : lumped::rig_drive_columns(base_)) (void)rec_.column(c);
   const double mean = std::accumulate(measured_.begin(), measured_.end(), 0.0) /
                       static_cast<double>(measured_.size());

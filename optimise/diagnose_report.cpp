@@ -100,8 +100,10 @@ std::string svg_plot(const std::string& title, const std::string& ylabel,
   o << "<text x='" << L << "' y='18' font-weight='bold'>" << escape(title) << "</text>\n";
   const std::size_t stride = std::max<std::size_t>(1, (b - a) / 2000);
   double legend_x = W - R - 10;
-  for (auto it = series.rbegin(); it != series.rend(); ++it) {
-    o << "<polyline fill='none' stroke='" << it->color << "' stroke-width='1.3' points='";
+  // The first series (the measurement) is drawn first, wide and grey, so the models show on top.
+  for (auto it = series.begin(); it != series.end(); ++it) {
+    o << "<polyline fill='none' stroke='" << it->color << "' stroke-width='"
+      << (it == series.begin() ? 2.5 : 1.3) << "' points='";
     for (std::size_t k = a; k < b; k += stride) o << X(t[k]) << ',' << Y((*it->values)[k]) << ' ';
     o << "'/>\n";
     legend_x -= 8.0 * static_cast<double>(it->label.size()) + 30;
@@ -190,7 +192,7 @@ std::string diagnosis_html(const Diagnosis& d) {
   }
   o << "<h2>Measured, baseline and final model</h2>\n"
     << svg_plot("measured vs baseline vs final", ylabel, d.t,
-                {{"measured", "#222", &d.measured},
+                {{"measured", "#999", &d.measured},
                  {"baseline", "#d62728", &d.baseline.prediction},
                  {"final", "#1f77b4", &d.final_fit.prediction}},
                 {}, d.t.front(), d.t.back());
@@ -204,7 +206,7 @@ std::string diagnosis_html(const Diagnosis& d) {
     o << "<h2>Zoom on the worst window (" << num(w.t_start) << "&ndash;" << num(w.t_end) << " s, "
       << escape(w.regime) << ", " << num(100 * w.share, 3) << " % of the residual energy)</h2>\n"
       << svg_plot("worst window", ylabel, d.t,
-                  {{"measured", "#222", &d.measured},
+                  {{"measured", "#999", &d.measured},
                    {"baseline", "#d62728", &d.baseline.prediction},
                    {"final", "#1f77b4", &d.final_fit.prediction}},
                   {{w.t_start, w.t_end}}, w.t_start - margin, w.t_end + margin);
@@ -235,7 +237,8 @@ std::string diagnosis_html(const Diagnosis& d) {
        "%</th><th>&Delta;BIC</th></tr>\n";
   for (const auto& c : d.candidates)
     o << "<tr><td>" << c.step + 1 << "</td><td>" << effect_name(c.effect) << "</td><td>"
-      << num(c.fit_percent, 4) << "</td><td>" << num(c.delta_bic, 4) << "</td></tr>\n";
+      << (c.screened ? std::string("screened out") : num(c.fit_percent, 4)) << "</td><td>"
+      << num(c.delta_bic, 4) << "</td></tr>\n";
   o << "</table>\n";
   if (!d.notes.empty()) {
     o << "<h2>Notes</h2><ul>";

@@ -31,11 +31,12 @@ bool has_effect(const ModelFit& f, Effect e) {
   return std::find(f.effects.begin(), f.effects.end(), e) != f.effects.end();
 }
 
-/// True if `c` did not make the fit clearly worse (BIC up by more than `margin`) when tried alone
-/// at the first step: a candidate masked by a larger effect then still gets its second chance.
+/// True if `c` was fitted at the first step (not screened out) and did not make the fit clearly
+/// worse (BIC up by more than `margin`): a candidate masked by a larger effect then still gets its
+/// second chance.
 bool worth_retrying(const std::vector<CandidateScore>& scores, Effect c, double margin) {
   for (const auto& s : scores)
-    if (s.step == 0 && s.effect == c) return s.delta_bic > -margin;
+    if (s.step == 0 && s.effect == c) return !s.screened && s.delta_bic > -margin;
   return false;
 }
 
@@ -278,7 +279,18 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
       for (const auto& p : model.effect_params(c)) s.push_back(p.nominal);
       try {
         const auto started = std::chrono::steady_clock::now();
-        s = grid_start(model, effects, s);
+        double grid_sse = 0.0;
+        s = grid_start(model, effects, s, &grid_sse);
+        // Screening: a candidate that lowers the error at no decade of its parameter (the
+        // others held at the current fit) is scored there and not fitted.
+        if (!(grid_sse < current.sse)) {
+          const double db = bic_now - bic(grid_sse, n, s.size());
+          d.candidates.push_back({c, step, 0.0, db, true});
+          if (options.trace)
+            std::cerr << "diagnose: step " << step + 1 << " " << effect_name(c)
+                      << " screened out (no decade of its parameter helps)\n";
+          continue;
+        }
         auto f = fit_model(model, effects, s, settings);
         const double db = bic_now - bic(f.sse, n, f.values.size());
         if (options.trace)
@@ -417,10 +429,12 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
   out["residual_statistics"] = stats;
   out["candidates"] = json::array();
   for (const auto& c : d.candidates)
-    out["candidates"].push_back({{"name", effect_name(c.effect)},
-                                 {"step", c.step + 1},
-                                 {"fit_percent", c.fit_percent},
-                                 {"delta_bic", c.delta_bic}});
+    out["candidates"].push_back(
+        {{"name", effect_name(c.effect)},
+         {"step", c.step + 1},
+         {"fit_percent", c.screened ? nlohmann::json() : nlohmann::json(c.fit_percent)},
+         {"screened", c.screened},
+         {"delta_bic", c.delta_bic}});
   out["notes"] = d.notes;
   return out;
 }

@@ -19,7 +19,7 @@ struct DiagnoseOptions {
   double bic_margin = 10.0;      ///< a candidate must lower BIC by more than this
   double heldout_margin = 0.03;  ///< ... and cut the held-out squared error by this fraction
   int blocks = 8;                ///< alternating time blocks for the two-fold held-out check
-  int max_iterations = 25;       ///< Levenberg-Marquardt iterations per fit
+  int max_iterations = 15;       ///< Levenberg-Marquardt iterations per fit
   bool trace = false;            ///< print each candidate fit and its time on stderr
 };
 
@@ -29,6 +29,7 @@ struct CandidateScore {
   int step = 0;
   double fit_percent = 0.0;
   double delta_bic = 0.0;  ///< BIC of the model before minus BIC with this candidate
+  bool screened = false;   ///< no decade of its parameter helped: scored on the grid, not fitted
 };
 
 /// One accepted piece of missing physics.
