@@ -31,14 +31,19 @@ void BM_NonlinearSolve(benchmark::State& state) {
   }
   MagnetostaticSolver solver(test::pot_core_problem(steel, 400, 2.0, 2),
                              test::pot_core_mesh(core, cells_per_mm(state.range(0)), 2));
-  int iterations = 0;
+  int iterations = 0, factorizations = 0, cg = 0;
   for (auto _ : state) {
+    const int factorized = solver.factorizations(), reused = solver.reuse_iterations();
     const Solution s = solver.solve();
     iterations = s.newton.iterations;
+    factorizations = solver.factorizations() - factorized;
+    cg = solver.reuse_iterations() - reused;
     benchmark::DoNotOptimize(s.flux_linkage);
   }
   state.counters["dofs"] = solver.dofs().free_count();
   state.counters["newton"] = iterations;
+  state.counters["factorisations"] = factorizations;
+  state.counters["cg_iterations"] = cg;
 }
 BENCHMARK(BM_NonlinearSolve)
     ->Arg(10'000)
@@ -60,6 +65,50 @@ void BM_SolverSetup(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_SolverSetup)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/// One global assembly at the 2 A solution: residual only (argument 0) or residual and tangent
+/// (argument 1), on the about 1e5-unknown mesh. Newton does one tangent assembly per step and one
+/// residual assembly per line-search trial.
+void BM_Assembly(benchmark::State& state) {
+  const test::PotCore core;
+  MagnetostaticSolver solver(test::pot_core_problem(test::aisi1010(), 400, 2.0, 2),
+                             test::pot_core_mesh(core, cells_per_mm(100'000), 2));
+  const Solution solution = solver.solve();
+  SparseMatrix tangent = solver.assembler().pattern();
+  Eigen::VectorXd residual;
+  for (auto _ : state) {
+    solver.assembler().assemble(solution.a, residual, state.range(0) ? &tangent : nullptr);
+    benchmark::DoNotOptimize(residual.data());
+  }
+  state.counters["elements"] = static_cast<double>(solver.mesh().triangles.size());
+}
+BENCHMARK(BM_Assembly)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+/// CHOLMOD on the tangent at the 2 A solution of the about 1e5-unknown mesh: numeric supernodal
+/// factorisation (argument 0; the symbolic analysis is done once outside the loop) or one
+/// forward/back substitution with that factor (argument 1), as one preconditioned CG iteration
+/// costs. Counters: nonzeros of L and flops of the factorisation as CHOLMOD reports them.
+void BM_Cholesky(benchmark::State& state) {
+  const test::PotCore core;
+  MagnetostaticSolver solver(test::pot_core_problem(test::aisi1010(), 400, 2.0, 2),
+                             test::pot_core_mesh(core, cells_per_mm(100'000), 2));
+  const SparseMatrix tangent = solver.tangent(solver.solve().a);
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholesky;
+  cholesky.analyzePattern(tangent);
+  cholesky.factorize(tangent);
+  const Eigen::VectorXd rhs = Eigen::VectorXd::Ones(tangent.rows());
+  for (auto _ : state) {
+    if (state.range(0) == 0) {
+      cholesky.factorize(tangent);
+    } else {
+      Eigen::VectorXd x = cholesky.solve(rhs);
+      benchmark::DoNotOptimize(x.data());
+    }
+  }
+  state.counters["lnz"] = cholesky.cholmod().lnz;
+  state.counters["flops"] = cholesky.cholmod().fl;
+}
+BENCHMARK(BM_Cholesky)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 /// 21-point sweep 0..4 A (lambda(I), L(I), dlambda/dI), warm-started, one symbolic analysis.
 void BM_CurrentSweep21(benchmark::State& state) {
