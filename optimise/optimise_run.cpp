@@ -135,6 +135,15 @@ class ScaledProgram {
     return true;
   }
   const std::vector<HistoryRow>& history() const { return history_; }
+  /// Records an evaluation done outside the program (the start) so Ipopt does not repeat it.
+  void seed(const std::vector<double>& u, const Quantities& q, const std::string& purpose) {
+    HistoryRow row;
+    row.purpose = purpose;
+    row.x = to_design(u);
+    row.q = q;
+    history_.push_back(row);
+    cache_.emplace(u, std::move(row));
+  }
   /// Drops the cached evaluations (after the reference mesh changed).
   void forget() { cache_.clear(); }
 
@@ -228,6 +237,7 @@ OptimiseResult run_optimisation(const magnetostatics::Case& c, const OptimiseOpt
   nlp.lower.assign(spec.variables.size(), 0.0);
   nlp.upper.assign(spec.variables.size(), 1.0);
   nlp.start = program.to_scaled(x0);
+  program.seed(nlp.start, q0, "initial");
   for (const auto& k : spec.constraints) {
     const double scale = constraint_scale(k);
     nlp.g_lower.push_back(std::isfinite(k.lower) ? k.lower / scale : -kNoBound);
