@@ -11,16 +11,17 @@ void b_operator(Symmetry symmetry, int order, const std::array<mesh::Point, 3>& 
   lagrange_basis(order, xi, eta, n, d_xi, d_eta);
   const double r10 = v[1].r - v[0].r, r20 = v[2].r - v[0].r;
   const double z10 = v[1].z - v[0].z, z20 = v[2].z - v[0].z;
-  const double det = r10 * z20 - r20 * z10;
+  const double inv_det = 1.0 / (r10 * z20 - r20 * z10);  // one division per point, not 2 per node
   const int nodes = order == 1 ? 3 : 6;
   const double r = v[0].r + xi * r10 + eta * r20;
+  const double inv_r = r > 0.0 ? 1.0 / r : 0.0;
   for (int i = 0; i < nodes; ++i) {
-    const double dn_dr = (z20 * d_xi[i] - z10 * d_eta[i]) / det;
-    const double dn_dz = (-r20 * d_xi[i] + r10 * d_eta[i]) / det;
+    const double dn_dr = (z20 * d_xi[i] - z10 * d_eta[i]) * inv_det;
+    const double dn_dz = (-r20 * d_xi[i] + r10 * d_eta[i]) * inv_det;
     if (symmetry == Symmetry::axisymmetric) {
       g_r[i] = -dn_dz;
       // B_z = dA/dr + A/r; on the axis (A = 0 there) A/r -> dA/dr.
-      g_z[i] = r > 0.0 ? dn_dr + n[i] / r : 2.0 * dn_dr;
+      g_z[i] = r > 0.0 ? dn_dr + n[i] * inv_r : 2.0 * dn_dr;
     } else {
       g_r[i] = dn_dz;
       g_z[i] = -dn_dr;
@@ -74,10 +75,15 @@ void element_residual_tangent(const ElementQuadrature& q, const double* a, const
     if (!tangent) continue;
     const double rank_one = 2.0 * law.dnu_db2(b2);
     for (int i = 0; i < m; ++i) {
-      for (int j = 0; j < m; ++j) {
+      for (int j = 0; j <= i; ++j) {  // lower triangle; mirrored below (K is symmetric)
         tangent[i * m + j] += w * (nu * (q.g_r[p][i] * q.g_r[p][j] + q.g_z[p][i] * q.g_z[p][j]) +
                                    rank_one * b_dot_g[i] * b_dot_g[j]);
       }
+    }
+  }
+  if (tangent) {
+    for (int i = 0; i < m; ++i) {
+      for (int j = i + 1; j < m; ++j) tangent[i * m + j] = tangent[j * m + i];
     }
   }
 }
