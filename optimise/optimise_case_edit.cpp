@@ -72,6 +72,15 @@ double numeric_case_value(const toml::table& table, const std::string& key,
                    (close.empty() ? "" : " (did you mean \"" + close + "\"?)"));
 }
 
+bool is_count_key(const toml::table& table, const std::string& key) {
+  const auto name = table["geometry"]["template"].value<std::string>();
+  const auto* valve = name ? magnetostatics::find_template(*name) : nullptr;
+  if (!valve) return false;
+  for (const auto& p : valve->parameters)
+    if (p.kind == magnetostatics::ParameterKind::count && key == "geometry." + p.key) return true;
+  return false;
+}
+
 toml::table with_values(const toml::table& table, const std::vector<std::string>& keys,
                         const std::vector<double>& values) {
   toml::table out = table;

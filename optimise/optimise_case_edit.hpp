@@ -23,6 +23,9 @@ toml::table with_values(const toml::table& table, const std::vector<std::string>
 /// Parses a case from an edited table (`source` names it in messages and resolves paths).
 magnetostatics::Case case_from_table(const toml::table& table, const std::string& source);
 
+/// True if `key` is a count parameter of the case's template (e.g. geometry.turns).
+bool is_count_key(const toml::table& table, const std::string& key);
+
 /// The TOML text of a table.
 std::string toml_text(const toml::table& table);
 

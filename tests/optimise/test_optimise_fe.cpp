@@ -182,6 +182,33 @@ max = 0.043
   fs::remove_all(dir);
 }
 
+// Turns are varied continuously, then rounded (nearest, down, up; re-checked on a fresh mesh):
+// the written optimum has whole turns and still meets L/R <= 50 ms.
+TEST(OptimiseFe, TurnsAreRoundedAndReChecked) {
+  const std::string spec = kTwoVariables + R"(
+[[optimise.variable]]
+key = "geometry.turns"
+lower = 300
+upper = 700
+[[optimise.constraint]]
+quantity = "time_constant"
+max = 0.05
+)";
+  const auto c = make_case(spec);
+  const fs::path dir = temp_dir("turns");
+  optimise::OptimiseOptions options;
+  options.out_dir = dir;
+  const auto r = optimise::run_optimisation(c, options);
+  ASSERT_TRUE(r.optimal.feasible) << optimise::format_summary(r);
+  const double turns = r.optimal.x[2];
+  EXPECT_EQ(turns, std::round(turns));
+  const auto reloaded = magnetostatics::load_case(r.case_file);
+  EXPECT_EQ(reloaded.table["geometry"]["turns"].value<double>().value_or(-1.0), turns);
+  EXPECT_LE(r.optimal.quantities.at("time_constant"),
+            0.05 * (1.0 + optimise::kFeasibilityTolerance));
+  fs::remove_all(dir);
+}
+
 // L/R at most 1 ms and dp_on at least 50 MPa cannot both hold in these bounds: the run ends
 // infeasible and names both constraints.
 TEST(OptimiseFe, InfeasibleSpecificationNamesTheConflictingConstraints) {
