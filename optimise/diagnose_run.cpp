@@ -181,9 +181,9 @@ std::string evidence_for(Effect e, const Diagnosis& d, const ModelFit& fit) {
       for (const auto& l : st.loops)
         if (l.input == "velocity") opening = l.opening, ratio = l.slow_fast_ratio;
       o << "the residual steps with the sign of the velocity (loop opening " << fmt(opening, 2)
-        << " of the residual rms, " << fmt(ratio, 2)
-        << " as wide at slow as at fast rates: rate-independent); a Coulomb force of "
-        << fmt(value("coulomb_force")) << " N explains it";
+        << " of the residual rms, " << fmt(ratio, 2) << " as wide at slow as at fast rates: "
+        << (ratio > 0.5 ? "rate-independent" : "rate-dependent, so friction explains only part")
+        << "); a Coulomb force of " << fmt(value("coulomb_force")) << " N explains it";
       break;
     }
     case Effect::magnetic_hysteresis:
