@@ -1,6 +1,9 @@
 // rheomag: command-line entry point. Subcommands live in app/cmd_*.cpp.
 
+#include <dlfcn.h>
+
 #include <CLI/CLI.hpp>
+#include <cstdlib>
 #include <iostream>
 #include <vector>
 
@@ -25,6 +28,17 @@ void setup_commands(CLI::App& root) {
   for (auto& setup : registry()) setup(root);
 }
 
+/// Makes OpenBLAS (when it is the system BLAS behind CHOLMOD) single-threaded unless the user
+/// set OPENBLAS_NUM_THREADS: at rheomag's problem sizes a second BLAS thread gains little, and
+/// with parallel sweep workers or a busy machine its spinning threads cost 20x (see
+/// docs/performance.md, "Threads"). Looked up at run time: other BLAS builds lack the symbol.
+void prefer_single_threaded_blas() {
+  if (std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;
+  using SetThreads = void (*)(int);
+  if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
+    set(1);
+}
+
 }  // namespace rheomag::app
 
 int main(int argc, char** argv) {
@@ -34,6 +48,7 @@ int main(int argc, char** argv) {
       "dynamics,\nidentification, diagnosis and optimisation. Run 'rheomag COMMAND --help' "
       "for each command."};
   root.require_subcommand(1);
+  rheomag::app::prefer_single_threaded_blas();
   rheomag::app::setup_commands(root);
   try {
     root.parse(argc, argv);
