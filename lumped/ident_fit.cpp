@@ -9,6 +9,7 @@
 #include "lumped/ident_narx.hpp"
 #include "lumped/ident_svr.hpp"
 #include "lumped/ident_tf.hpp"
+#include "magnetostatics/toml_section.hpp"
 #include "mesh/error.hpp"
 
 namespace rheomag::lumped {
@@ -26,21 +27,6 @@ const std::vector<std::string>& known_model_names() {
 }
 
 namespace {
-
-std::size_t levenshtein(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
 
 std::string family_of(const std::string& text) {
   return text.substr(0, text.find(':'));
@@ -65,7 +51,7 @@ std::string closest_model_name(const std::string& given, const std::vector<std::
   std::string best;
   std::size_t best_distance = std::string::npos;
   for (const auto& name : names) {
-    const std::size_t d = levenshtein(family_of(given), family_of(name));
+    const std::size_t d = magnetostatics::edit_distance(family_of(given), family_of(name));
     if (d < best_distance) {
       best_distance = d;
       best = name;
