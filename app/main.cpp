@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdlib>
 #include <iostream>
+#include <string>
 #include <vector>
 
 #include "app/command.hpp"
@@ -24,8 +25,46 @@ bool register_command(CommandSetup setup) {
   return true;
 }
 
+namespace {
+
+/// The first sentence of a command's description (abbreviations such as "e.g." do not end it),
+/// cut at a word boundary to fit one line of the root --help.
+std::string first_sentence(const std::string& text) {
+  std::size_t end = 0;
+  while (true) {
+    end = text.find('.', end);
+    if (end == std::string::npos) return text.substr(0, text.find('\n'));
+    const bool abbreviation = (end >= 3 && text.compare(end - 3, 3, "e.g") == 0) ||
+                              (end >= 3 && text.compare(end - 3, 3, "i.e") == 0) ||
+                              (end >= 1 && text[end - 1] == '*');
+    if (!abbreviation && (end + 1 == text.size() || text[end + 1] == ' ' || text[end + 1] == '\n'))
+      break;
+    ++end;
+  }
+  std::string sentence = text.substr(0, end);
+  for (char& c : sentence)
+    if (c == '\n') c = ' ';
+  constexpr std::size_t kWidth = 90;
+  if (sentence.size() > kWidth) {
+    const std::size_t space = sentence.rfind(' ', kWidth);
+    sentence = sentence.substr(0, space == std::string::npos ? kWidth : space) + " ...";
+  }
+  return sentence;
+}
+
+}  // namespace
+
 void setup_commands(CLI::App& root) {
   for (auto& setup : registry()) setup(root);
+  // The root --help lists each command by its first sentence; the whole text is shown below the
+  // options of the command's own --help.
+  for (CLI::App* command : root.get_subcommands([](CLI::App*) { return true; })) {
+    const std::string full = command->get_description();
+    const std::string summary = first_sentence(full);
+    if (summary == full) continue;
+    command->description(summary);
+    command->footer(full);
+  }
 }
 
 /// Makes OpenBLAS (when it is the system BLAS behind CHOLMOD) single-threaded unless the user
