@@ -38,16 +38,21 @@ struct ValvePoint {
   double current = 0.0, flow = 0.0;
   double dp_total = 0.0, dp_yield = 0.0, dp_viscous = 0.0;  ///< field-integrated [Pa]
   double dp_total_average_b = 0.0;                          ///< one-average-B shortcut [Pa]
-  double inductance = 0.0;                                  ///< secant lambda/I [H]
+  double flux_linkage = 0.0;                                ///< lambda of circuit 0 [Wb]
+  double inductance = 0.0;                                  ///< secant lambda/I of circuit 0 [H]
+  double incremental_inductance = 0.0;  ///< dlambda/dI of circuit 0 [H] (NaN if not computed)
   std::vector<SegmentResult> segments;
 };
 
-/// A case's valve: mesh and solver set up once, then any number of operating points.
+/// A case's valve: mesh and solver set up once, then any number of operating points. (For a
+/// field that is already solved, use SolvedValve in fluid/solved_valve.hpp.)
 class ValveChain {
  public:
-  /// Meshes the case and prepares the solver; InputError if it has no gap, no coil or no fluid.
+  /// Meshes the case and prepares the solver (no solve yet); InputError if it has no gap, no
+  /// coil or no fluid.
   ValveChain(const magnetostatics::Case& c, ValveOptions options);
-  /// Solves the field at each current and evaluates every flow at it (current-major order).
+  /// Solves the field once at each current and evaluates every flow in it with SolvedValve
+  /// (current-major order).
   std::vector<ValvePoint> evaluate(const std::vector<double>& currents,
                                    const std::vector<double>& flows);
   /// Coil quantities at `current` with inductance `inductance` (needs ValveOptions::wire).
@@ -58,7 +63,7 @@ class ValveChain {
   double turns() const { return coil_.turns; }
 
  private:
-  magnetostatics::SolveResult solved_;
+  std::unique_ptr<magnetostatics::MagnetostaticSolver> solver_;
   Fluid fluid_;
   ValveOptions options_;
   CoilSpec coil_;

@@ -1,13 +1,14 @@
 #include "optimise/sweep_valve_columns.hpp"
 
+#include "fluid/solved_valve.hpp"
 #include "fluid/valve_chain.hpp"
 
 namespace rheomag::optimise {
 
 namespace {
 
-double first_current(const magnetostatics::Case& c) {
-  return c.problem.circuits.empty() ? 0.0 : c.problem.circuits.front().current;
+double first_current(const SolvedDesign& solved) {
+  return solved.results.circuits.empty() ? 0.0 : solved.results.circuits.front().current;
 }
 
 double first_inductance(const SolvedDesign& solved) {
@@ -31,18 +32,21 @@ std::vector<ColumnGroup> valve_columns(const SweepSpec& spec) {
                        {"coil_resistance_Ohm", "coil_time_constant_s", "coil_power_W"});
   }
   group.evaluate = [pressure, coil](const SolvedDesign& solved) {
+    // The design's own field solve (no second mesh or solve).
     const magnetostatics::Case& c = solved.design_case;
     const fluid::ValveOptions options = fluid::read_valve_options(c);
-    fluid::ValveChain chain(c, options);
-    const double current = first_current(c);
     std::vector<double> values;
     if (pressure) {
-      const fluid::ValvePoint point = chain.evaluate({current}, options.flows).front();
+      const fluid::SolvedValve valve(solved.solver, solved.solution, solved.results,
+                                     fluid::case_fluid(c), options);
+      const fluid::ValvePoint point = valve.point(options.flows.front());
       values.insert(values.end(),
                     {point.dp_total, point.dp_yield, point.dp_viscous, point.dp_total_average_b});
     }
     if (coil) {
-      const fluid::CoilProperties properties = chain.coil(current, first_inductance(solved));
+      const fluid::CoilProperties properties =
+          fluid::coil_properties(fluid::coil_spec(solved.solver, options), first_current(solved),
+                                 first_inductance(solved));
       values.insert(values.end(),
                     {properties.resistance, properties.time_constant, properties.power});
     }
