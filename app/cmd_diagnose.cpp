@@ -70,10 +70,11 @@ const bool registered = app::register_command([](CLI::App& root) {
       "   calibrated by least squares first.\n"
       "2. The residual is located in time windows tagged by regime (flow reversal, current edge,\n"
       "   steady, drift, high frequency) and correlated with the inputs.\n"
-      "3. Candidates (compressibility, fluid_inertia, eddy_currents, mr_response_time,\n"
-      "   coil_inductance, coil_heating, friction) are fitted on top; one is accepted only if it\n"
-      "   lowers BIC by > 10 and the error on held-out time blocks by > 3 %; forward selection,\n"
-      "   then a joint re-fit. Candidates that explain the data equally are reported together.\n"
+      "3. Candidates (compressibility, fluid_inertia, magnetic_hysteresis, eddy_currents,\n"
+      "   mr_response_time, coil_inductance, coil_heating, friction) are fitted on top; one is\n"
+      "   accepted only if it lowers BIC by > 10 and the error on held-out time blocks by > 3 %;\n"
+      "   forward selection, then a joint re-fit. Candidates that explain the data equally are\n"
+      "   reported together.\n"
       "Exit 2 for bad input (recording format, missing sidecar keys, recording too short/flat).");
   cmd->add_option("recording", o->recording, "Recording CSV (fixed format; sidecar beside it)")
       ->required();

@@ -109,6 +109,8 @@ class RigSystem : public OdeSystem {
         i_current_ = add(1.0);
       }
       if (spec.driver_mode == DriverMode::current_pi) i_integral_ = add(0.01);
+    } else if (spec.magnetic_hysteresis) {
+      i_flux_ = add(0.1);  // Duhem between the imposed current and the field (paper 004 eq. 2)
     }
     if (spec.coil_heating) i_temperature_ = add(50.0);
     if (spec.eddy_time_constant && *spec.eddy_time_constant > 0) i_eddy_ = add(1.0);
@@ -171,8 +173,14 @@ class RigSystem : public OdeSystem {
     // Driver and coil.
     double voltage = 0.0;
     if (s_.driver_mode == DriverMode::current_source) {
-      sig.current = in_.at("current", t).first;
+      const auto [current, rate] = in_.at("current", t);
+      sig.current = current;
       voltage = sig.current * resistance;
+      if (i_flux_ >= 0) {  // Duhem: dlambda/dt = di/dt * dlambda/di along sign(di/dt)
+        dxdt[i_flux_] = rate * s_.magnetic_hysteresis->incremental_inductance(
+                                   current, x[i_flux_], rate > 0 ? 1.0 : -1.0);
+        sig.flux = x[i_flux_];
+      }
     } else {
       double current = 0.0;
       if (i_current_ >= 0)
@@ -284,6 +292,14 @@ Recording simulate_rig(const RigSpec& spec, const Recording& drive) {
   IntegratorOptions opt;
   opt.abs_tol = 1e-7;
   opt.rel_tol = 1e-6;
+  // A Duhem state driven by an imposed current moves only while the current ramps between two
+  // samples: steps no longer than half a sample interval so that no ramp is stepped over.
+  if (spec.magnetic_hysteresis && spec.driver_mode == DriverMode::current_source) {
+    double spacing = drive.t.back() - drive.t.front();
+    for (std::size_t k = 1; k < drive.t.size(); ++k)
+      spacing = std::min(spacing, drive.t[k] - drive.t[k - 1]);
+    opt.max_step = 0.5 * spacing;
+  }
   auto states = integrate_stiff(system, system.initial_state(), drive.t, opt);
 
   Recording rec;

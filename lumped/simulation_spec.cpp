@@ -201,8 +201,6 @@ RigSpec read_rig(const toml::table& doc, const std::string& file) {
     h.b2 = e.positive("b2", h.b2);
     h.d = e.positive("d", h.d);
     h.flux_per_ampere = e.number("flux_per_ampere", h.b1 * h.b2 + h.d, 0.0);
-    if (s.driver_mode == DriverMode::current_source)
-      e.fail("enabled", "needs a voltage or current_pi driver (a current source imposes i)");
     s.magnetic_hysteresis = h;
   }
   if (auto e = effect("eddy_currents"); effect_on(e)) {

@@ -229,6 +229,16 @@ ResidualStats residual_statistics(const lumped::Recording& rec,
       const double fast = opening(moving.size() - third, moving.size());
       loop.slow_fast_ratio = fast > 0 ? opening(0, third) / fast : 0.0;
       loop.rate_independent = loop.opening > 0.2 && loop.slow_fast_ratio > 0.5;
+      double memory = 0.0, direction = 0.0;
+      std::size_t remembered = 0;
+      for (std::size_t k = 0; k < n; ++k) {
+        if (du[k] != 0.0) direction = du[k] > 0 ? 1.0 : -1.0;
+        if (direction == 0.0) continue;
+        memory += r[k] * direction;
+        ++remembered;
+      }
+      if (remembered > 0)
+        loop.memory_opening = std::abs(memory / static_cast<double>(remembered)) / rr;
       st.loops.push_back(loop);
     }
   }

@@ -37,6 +37,9 @@ struct ResidualLoop {
   double opening = 0.0;          ///< |mean(r sign(du/dt))| / rms(r), 0 = no loop
   double slow_fast_ratio = 0.0;  ///< opening at the slowest third of |du/dt| / at the fastest
   bool rate_independent = false;
+  /// |mean(r s)| / rms(r) over all samples, s = sign of the last change of u (held while u
+  /// rests): a residual that remembers where u came from (hysteresis), 0 = no memory
+  double memory_opening = 0.0;
 };
 
 /// Residual statistics of one model against the measurement.

@@ -138,6 +138,16 @@ DiagnosisModel::DiagnosisModel(const lumped::Recording& rec) : rec_(rec) {
   output_rms_ = std::max(std::sqrt(var / static_cast<double>(measured_.size())), 1e-300);
 }
 
+lumped::DuhemBlock duhem_field(double a, double d) {
+  lumped::DuhemBlock h;
+  h.a = a;
+  h.d = d;
+  h.b2 = kDuhemFieldB2;
+  h.b1 = 1.0 / kDuhemFieldB2;  // f(i) = b1 tanh(b2 i) = i within 0.01 % up to 1 A
+  h.flux_per_ampere = 1.0;     // lambda is the field-equivalent current
+  return h;
+}
+
 std::vector<Effect> DiagnosisModel::applicable_effects() const {
   std::vector<Effect> out;
   if (base_.kind != RigKind::coil_bench) {
@@ -149,6 +159,10 @@ std::vector<Effect> DiagnosisModel::applicable_effects() const {
       out.push_back(Effect::fluid_inertia);
     out.push_back(Effect::mr_response_time);
     out.push_back(Effect::eddy_currents);
+    // Duhem between an imposed (or ideally tracked) current and the field; a voltage-driven coil
+    // would need the hysteresis inside the inductor instead (not a candidate).
+    if (base_.driver_mode == DriverMode::current_source && !constant_field_)
+      out.push_back(Effect::magnetic_hysteresis);
   }
   if (base_.driver_mode == DriverMode::voltage) {
     out.push_back(Effect::coil_inductance);
@@ -202,8 +216,15 @@ std::vector<ParamDef> DiagnosisModel::effect_params(Effect effect) const {
     case Effect::friction:
       return {
           {"coulomb_force", 0.05 * output_rms_, 1e-6 * output_rms_, 10.0 * output_rms_, true, 1.0}};
-    case Effect::magnetic_hysteresis:
-      break;
+    case Effect::magnetic_hysteresis: {
+      // Duhem in field-equivalent amperes: a [1/A] (a large a closes the loop), d [-] the
+      // reversible fraction of the slope; the loop's half width is (1 - d) / a.
+      const auto& i = rec_.column("current");
+      const auto [lo, hi] = std::minmax_element(i.begin(), i.end());
+      const double range = std::max(*hi - *lo, 1e-6);
+      return {{"a", 10.0 / range, 0.3 / range, 3e3 / range, true, 1.0},
+              {"d", 0.5, 0.0, 0.98, false, 1.0}};
+    }
   }
   throw InputError("diagnose: no candidate model for " + effect_name(effect));
 }
@@ -260,7 +281,9 @@ RigSpec DiagnosisModel::spec(const std::vector<Effect>& effects,
         s.coulomb_force = values.at(k++);
         break;
       case Effect::magnetic_hysteresis:
-        throw InputError("diagnose: no candidate model for magnetic_hysteresis");
+        s.magnetic_hysteresis = duhem_field(values.at(k), values.at(k + 1));
+        k += 2;
+        break;
     }
   }
   return s;

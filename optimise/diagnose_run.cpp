@@ -186,8 +186,21 @@ std::string evidence_for(Effect e, const Diagnosis& d, const ModelFit& fit) {
         << "); a Coulomb force of " << fmt(value("coulomb_force")) << " N explains it";
       break;
     }
-    case Effect::magnetic_hysteresis:
+    case Effect::magnetic_hysteresis: {
+      double memory = 0.0;
+      for (const auto& l : st.loops)
+        if (l.input == "current" || l.input == "current_cmd") memory = l.memory_opening;
+      const double a = value("a"), dd = value("d");
+      o << "the output at one current depends on where the current came from: the residual "
+           "signed by the direction of the last current change averages "
+        << fmt(memory, 2)
+        << " of its rms, a loop in (current, residual) that stays open while the current "
+           "rests (rate-independent, unlike a lag, which settles); a Duhem field with a = "
+        << fmt(a) << " 1/A, d = " << fmt(dd, 2)
+        << " (loop half width (1 - d)/a = " << fmt(a > 0 ? (1.0 - dd) / a : 0.0)
+        << " A) explains it";
       break;
+    }
   }
   if (!st.correlations.empty())
     o << "; strongest residual correlation: " << st.correlations.front().signal << " ("
@@ -208,6 +221,11 @@ std::string separating_measurement(Effect a, Effect b) {
       pair(Effect::coil_inductance, Effect::mr_response_time))
     return "record the coil current: inductance delays the current itself, field and fluid lags "
            "do not";
+  if (a == Effect::magnetic_hysteresis || b == Effect::magnetic_hysteresis)
+    return "hold each current level longer and approach it from above and from below: a lag "
+           "settles within a few time constants, magnetic hysteresis leaves a lasting offset "
+           "that depends on the approach (also at DC); a search coil on the core shows the "
+           "flux loop directly";
   return "excite the device at several frequencies and amplitudes: the two effects scale "
          "differently with rate and amplitude";
 }
