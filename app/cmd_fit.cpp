@@ -19,6 +19,7 @@
 #include "lumped/ident_plot.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording_io.hpp"
+#include "lumped/valve_chain_fit.hpp"
 #include "mesh/error.hpp"
 
 namespace {
@@ -145,6 +146,41 @@ FitReport fit_grey_box_model(const FitOptions& o, const Recording& rec, const Sa
   return report;
 }
 
+FitReport fit_valve_chain_model(const FitOptions& o, const Recording& rec, const SampleRange& train,
+                                const Validation& val) {
+  if (o.mode == EvalMode::prediction)
+    throw rheomag::InputError(
+        "--mode prediction: grey-box model 'valve-chain' is a state-space model run in free "
+        "simulation only");
+  ValveChainFitOptions options;
+  options.train = train;
+  const ValveChainFit fit = fit_valve_chain(rec, options);
+  FitReport report;
+  report.model = fit.model;
+  report.standard_errors = nlohmann::json::object();
+  for (const auto& p : fit.params) {
+    if (p.fixed) continue;  // no compliance when the drive is the valve flow itself
+    report.params[p.name] = p.value;
+    report.standard_errors[p.name] =
+        p.standard_error ? nlohmann::json(*p.standard_error) : nlohmann::json(nullptr);
+  }
+  report.train = fit.train;
+  report.train_output.assign(fit.simulated.begin() + static_cast<std::ptrdiff_t>(train.begin),
+                             fit.simulated.begin() + static_cast<std::ptrdiff_t>(train.end));
+  const std::vector<double>& y = rec.column(rec.meta.output);
+  if (val.range) {
+    report.validation = metrics_on(y, fit.simulated, *val.range);
+    report.validation_output.assign(
+        fit.simulated.begin() + static_cast<std::ptrdiff_t>(val.range->begin),
+        fit.simulated.begin() + static_cast<std::ptrdiff_t>(val.range->end));
+  } else if (val.other) {
+    report.validation_output = simulate_valve_chain(*val.other, fit);
+    const std::vector<double>& yv = val.other->column(val.other->meta.output);
+    report.validation = metrics_on(yv, report.validation_output, SampleRange{0, yv.size()});
+  }
+  return report;
+}
+
 nlohmann::json metrics_json(const Metrics& m) {
   return {{"fit_percent", m.fit_percent}, {"rmse_percent", m.rmse_percent}, {"re", m.re}};
 }
@@ -209,11 +245,8 @@ void write_plot(const FitReport& r, const FitOptions& o, const Recording& rec,
 
 void run_fit(const FitOptions& o) {
   const bool black_box = is_black_box_model(o.model);
-  if (!black_box && !is_greybox_model(o.model)) {
-    if (o.model == "valve-chain")
-      throw rheomag::InputError(
-          "--model valve-chain is not available yet (grey-box models available: bingham, lugre, "
-          "bouc-wen, maxwell, dahl)");
+  const bool valve_chain = o.model == "valve-chain";
+  if (!black_box && !valve_chain && !is_greybox_model(o.model)) {
     throw rheomag::InputError("--model '" + o.model +
                               "' is not a model rheomag knows; did you mean '" +
                               closest_model_name(o.model, known_model_names()) + "'?");
@@ -225,8 +258,9 @@ void run_fit(const FitOptions& o) {
   const SampleRange train =
       o.train.empty() ? SampleRange{0, n} : parse_sample_range(o.train, n, "--train");
   const Validation val = read_validation(o, rec, train);
-  const FitReport report =
-      black_box ? fit_black_box_model(o, rec, train, val) : fit_grey_box_model(o, rec, train, val);
+  const FitReport report = black_box     ? fit_black_box_model(o, rec, train, val)
+                           : valve_chain ? fit_valve_chain_model(o, rec, train, val)
+                                         : fit_grey_box_model(o, rec, train, val);
   if (!o.plot.empty()) write_plot(report, o, rec, train, val);
   if (!o.json) {
     print_text(report, o, train, val);
@@ -261,6 +295,8 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
       "  hw[:nb,nf,nk[,breakpoints]]         Hammerstein-Wiener, piecewise-linear in/out maps\n"
       "  svr[:na,nb,nk]                      libsvm epsilon-SVR NARX with (C, gamma, eps) search\n"
       "  bingham | lugre | bouc-wen | maxwell | dahl   grey-box physical models\n"
+      "  valve-chain                         the sidecar's [valve] case through the fluid chain,\n"
+      "                                      fitted yield/viscous scales, field lag, compliance\n"
       "tf and hw are output-error models: their prediction equals their simulation.");
   cmd->add_option("recording", o->recording, "Recording CSV (its .toml sidecar beside it)")
       ->required();

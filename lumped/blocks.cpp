@@ -56,10 +56,15 @@ double ValveMapBlock::yield(double current) const {
 }
 
 double ValveMapBlock::pressure_drop(double flow, double current) const {
+  if (chain)
+    return chain_pressure_drop(*chain, flow, current, yield_scale, viscous_scale,
+                               regularisation_flow);
   return yield(current) * smooth_sign(flow, regularisation_flow) + viscous_resistance * flow;
 }
 
 double ValveMapBlock::flow(double dp, double current) const {
+  if (chain)
+    return chain_flow(*chain, dp, current, yield_scale, viscous_scale, regularisation_flow);
   const double py = yield(current), width = viscous_resistance * regularisation_flow;
   return (smooth_ramp(dp - py, width) - smooth_ramp(-dp - py, width)) / viscous_resistance;
 }

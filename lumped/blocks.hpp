@@ -2,8 +2,11 @@
 // Lumped blocks of the valve/damper chain, each a small set of named SI parameters with the
 // algebraic law or state derivative it contributes to x' = f(x, u, t), y = g(x, u).
 
+#include <memory>
 #include <string>
 #include <vector>
+
+#include "lumped/valve_chain_map.hpp"
 
 namespace rheomag::lumped {
 
@@ -80,12 +83,17 @@ struct DriverBlock {
 
 /// Bingham valve static map: dp = scale p_y(|i|) sign(Q) + R Q, sign regularised by
 /// tanh(Q / regularisation_flow); p_y from a yield-pressure table (as the sidecar's [valve]).
+/// With `chain` set, the map is the fluid chain's table of an FE case instead (yield part times
+/// yield_scale, viscous part times viscous_scale; the yield table and R are then unused).
 struct ValveMapBlock {
-  std::vector<double> yield_current;   ///< [A]
-  std::vector<double> yield_pressure;  ///< [Pa]
-  double viscous_resistance = 1.5e10;  ///< [Pa s/m^3]
-  double yield_scale = 1.0;            ///< [-] calibration factor on the table
-  double regularisation_flow = 1e-8;   ///< [m^3/s] width of the smooth sign
+  std::vector<double> yield_current;           ///< [A]
+  std::vector<double> yield_pressure;          ///< [Pa]
+  double viscous_resistance = 1.5e10;          ///< [Pa s/m^3]
+  double yield_scale = 1.0;                    ///< [-] calibration factor on the table
+  double regularisation_flow = 1e-8;           ///< [m^3/s] width of the smooth sign
+  std::string case_file;                       ///< FE case of the valve (chain map), or empty
+  double viscous_scale = 1.0;                  ///< [-] chain map: factor on the viscous part
+  std::shared_ptr<const ChainMapTable> chain;  ///< chain map tabulated from case_file
   /// Yield pressure [Pa] at current i [A] (linear interpolation, clamped).
   double yield(double current) const;
   /// Pressure drop [Pa] at flow Q [m^3/s] and current i [A].

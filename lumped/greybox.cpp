@@ -14,6 +14,7 @@
 #include <random>
 
 #include "lumped/ode.hpp"
+#include "lumped/standard_errors.hpp"
 #include "mesh/error.hpp"
 
 namespace rheomag::lumped {
@@ -427,22 +428,7 @@ void run_fit(const DriveSeries& d, const GreyboxSetup& setup, const ParamGuess& 
   const int nf = static_cast<int>(free.size());
   Eigen::MatrixXd jf(m, nf);
   for (int c = 0; c < nf; ++c) jf.col(c) = jac.col(free[c]);
-  const double sigma2 = res.squaredNorm() / std::max(1, m - nf);
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(jf.transpose() * jf);
-  const Eigen::VectorXd lambda = eig.eigenvalues();
-  const double tol = 1e-12 * std::max(lambda.maxCoeff(), 1e-300);
-  Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(nf, nf);
-  std::vector<bool> identifiable(nf, true);
-  for (int e = 0; e < nf; ++e) {
-    const Eigen::VectorXd v = eig.eigenvectors().col(e);
-    if (lambda[e] > tol) {
-      cov += v * v.transpose() / lambda[e];
-    } else {
-      for (int c = 0; c < nf; ++c)
-        if (std::abs(v[c]) > 0.1) identifiable[c] = false;
-    }
-  }
-  cov *= sigma2;
+  const std::vector<std::optional<double>> se = jacobian_standard_errors(jf, res);
 
   const auto& specs = pheno_params(setup.kind);
   fit.params.clear();
@@ -457,7 +443,7 @@ void run_fit(const DriveSeries& d, const GreyboxSetup& setup, const ParamGuess& 
       fp.at_bound = std::abs(fp.value - guess.lower[k]) < 1e-6 * span ||
                     std::abs(fp.value - guess.upper[k]) < 1e-6 * span;
       const int c = static_cast<int>(std::find(free.begin(), free.end(), k) - free.begin());
-      if (identifiable[c]) fp.standard_error = std::sqrt(std::max(0.0, cov(c, c))) * guess.scale[k];
+      if (se[c]) fp.standard_error = *se[c] * guess.scale[k];
     }
     fit.params.push_back(fp);
   }

@@ -280,14 +280,39 @@ class RigSystem : public OdeSystem {
       i_mr_ = -1, i_p1_ = -1, i_p2_ = -1, i_flow_ = -1;
 };
 
+/// The spec with its valve's chain map tabulated (once, over the drive's current and flow range)
+/// when the valve is an FE case.
+RigSpec with_chain_map(const RigSpec& spec, const Recording& drive) {
+  RigSpec s = spec;
+  if (s.valve.case_file.empty() || s.valve.chain || s.kind == RigKind::coil_bench) return s;
+  double i_max = 0.0, q_max = 0.0;
+  auto largest = [](const std::vector<double>& v) {
+    double m = 0.0;
+    for (double x : v) m = std::max(m, std::abs(x));
+    return m;
+  };
+  if (s.driver_mode == DriverMode::current_source)
+    i_max = largest(drive.column("current"));
+  else if (s.driver_mode == DriverMode::current_pi)
+    i_max = largest(drive.column("current_cmd"));
+  else
+    i_max = s.driver.gain * largest(drive.column(s.voltage_column)) / s.coil.resistance_20c;
+  q_max = s.piston_area * largest(drive.column("velocity"));
+  if (!(q_max > 0.0)) q_max = 1e-6;
+  s.valve.chain = tabulate_valve_chain(s.valve.case_file, i_max > 0.0 ? 1.05 * i_max : 1.0, q_max);
+  return s;
+}
+
 }  // namespace
 
-Recording simulate_rig(const RigSpec& spec, const Recording& drive) {
+Recording simulate_rig(const RigSpec& spec_in, const Recording& drive) {
   if (drive.t.size() < 2) throw InputError("simulate: the drive needs at least 2 samples");
   DriveInputs in;
   in.t = &drive.t;
-  for (const auto& c : rig_drive_columns(spec)) in.columns[c] = &drive.column(c);
-  if (spec.inertance && *spec.inertance <= 0) throw InputError("simulate: inertance must be > 0");
+  for (const auto& c : rig_drive_columns(spec_in)) in.columns[c] = &drive.column(c);
+  if (spec_in.inertance && *spec_in.inertance <= 0)
+    throw InputError("simulate: inertance must be > 0");
+  const RigSpec spec = with_chain_map(spec_in, drive);
   RigSystem system(spec, in);
   IntegratorOptions opt;
   opt.abs_tol = 1e-7;
@@ -353,6 +378,7 @@ Recording simulate_rig(const RigSpec& spec, const Recording& drive) {
     rec.meta.rig.rod_area = spec.rod_area;
     rec.meta.rig.gas_force = spec.gas_force;
   }
+  if (spec.kind != RigKind::coil_bench) rec.meta.valve.case_file = spec.valve.case_file;
   if (spec.kind != RigKind::coil_bench && !spec.valve.yield_current.empty()) {
     rec.meta.valve.yield_current = spec.valve.yield_current;
     rec.meta.valve.yield_pressure = spec.valve.yield_pressure;

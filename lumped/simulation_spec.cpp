@@ -151,8 +151,24 @@ RigSpec read_rig(const toml::table& doc, const std::string& file) {
 
   TableReader valve(doc["valve"].as_table(), file, "valve");
   valve.only({"yield_current", "yield_pressure", "viscous_resistance", "yield_scale",
-              "regularisation_flow"});
-  if (s.kind != RigKind::coil_bench) {
+              "regularisation_flow", "case", "viscous_scale"});
+  if (s.kind != RigKind::coil_bench && valve.has("case")) {
+    // The valve's static map from the fluid chain of an FE case (path relative to this spec).
+    const std::filesystem::path case_path =
+        std::filesystem::path(file).parent_path() / valve.text("case", "");
+    if (!std::filesystem::exists(case_path))
+      valve.fail("case", "names no file: " + case_path.string());
+    if (valve.has("yield_current") || valve.has("yield_pressure") ||
+        valve.has("viscous_resistance"))
+      valve.fail("case",
+                 "replaces yield_current, yield_pressure and viscous_resistance: give "
+                 "either the case or the table");
+    s.valve.case_file = case_path.lexically_normal().string();
+    s.valve.yield_scale = valve.number("yield_scale", 1.0, 0.0);
+    s.valve.viscous_scale = valve.positive("viscous_scale", 1.0);
+    s.valve.regularisation_flow =
+        valve.positive("regularisation_flow", 1e-3 * s.piston_area * 1e-3);
+  } else if (s.kind != RigKind::coil_bench) {
     s.valve.yield_current = valve.numbers("yield_current");
     s.valve.yield_pressure = valve.numbers("yield_pressure");
     if (s.valve.yield_current.empty() ||

@@ -125,10 +125,10 @@ TEST_F(FitCli, TooFewSamplesForTheOrderIsRejected) {
   EXPECT_NE(r.err.find("too few samples"), std::string::npos) << r.err;
 }
 
-TEST_F(FitCli, ValveChainIsNotAvailableYet) {
+TEST_F(FitCli, ValveChainWithoutValveCaseIsRejected) {
   const CliRun r = run_cli(csv + " --model valve-chain");
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("not available yet"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("[valve] has no 'case'"), std::string::npos) << r.err;
 }
 
 TEST_F(FitCli, ValidationOnAnotherRecording) {

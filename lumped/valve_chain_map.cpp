@@ -1,0 +1,38 @@
+// Tabulation of a case's steady valve map with the fluid chain (one FE solve per current).
+
+#include "lumped/valve_chain_map.hpp"
+
+#include <cmath>
+
+#include "fluid/valve_chain.hpp"
+#include "magnetostatics/case_file.hpp"
+#include "mesh/error.hpp"
+
+namespace rheomag::lumped {
+
+std::shared_ptr<const ChainMapTable> tabulate_valve_chain(const std::string& case_file,
+                                                          double max_current, double max_flow,
+                                                          int current_points, int flow_points) {
+  if (!(max_current > 0.0) || !(max_flow > 0.0) || current_points < 2 || flow_points < 2)
+    throw InputError(case_file + ": the valve map needs a current range > 0 A and a flow > 0");
+  const auto c = magnetostatics::load_case(case_file);
+  fluid::ValveChain chain(c, fluid::read_valve_options(c));
+  auto table = std::make_shared<ChainMapTable>();
+  table->case_file = case_file;
+  for (int i = 0; i < current_points; ++i)
+    table->current.push_back(max_current * i / (current_points - 1));
+  // Log-spaced flows: the yield part varies with the Bingham number, i.e. with log Q.
+  const double q_lo = 1e-3 * max_flow, q_hi = 1.5 * max_flow;
+  for (int k = 0; k < flow_points; ++k)
+    table->flow.push_back(q_lo * std::pow(q_hi / q_lo, static_cast<double>(k) / (flow_points - 1)));
+  const auto points = chain.evaluate(table->current, table->flow);  // current-major
+  double resistance = 0.0;
+  for (const auto& p : points) {
+    table->yield.push_back(p.dp_yield);
+    resistance += p.dp_viscous / p.flow;  // Poiseuille: the same ratio at every point
+  }
+  table->viscous_resistance = resistance / static_cast<double>(points.size());
+  return table;
+}
+
+}  // namespace rheomag::lumped
