@@ -106,8 +106,11 @@ void run_valve(const ValveCli& o) {
                 p.dp_yield * 1e-5, p.dp_viscous * 1e-5, p.dp_total_average_b * 1e-5);
   std::printf("coil: %g turns, L = %.4g H at %g A", chain.turns(), peak->inductance, peak->current);
   if (have_wire)
-    std::printf(", R = %.4g Ohm (%s, %g C), L/R = %.4g s, P = %.4g W\n", coil.resistance,
-                options.wire.c_str(), options.temperature, coil.time_constant, coil.power);
+    std::printf(
+        ", R = %.4g Ohm (%s, %g C), L/R = %.4g s, P = %.4g W, J = %.4g A/mm^2, copper fill "
+        "%.3f\n",
+        coil.resistance, options.wire.c_str(), options.temperature, coil.time_constant, coil.power,
+        coil.current_density * 1e-6, coil.copper_fill);
   else
     std::printf("; R, L/R and power need the wire: [valve] wire = \"AWG 24\" or --wire\n");
 }

@@ -1,4 +1,4 @@
-// Coil electrical model. AWG diameters: ASTM B258 (d_n = 0.127 mm x 92^((36 - n)/39)).
+// Coil electrical model (wire gauges: magnetostatics/wire_gauge.cpp).
 // Copper: annealed, 100 % IACS = 1/58 Ohm mm^2/m = 1.7241e-8 Ohm m at 20 C, temperature
 // coefficient 0.00393 /K (IEC 60028). R = rho(T) N l_turn / (pi d^2/4); J = I / (pi d^2/4);
 // P = I^2 R; tau = L / R.
@@ -6,72 +6,12 @@
 #include "fluid/coil.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <numbers>
 
 #include "mesh/error.hpp"
 
 namespace rheomag::fluid {
-
-namespace {
-
-std::string lower_without_spaces(const std::string& text) {
-  std::string out;
-  for (char c : text)
-    if (!std::isspace(static_cast<unsigned char>(c)))
-      out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-
-/// Parses the whole of `text` as a number; false if anything is left over.
-bool parse_number(const std::string& text, double& value) {
-  if (text.empty()) return false;
-  std::size_t used = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    return false;
-  }
-  return used == text.size() && std::isfinite(value);
-}
-
-int gauge_number(const std::string& digits) {
-  if (digits == "0" || digits == "1/0") return 0;
-  if (digits == "00" || digits == "2/0") return -1;
-  if (digits == "000" || digits == "3/0") return -2;
-  if (digits == "0000" || digits == "4/0") return -3;
-  double n = 0.0;
-  if (!parse_number(digits, n) || n != std::floor(n)) return 1000;
-  return static_cast<int>(n);
-}
-
-}  // namespace
-
-double awg_diameter(int gauge) {
-  if (gauge < -3 || gauge > 56)
-    throw InputError("AWG " + std::to_string(gauge) + " is outside 0000 (-3) .. 56");
-  return 0.127e-3 * std::pow(92.0, (36.0 - gauge) / 39.0);
-}
-
-double wire_diameter(const std::string& spec) {
-  const std::string s = lower_without_spaces(spec);
-  const std::string accepted = "expected \"AWG 24\", \"24 AWG\" or a bare diameter like \"0.5 mm\"";
-  if (s.rfind("awg", 0) == 0 || (s.size() > 3 && s.substr(s.size() - 3) == "awg")) {
-    const std::string digits = s.rfind("awg", 0) == 0 ? s.substr(3) : s.substr(0, s.size() - 3);
-    const int gauge = gauge_number(digits);
-    if (gauge == 1000) throw InputError("wire \"" + spec + "\": bad gauge; " + accepted);
-    return awg_diameter(gauge);
-  }
-  if (s.size() > 2 && s.substr(s.size() - 2) == "mm") {
-    double mm = 0.0;
-    if (!parse_number(s.substr(0, s.size() - 2), mm) || !(mm > 0.0) || mm > 20.0)
-      throw InputError("wire \"" + spec + "\": diameter must be a number in (0, 20] mm; " +
-                       accepted);
-    return mm * 1e-3;
-  }
-  throw InputError("wire \"" + spec + "\": " + accepted);
-}
 
 double copper_resistivity(double temperature) {
   if (!(temperature > -273.15 && temperature < 400.0))

@@ -1,18 +1,16 @@
 #pragma once
-// Electrical side of a valve coil: wire gauge (AWG or metric), resistance at temperature,
-// copper fill, current density, power I^2 R and time constant L/R.
+// Electrical side of a valve coil: wire gauge (magnetostatics/wire_gauge.hpp), resistance at
+// temperature, copper fill, current density, power I^2 R and time constant L/R.
 
 #include <string>
 
+#include "magnetostatics/wire_gauge.hpp"
+
 namespace rheomag::fluid {
 
-/// Bare copper diameter [m] of American Wire Gauge `gauge` (ASTM B258: d = 0.127 mm x
-/// 92^((36 - n)/39); 0, 00, 000, 0000 are n = 0, -1, -2, -3), for n in [-3, 56].
-double awg_diameter(int gauge);
-
-/// Bare diameter [m] from a wire specification: "AWG 24", "awg24", "24 AWG", "0.5 mm", "0.5mm".
-/// Throws InputError naming the text and the accepted forms.
-double wire_diameter(const std::string& spec);
+/// The wire-gauge table lives in magnetostatics (the case needs it for turns before the solve).
+using magnetostatics::awg_diameter;
+using magnetostatics::wire_diameter;
 
 /// Resistivity of annealed copper [Ohm m] at `temperature` [deg C]: 1.7241e-8 (100 % IACS at
 /// 20 C) x (1 + 0.00393 (T - 20)).

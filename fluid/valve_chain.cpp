@@ -22,10 +22,17 @@ namespace rheomag::fluid {
 ValveOptions read_valve_options(const magnetostatics::Case& c) {
   ValveOptions options;
   const magnetostatics::TomlSection top(c.table, "", c.source.string());
+  // A template case winding its coil from [geometry] wire + fill_factor has its wire there.
+  if (auto geometry = top.table("geometry")) options.wire = geometry->string("wire").value_or("");
   auto valve = top.table("valve");
   if (!valve) return options;
   valve->allow_only({"wire", "temperature", "inlet_radius", "flow"});
-  options.wire = valve->string("wire").value_or("");
+  if (auto wire = valve->string("wire")) {
+    if (!options.wire.empty() && wire_diameter(*wire) != wire_diameter(options.wire))
+      valve->fail("wire", "\"" + *wire + "\" differs from [geometry] wire = \"" + options.wire +
+                              "\"; give the wire once");
+    options.wire = *wire;
+  }
   options.temperature = valve->number_or("temperature", 20.0);
   options.inlet_radius = valve->non_negative_or("inlet_radius", 0.0);
   if (auto flow = valve->number("flow")) {

@@ -10,6 +10,7 @@
 #include "magnetostatics/region_pslg.hpp"
 #include "magnetostatics/templates.hpp"
 #include "magnetostatics/toml_section.hpp"
+#include "magnetostatics/wire_gauge.hpp"
 #include "mesh/error.hpp"
 
 namespace rheomag::magnetostatics {
@@ -108,10 +109,50 @@ RegionOutline read_region(const TomlSection& section, double unit, double max_ar
   return region;
 }
 
+/// Meridian-plane area of a closed polygon (shoelace) [m^2].
+double polygon_area(const std::vector<mesh::Point>& outline) {
+  double twice = 0.0;
+  for (std::size_t i = 0; i < outline.size(); ++i) {
+    const mesh::Point& a = outline[i];
+    const mesh::Point& b = outline[(i + 1) % outline.size()];
+    twice += a.r * b.z - b.r * a.z;
+  }
+  return 0.5 * std::abs(twice);
+}
+
+/// [geometry] fill_factor + wire: every coil region of the template gets the turns that fit its
+/// window (winding_turns); turns and fill_factor together are an error (docs/case-format.md).
+void derive_coil_turns(const TomlSection& geometry, std::vector<RegionOutline>& outlines) {
+  if (geometry.has("wire")) {
+    try {
+      wire_diameter(geometry.required_string("wire"));
+    } catch (const InputError& e) {
+      geometry.fail("wire", e.what());
+    }
+  }
+  if (!geometry.has("fill_factor")) return;
+  if (geometry.has("turns"))
+    geometry.fail("fill_factor",
+                  "give either turns or fill_factor (turns derived from wire and fill), not both");
+  if (!geometry.has("wire"))
+    geometry.fail("fill_factor", "needs wire = \"AWG 24\" (or \"0.5 mm\") to derive the turns");
+  const double diameter = wire_diameter(geometry.required_string("wire"));
+  const double fill = geometry.positive("fill_factor");
+  for (RegionOutline& region : outlines) {
+    if (region.circuit.empty()) continue;
+    try {
+      region.turns = winding_turns(polygon_area(region.outline), diameter, fill);
+    } catch (const InputError& e) {
+      geometry.fail("fill_factor", e.what());
+    }
+  }
+}
+
 /// Reads the [geometry] table of a template case into outlines.
 std::vector<RegionOutline> read_template(const TomlSection& geometry, const ValveTemplate& valve,
                                          double unit) {
-  std::vector<std::string_view> known{"template", "max_arc_angle", "background_material"};
+  std::vector<std::string_view> known{"template", "max_arc_angle", "background_material", "wire",
+                                      "fill_factor"};
   for (const TemplateParameter& p : valve.parameters) known.push_back(p.key);
   geometry.allow_only(known);
   TemplateValues values = default_values(valve);
@@ -131,7 +172,9 @@ std::vector<RegionOutline> read_template(const TomlSection& geometry, const Valv
         break;
     }
   }
-  return valve.build(values);
+  std::vector<RegionOutline> outlines = valve.build(values);
+  derive_coil_turns(geometry, outlines);
+  return outlines;
 }
 
 }  // namespace
