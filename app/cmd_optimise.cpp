@@ -67,6 +67,34 @@ int run_optimise(const OptimiseCli& o) {
                           {"fe_solves", r.fe_solves},
                           {"meshes", r.meshes},
                           {"seconds", r.seconds}};
+    if (r.combinations.size() > 1 || !r.spec.choices.empty()) {
+      nlohmann::json combinations = nlohmann::json::array();
+      for (std::size_t k = 0; k < r.combinations.size(); ++k) {
+        const auto& m = r.combinations[k];
+        nlohmann::json choice = nlohmann::json::object();
+        for (const auto& [key, value] : m.choice) choice[key] = value;
+        combinations.push_back({{"choice", choice},
+                                {"chosen", k == r.chosen},
+                                {"status", m.status},
+                                {"fe_solves", m.fe_solves},
+                                {"optimal", design_json(m.optimal, r.spec)}});
+      }
+      out["combinations"] = combinations;
+    }
+    if (r.pareto) {
+      nlohmann::json points = nlohmann::json::array();
+      for (const auto& p : r.pareto->points)
+        points.push_back({{"epsilon", p.epsilon},
+                          {"fe_solves", p.fe_solves},
+                          {"design", design_json(p.design, r.spec)}});
+      nlohmann::json files = nlohmann::json::array();
+      for (const auto& f : r.pareto_files) files.push_back(f.string());
+      out["pareto"] = {{"quantity", r.pareto->pareto.quantity},
+                       {"sense", r.pareto->pareto.maximise ? "maximise" : "minimise"},
+                       {"points", points},
+                       {"second_alone", design_json(r.pareto->second_alone, r.spec)},
+                       {"files", files}};
+    }
     std::cout << out.dump(2) << "\n";
   } else {
     std::cout << optimise::format_summary(r);
@@ -81,10 +109,13 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
       "Design optimisation of a case's MR valve with the FE in the loop. The case's [optimise]\n"
       "table names the design variables (any numeric case key, e.g. geometry.neck_radius, with\n"
       "bounds in the file's units), the objective (dp_on, dp_off, dynamic_range, power,\n"
-      "time_constant, ...; maximise or minimise), constraints on those quantities (SI units),\n"
-      "the current and the flow. Ipopt (interior point, L-BFGS) with central-difference\n"
-      "gradients on a morphed mesh of fixed topology. Writes CASE_optimal.toml (solvable by\n"
-      "'rheomag solve'), CASE_history.csv and CASE_optimal.vtu; prints initial vs optimal.\n"
+      "time_constant, rise_time, ..., or a weighted sum; maximise or minimise), constraints on\n"
+      "those quantities (SI units), the current and the flow; optionally discrete choices\n"
+      "(enumerate: steel, fluid) and an epsilon-constraint Pareto front ([optimise.pareto]).\n"
+      "Ipopt (interior point, L-BFGS) with central-difference gradients on a morphed mesh of\n"
+      "fixed topology. Writes CASE_optimal.toml (solvable by 'rheomag solve'),\n"
+      "CASE_history.csv, CASE_optimal.vtu (and pareto.csv, pareto.png); prints initial vs\n"
+      "optimal.\n"
       "Exit 1 if no feasible design was found (the conflicting constraints are listed).\n"
       "See docs/optimisation.md.");
   cmd->add_option("case", o->case_file, "Case file (.toml) with an [optimise] table")

@@ -81,19 +81,42 @@ bool is_count_key(const toml::table& table, const std::string& key) {
   return false;
 }
 
+namespace {
+
+// The table holding the last part of dotted `key` (created if absent) and that last part.
+std::pair<toml::table*, std::string> parent_of(toml::table& root, const std::string& key) {
+  const auto parts = split_dotted(key);
+  toml::table* t = &root;
+  for (std::size_t p = 0; p + 1 < parts.size(); ++p) {
+    auto* sub = t->get_as<toml::table>(parts[p]);
+    if (!sub) sub = t->insert_or_assign(parts[p], toml::table{}).first->second.as_table();
+    t = sub;
+  }
+  return {t, parts.empty() ? std::string() : parts.back()};
+}
+
+}  // namespace
+
 toml::table with_values(const toml::table& table, const std::vector<std::string>& keys,
                         const std::vector<double>& values) {
   toml::table out = table;
   for (std::size_t i = 0; i < keys.size(); ++i) {
-    const auto parts = split_dotted(keys[i]);
-    toml::table* t = &out;
-    for (std::size_t p = 0; p + 1 < parts.size(); ++p) {
-      auto* sub = t->get_as<toml::table>(parts[p]);
-      if (!sub) sub = t->insert_or_assign(parts[p], toml::table{}).first->second.as_table();
-      t = sub;
-    }
-    t->insert_or_assign(parts.back(), values[i]);
+    auto [parent, last] = parent_of(out, keys[i]);
+    parent->insert_or_assign(last, values[i]);
   }
+  return out;
+}
+
+toml::table with_text(const toml::table& table, const std::string& key, const std::string& value) {
+  toml::table out = table;
+  if (key == "fluid") {
+    parent_of(out, "case.fluid").first->insert_or_assign("fluid", value);
+    if (out["geometry"]["template"])
+      parent_of(out, "geometry.x").first->insert_or_assign("fluid_material", value);
+    return out;
+  }
+  auto [parent, last] = parent_of(out, key);
+  parent->insert_or_assign(last, value);
   return out;
 }
 

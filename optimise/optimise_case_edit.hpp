@@ -20,6 +20,10 @@ double numeric_case_value(const toml::table& table, const std::string& key,
 toml::table with_values(const toml::table& table, const std::vector<std::string>& keys,
                         const std::vector<double>& values);
 
+/// A copy of `table` with the string at dotted `key` set to `value` ("fluid" sets [case] fluid
+/// and geometry.fluid_material together, so the gaps and the fluid model agree).
+toml::table with_text(const toml::table& table, const std::string& key, const std::string& value);
+
 /// Parses a case from an edited table (`source` names it in messages and resolves paths).
 magnetostatics::Case case_from_table(const toml::table& table, const std::string& source);
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include "fluid/coil.hpp"
@@ -23,6 +24,34 @@ namespace rheomag::optimise {
 namespace {
 
 constexpr int kSamples = 101;
+constexpr int kRiseSamples = 4;  // lambda(i) samples of the rise-time integral
+
+// The steel walls of each parametric template (thicknesses, file units): the ring outside the
+// gap and the pole flanges (annular), shell and plates (radial), shell, plates and lips
+// (meandering).
+const std::map<std::string, std::vector<std::string>>& template_walls() {
+  static const std::map<std::string, std::vector<std::string>> walls = {
+      {"annular_valve", {"disk_thickness", "pole_length"}},
+      {"radial_valve", {"shell_thickness", "plate_thickness"}},
+      {"meandering_valve", {"shell_thickness", "plate_thickness", "lip_thickness"}}};
+  return walls;
+}
+
+// 90 % rise time of the coil current after a voltage step V on R and the flux linkage
+// lambda(i): V = R i + dlambda/dt, so t = integral_0^{0.9 I_f} lambda'(i) / (V - R i) di with
+// I_f = V / R. lambda(i) is taken piecewise linear through (0, 0) and the samples (i_k,
+// lambda_k), on which the integral is exact: sum_k L_k / R ln((I_f - i_{k-1}) / (I_f - i_k)).
+double rise_time_90(const std::vector<double>& current, const std::vector<double>& flux,
+                    double resistance, double final_current) {
+  double t = 0.0, i_prev = 0.0, flux_prev = 0.0;
+  for (std::size_t k = 0; k < current.size(); ++k) {
+    const double slope = (flux[k] - flux_prev) / (current[k] - i_prev);
+    t += slope / resistance * std::log((final_current - i_prev) / (final_current - current[k]));
+    i_prev = current[k];
+    flux_prev = flux[k];
+  }
+  return t;
+}
 
 struct GapDrops {
   double on = 0.0, off = 0.0, b_average = 0.0, min_gap = INFINITY;
@@ -91,18 +120,22 @@ DesignEvaluator::DesignEvaluator(magnetostatics::Case base, OptimiseSpec spec)
   wire_ = valve.wire;
   temperature_ = valve.temperature;
   if (!wire_.empty()) wire_diameter_ = fluid::wire_diameter(wire_);
-  static const std::vector<std::string> needs_wire = {"resistance", "time_constant", "power",
-                                                      "current_density", "copper_fill"};
+  static const std::vector<std::string> needs_wire = {
+      "resistance",  "time_constant",    "power",    "current_density",
+      "copper_fill", "temperature_rise", "rise_time"};
+  const auto used = used_quantities(spec_);
   auto uses = [&](const std::string& q) {
-    if (spec_.objective == q) return true;
-    for (const auto& c : spec_.constraints)
-      if (c.quantity == q) return true;
-    return false;
+    return std::find(used.begin(), used.end(), q) != used.end();
   };
   for (const auto& q : needs_wire)
     if (wire_.empty() && uses(q))
       throw InputError(where + ": \"" + q +
                        "\" needs the coil wire: set [valve] wire = \"AWG 24\" (or \"0.5 mm\")");
+  need_rise_time_ = uses("rise_time");
+  if (uses("min_wall") && !template_walls().count(base_.geometry_template))
+    throw InputError(where +
+                     ": \"min_wall\" needs a parametric template (annular_valve, "
+                     "radial_valve, meandering_valve); this case has none");
 }
 
 magnetostatics::Case DesignEvaluator::case_at(const std::vector<double>& x) const {
@@ -158,6 +191,7 @@ Quantities DesignEvaluator::evaluate(const std::vector<double>& x) {
   const auto& regions = solver->problem().regions;
   const auto& materials = solver->problem().materials;
   double peak = 0.0, area = 0.0, moment = 0.0, turns = 0.0;
+  double coil_r_max = 0.0, coil_z_min = INFINITY, coil_z_max = -INFINITY;
   for (std::size_t e = 0; e < m.triangles.size(); ++e) {
     const auto& region = regions[m.region[e]];
     if (region.material >= 0 && !materials[region.material].bh.empty())
@@ -168,6 +202,11 @@ Quantities DesignEvaluator::evaluate(const std::vector<double>& x) {
     const double triangle = 0.5 * std::abs((b.r - a.r) * (d.z - a.z) - (d.r - a.r) * (b.z - a.z));
     area += triangle;
     moment += triangle * (a.r + b.r + d.r) / 3.0;
+    for (const auto& p : {a, b, d}) {
+      coil_r_max = std::max(coil_r_max, p.r);
+      coil_z_min = std::min(coil_z_min, p.z);
+      coil_z_max = std::max(coil_z_max, p.z);
+    }
   }
   for (const auto& region : regions)
     if (region.circuit == 0) turns += std::abs(region.turns);
@@ -181,6 +220,14 @@ Quantities DesignEvaluator::evaluate(const std::vector<double>& x) {
   }
   q["outer_radius"] = r_max;
   q["length"] = z_max - z_min;
+  if (auto walls = template_walls().find(c.geometry_template); walls != template_walls().end()) {
+    const double unit = c.table["case"]["units"].value_or(std::string("m")) == "mm" ? 1e-3 : 1.0;
+    double thinnest = INFINITY;
+    for (const auto& key : walls->second)
+      thinnest = std::min(thinnest,
+                          unit * numeric_case_value(c.table, "geometry." + key, c.source.string()));
+    q["min_wall"] = thinnest;
+  }
 
   if (wire_diameter_ > 0.0 && area > 0.0 && turns > 0.0) {
     fluid::CoilSpec coil;
@@ -195,6 +242,23 @@ Quantities DesignEvaluator::evaluate(const std::vector<double>& x) {
     q["power"] = p.power;
     q["current_density"] = p.current_density;
     q["copper_fill"] = p.copper_fill;
+    // Steady temperature rise: all of I^2 R leaves through the coil's outer cylindrical
+    // surface (radius = the winding's outer radius, its axial length) with the heat-transfer
+    // coefficient h, or through the given thermal resistance.
+    const double surface = 2.0 * std::numbers::pi * coil_r_max * (coil_z_max - coil_z_min);
+    q["temperature_rise"] = spec_.thermal_resistance > 0.0
+                                ? p.power * spec_.thermal_resistance
+                                : p.power / (spec_.heat_transfer * surface);
+    if (need_rise_time_) {
+      const double final_current = spec_.supply_voltage / p.resistance;
+      std::vector<double> sample_currents, flux;
+      for (int k = 1; k <= kRiseSamples; ++k)
+        sample_currents.push_back(0.9 * final_current * k / kRiseSamples);
+      for (const auto& point : solver->sweep(0, sample_currents))
+        flux.push_back(point.flux_linkage);
+      fe_solves_ += kRiseSamples;
+      q["rise_time"] = rise_time_90(sample_currents, flux, p.resistance, final_current);
+    }
   }
   last_.solver = std::move(solver);
   last_.solution = std::move(solution);

@@ -19,9 +19,6 @@
 
 namespace rheomag::optimise {
 
-/// Quantity name (see quantity_units()) -> value in SI units.
-using Quantities = std::map<std::string, double>;
-
 /// The FE solution of the last evaluated design (for the .vtu of the optimum).
 struct EvaluatedField {
   std::unique_ptr<magnetostatics::MagnetostaticSolver> solver;
@@ -61,6 +58,7 @@ class DesignEvaluator {
   std::string wire_;
   double wire_diameter_ = 0.0;
   double temperature_ = 20.0;
+  bool need_rise_time_ = false;  ///< rise_time is used: lambda(i) samples per design
   mesh::Mesh reference_mesh_;
   Breakpoints reference_breakpoints_;
   bool have_mesh_ = false;

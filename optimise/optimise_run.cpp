@@ -1,181 +1,20 @@
 #include "optimise/optimise_run.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <map>
-#include <optional>
+#include <memory>
 #include <sstream>
 
 #include "magnetostatics/report.hpp"
 #include "mesh/error.hpp"
 #include "optimise/optimise_case_edit.hpp"
-#include "optimise/optimise_ipopt.hpp"
+#include "optimise/optimise_continuous.hpp"
 #include "optimise/sweep_results_file.hpp"
 
 namespace rheomag::optimise {
 
 namespace {
-
-constexpr double kNoBound = 1e19;  // Ipopt's "infinity"
-constexpr int kRestarts = 2;       // Ipopt restarts after a failed fresh-mesh check
-
-std::string number_text(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.6g", v);
-  return buffer;
-}
-
-// Scale of a constraint: its largest finite bound in magnitude (1 if both are 0).
-double constraint_scale(const Constraint& c) {
-  double scale = 0.0;
-  if (std::isfinite(c.lower)) scale = std::max(scale, std::abs(c.lower));
-  if (std::isfinite(c.upper)) scale = std::max(scale, std::abs(c.upper));
-  return scale > 0.0 ? scale : 1.0;
-}
-
-// Value of a quantity; InputError if the design does not provide it.
-double quantity(const Quantities& q, const std::string& name) {
-  auto it = q.find(name);
-  if (it == q.end() || !std::isfinite(it->second))
-    throw InputError("optimise: quantity \"" + name + "\" is not available for this case");
-  return it->second;
-}
-
-// One evaluated design, for the history.
-struct HistoryRow {
-  std::string purpose;
-  std::vector<double> x;
-  Quantities q;
-  bool ok = true;
-  std::string error;
-};
-
-// The scaled program around a DesignEvaluator: u in [0, 1]^n, f = -+objective / |initial|,
-// g_j = quantity_j / scale_j. Every evaluation is cached by u and recorded.
-class ScaledProgram {
- public:
-  ScaledProgram(DesignEvaluator& evaluator, double objective_scale)
-      : e_(evaluator), spec_(evaluator.spec()), objective_scale_(objective_scale) {}
-
-  std::vector<double> to_design(const std::vector<double>& u) const {
-    std::vector<double> x(u.size());
-    for (std::size_t i = 0; i < u.size(); ++i) {
-      const auto& v = spec_.variables[i];
-      x[i] = v.lower + u[i] * (v.upper - v.lower);
-    }
-    return x;
-  }
-  std::vector<double> to_scaled(const std::vector<double>& x) const {
-    std::vector<double> u(x.size());
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      const auto& v = spec_.variables[i];
-      u[i] = (x[i] - v.lower) / (v.upper - v.lower);
-    }
-    return u;
-  }
-  // Quantities at u, or nullptr if the design cannot be evaluated.
-  const Quantities* at(const std::vector<double>& u, const std::string& purpose) {
-    auto it = cache_.find(u);
-    if (it != cache_.end()) return it->second.ok ? &it->second.q : nullptr;
-    HistoryRow row;
-    row.purpose = purpose;
-    row.x = to_design(u);
-    try {
-      row.q = e_.evaluate(row.x);
-      quantity(row.q, spec_.objective);
-      for (const auto& c : spec_.constraints) quantity(row.q, c.quantity);
-    } catch (const std::exception& error) {
-      row.ok = false;
-      row.error = error.what();
-    }
-    history_.push_back(row);
-    auto inserted = cache_.emplace(u, std::move(row)).first;
-    return inserted->second.ok ? &inserted->second.q : nullptr;
-  }
-  double f(const Quantities& q) const {
-    const double v = quantity(q, spec_.objective) / objective_scale_;
-    return spec_.maximise ? -v : v;
-  }
-  void g(const Quantities& q, std::vector<double>& out) const {
-    out.resize(spec_.constraints.size());
-    for (std::size_t j = 0; j < spec_.constraints.size(); ++j)
-      out[j] = quantity(q, spec_.constraints[j].quantity) / constraint_scale(spec_.constraints[j]);
-  }
-  bool values(const std::vector<double>& u, double& f_value, std::vector<double>& g_value) {
-    const Quantities* q = at(u, "iterate");
-    if (!q) return false;
-    f_value = f(*q);
-    g(*q, g_value);
-    return true;
-  }
-  // Central differences in u (one-sided at the bounds of [0, 1]).
-  bool derivatives(const std::vector<double>& u, std::vector<double>& grad,
-                   std::vector<double>& jacobian) {
-    const std::size_t n = u.size(), m = spec_.constraints.size();
-    const double h = spec_.step;
-    for (std::size_t i = 0; i < n; ++i) {
-      std::vector<double> plus = u, minus = u;
-      plus[i] = u[i] + h;
-      minus[i] = u[i] - h;
-      if (plus[i] > 1.0) plus = u;
-      if (minus[i] < 0.0) minus = u;
-      const double width = plus[i] - minus[i];
-      const Quantities* qp = at(plus, "gradient");
-      if (!qp) return false;
-      const Quantities q_plus = *qp;
-      const Quantities* qm = at(minus, "gradient");
-      if (!qm) return false;
-      grad[i] = (f(q_plus) - f(*qm)) / width;
-      std::vector<double> g_plus, g_minus;
-      g(q_plus, g_plus);
-      g(*qm, g_minus);
-      for (std::size_t j = 0; j < m; ++j) jacobian[j * n + i] = (g_plus[j] - g_minus[j]) / width;
-    }
-    return true;
-  }
-  const std::vector<HistoryRow>& history() const { return history_; }
-  /// Records an evaluation done outside the program (the start) so Ipopt does not repeat it.
-  void seed(const std::vector<double>& u, const Quantities& q, const std::string& purpose) {
-    HistoryRow row;
-    row.purpose = purpose;
-    row.x = to_design(u);
-    row.q = q;
-    history_.push_back(row);
-    cache_.emplace(u, std::move(row));
-  }
-  /// Drops the cached evaluations (after the reference mesh changed).
-  void forget() { cache_.clear(); }
-
- private:
-  DesignEvaluator& e_;
-  const OptimiseSpec& spec_;
-  double objective_scale_;
-  std::map<std::vector<double>, HistoryRow> cache_;
-  std::vector<HistoryRow> history_;
-};
-
-std::string history_csv(const OptimiseSpec& spec, const std::vector<HistoryRow>& rows) {
-  std::ostringstream out;
-  out << "evaluation,purpose";
-  for (const auto& v : spec.variables) out << "," << v.key;
-  for (const auto& [name, unit] : quantity_units()) out << "," << name << " [" << unit << "]";
-  out << ",error\n";
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    out << k + 1 << "," << rows[k].purpose;
-    for (double x : rows[k].x) out << "," << number_text(x);
-    for (const auto& [name, unit] : quantity_units()) {
-      auto it = rows[k].q.find(name);
-      out << "," << (it == rows[k].q.end() ? std::string() : number_text(it->second));
-    }
-    std::string error = rows[k].error;
-    for (char& ch : error)
-      if (ch == ',' || ch == '\n' || ch == '"') ch = ' ';
-    out << "," << error << "\n";
-  }
-  return out.str();
-}
 
 std::string bound_text(const Constraint& c) {
   std::string text;
@@ -185,127 +24,116 @@ std::string bound_text(const Constraint& c) {
   return text;
 }
 
-}  // namespace
-
-DesignReport report_design(const OptimiseSpec& spec, const std::vector<double>& x,
-                           const Quantities& quantities) {
-  DesignReport report;
-  report.x = x;
-  report.quantities = quantities;
-  report.objective = quantity(quantities, spec.objective);
-  for (const auto& c : spec.constraints) {
-    ConstraintStatus status;
-    status.constraint = c;
-    status.value = quantity(quantities, c.quantity);
-    const double tolerance = kFeasibilityTolerance * constraint_scale(c);
-    status.satisfied = status.value >= c.lower - tolerance && status.value <= c.upper + tolerance;
-    const double near = 1e-2 * constraint_scale(c);
-    status.active =
-        std::abs(status.value - c.lower) <= near || std::abs(status.value - c.upper) <= near;
-    report.feasible = report.feasible && status.satisfied;
-    report.constraints.push_back(status);
+// Every combination of the discrete choices (one empty combination without choices).
+std::vector<std::vector<std::pair<std::string, std::string>>> combinations(
+    const std::vector<DiscreteChoice>& choices) {
+  std::vector<std::vector<std::pair<std::string, std::string>>> out(1);
+  for (const auto& choice : choices) {
+    std::vector<std::vector<std::pair<std::string, std::string>>> next;
+    for (const auto& partial : out)
+      for (const auto& value : choice.values) {
+        auto extended = partial;
+        extended.emplace_back(choice.key, value);
+        next.push_back(std::move(extended));
+      }
+    out = std::move(next);
   }
-  for (std::size_t i = 0; i < spec.variables.size(); ++i) {
-    const auto& v = spec.variables[i];
-    const double near = 1e-3 * (v.upper - v.lower);
-    if (x[i] <= v.lower + near || x[i] >= v.upper - near)
-      report.variables_at_bounds.push_back(v.key);
-  }
-  return report;
+  return out;
 }
 
+std::string choice_text(const std::vector<std::pair<std::string, std::string>>& choice) {
+  std::string text;
+  for (const auto& [key, value] : choice) text += (text.empty() ? "" : ", ") + key + " = " + value;
+  return text;
+}
+
+}  // namespace
+
 OptimiseResult run_optimisation(const magnetostatics::Case& c, const OptimiseOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start_time = std::chrono::steady_clock::now();
   OptimiseResult result;
   result.spec = read_optimise_spec(c);
-  const OptimiseSpec& spec = result.spec;
-  DesignEvaluator evaluator(c, spec);
+  OptimiseSpec& spec = result.spec;
+  std::vector<HistoryRow> history;
   std::vector<double> x0;
   for (const auto& v : spec.variables) x0.push_back(v.initial);
+
+  // The case as written: the initial design, and the normalisers of a weighted sum.
+  auto evaluator = std::make_unique<DesignEvaluator>(c, spec);
   Quantities q0;
   try {
-    q0 = evaluator.evaluate(x0);
+    q0 = evaluator->evaluate(x0);
   } catch (const ConvergenceError& e) {
     throw ConvergenceError(c.source.string() +
                            ": the initial design did not converge: " + e.what());
   }
+  if (spec.terms.size() > 1)
+    for (auto& term : spec.terms) {
+      const double v = std::abs(quantity_value(q0, term.quantity));
+      term.scale = v > 0.0 ? v : 1.0;
+    }
   result.initial = report_design(spec, x0, q0);
   const double objective_scale =
       std::abs(result.initial.objective) > 0.0 ? std::abs(result.initial.objective) : 1.0;
-
-  ScaledProgram program(evaluator, objective_scale);
-  NlpProblem nlp;
-  nlp.lower.assign(spec.variables.size(), 0.0);
-  nlp.upper.assign(spec.variables.size(), 1.0);
-  nlp.start = program.to_scaled(x0);
-  program.seed(nlp.start, q0, "initial");
-  for (const auto& k : spec.constraints) {
-    const double scale = constraint_scale(k);
-    nlp.g_lower.push_back(std::isfinite(k.lower) ? k.lower / scale : -kNoBound);
-    nlp.g_upper.push_back(std::isfinite(k.upper) ? k.upper / scale : kNoBound);
-  }
-  nlp.values = [&](const std::vector<double>& u, double& f, std::vector<double>& g) {
-    return program.values(u, f, g);
-  };
-  nlp.derivatives = [&](const std::vector<double>& u, std::vector<double>& grad,
-                        std::vector<double>& jacobian) {
-    return program.derivatives(u, grad, jacobian);
-  };
   IpoptSettings settings;
   settings.max_iterations = spec.max_iterations;
   settings.tolerance = spec.tolerance;
   settings.print_level = options.print_level;
 
-  // Ipopt on the morphed mesh; the optimum is then checked on a fresh mesh of its own geometry
-  // (what `rheomag solve` of the written case uses). If that check violates a constraint (the
-  // morphed and the fresh mesh differ by the discretisation error), Ipopt restarts from the
-  // optimum with the fresh mesh as the new morph reference.
-  std::vector<double> x_opt;
-  Quantities q_opt;
-  for (int pass = 0; pass <= kRestarts; ++pass) {
-    const NlpResult solved = solve_nlp(nlp, settings);
-    result.status = solved.status;
-    result.converged = solved.converged;
-    result.iterations += solved.iterations;
-    x_opt = program.to_design(solved.x);
-    for (std::size_t i = 0; i < x_opt.size(); ++i)
-      x_opt[i] = std::clamp(x_opt[i], spec.variables[i].lower, spec.variables[i].upper);
-    evaluator.remesh_next();
-    program.forget();
-    q_opt = evaluator.evaluate(x_opt);
-    result.optimal = report_design(spec, x_opt, q_opt);
-    if (result.optimal.feasible || solved.infeasible) break;
-    nlp.start = program.to_scaled(x_opt);
-  }
-  // Counts (turns) to whole numbers: nearest, all down, all up; the best feasible candidate
-  // (checked on a fresh mesh) wins, else the nearest.
-  std::vector<std::size_t> counts;
-  for (std::size_t i = 0; i < x_opt.size(); ++i)
-    if (is_count_key(c.table, spec.variables[i].key)) counts.push_back(i);
-  if (!counts.empty()) {
-    std::optional<DesignReport> chosen;
-    for (int mode = 0; mode < 3; ++mode) {
-      std::vector<double> x = x_opt;
-      for (std::size_t i : counts) {
-        const double v = mode == 0   ? std::round(x[i])
-                         : mode == 1 ? std::floor(x[i])
-                                     : std::ceil(x[i]);
-        x[i] =
-            std::clamp(v, std::ceil(spec.variables[i].lower), std::floor(spec.variables[i].upper));
-      }
-      evaluator.remesh_next();
-      DesignReport candidate = report_design(spec, x, evaluator.evaluate(x));
-      const bool better = !chosen || (candidate.feasible && !chosen->feasible) ||
-                          (candidate.feasible == chosen->feasible &&
-                           (spec.maximise ? candidate.objective > chosen->objective
-                                          : candidate.objective < chosen->objective));
-      if (better) chosen = std::move(candidate);
+  // Each combination of the discrete choices: the continuous optimum (warm-started from the
+  // previous combination's), its counts rounded. The best combination is kept.
+  int solves_done = 0, meshes_done = 0;
+  std::unique_ptr<DesignEvaluator> best_evaluator;
+  magnetostatics::Case best_case = c;
+  DesignReport best_continuous;
+  std::vector<double> start = x0;
+  for (const auto& choice : combinations(spec.choices)) {
+    std::unique_ptr<DesignEvaluator> e;
+    magnetostatics::Case cc = c;
+    const Quantities* start_q = nullptr;
+    if (choice.empty()) {
+      e = std::move(evaluator);
+      start_q = &q0;
+    } else {
+      toml::table table = c.table;
+      for (const auto& [key, value] : choice) table = with_text(table, key, value);
+      cc = case_from_table(table, c.source.string());
+      e = std::make_unique<DesignEvaluator>(cc, spec);
     }
-    x_opt = chosen->x;
-    result.optimal = *chosen;
-    evaluator.remesh_next();
-    evaluator.evaluate(x_opt);  // the chosen design's field for the .vtu
+    const int before = e->fe_solves();
+    const ContinuousOptimum continuous =
+        optimise_continuous(*e, spec, start, start_q, objective_scale, settings, history);
+    CombinationResult combination;
+    combination.choice = choice;
+    combination.optimal = round_counts(*e, cc, spec, continuous.report, history);
+    combination.status = continuous.status;
+    combination.converged = continuous.converged;
+    combination.iterations = continuous.iterations;
+    combination.fe_solves = e->fe_solves() - before;
+    start = continuous.report.x;
+    const bool best = result.combinations.empty() ||
+                      better_design(combination.optimal, result.combinations[result.chosen].optimal,
+                                    spec.maximise);
+    result.combinations.push_back(combination);
+    if (best) {
+      result.chosen = result.combinations.size() - 1;
+      if (best_evaluator) {
+        solves_done += best_evaluator->fe_solves();
+        meshes_done += best_evaluator->meshes();
+      }
+      best_evaluator = std::move(e);
+      best_case = cc;
+      best_continuous = continuous.report;
+    } else {
+      solves_done += e->fe_solves();
+      meshes_done += e->meshes();
+    }
   }
+  const CombinationResult& chosen = result.combinations[result.chosen];
+  result.optimal = chosen.optimal;
+  result.status = chosen.status;
+  result.converged = chosen.converged;
+  for (const auto& k : result.combinations) result.iterations += k.iterations;
   if (!result.optimal.feasible) {
     for (const auto& s : result.optimal.constraints)
       if (!s.satisfied || s.active)
@@ -325,15 +153,29 @@ OptimiseResult run_optimisation(const magnetostatics::Case& c, const OptimiseOpt
   result.vtu_file = options.out_dir / (stem + "_optimal.vtu");
   std::string header = "# Optimal design of " + c.source.filename().string() +
                        " by rheomag optimise (" + result.status + ")\n";
-  write_file_atomically(result.case_file,
-                        header + toml_text(with_values(c.table, keys, x_opt)) + "\n");
-  write_file_atomically(result.history_file, history_csv(spec, program.history()));
-  const auto& field = evaluator.last_field();
+  if (!chosen.choice.empty()) header += "# Chosen: " + choice_text(chosen.choice) + "\n";
+  write_file_atomically(
+      result.case_file,
+      header + toml_text(with_values(best_case.table, keys, result.optimal.x)) + "\n");
+  const auto& field = best_evaluator->last_field();
   magnetostatics::write_results_vtu(result.vtu_file.string(), *field.solver, field.solution,
                                     field.results);
-  result.fe_solves = evaluator.fe_solves();
-  result.meshes = evaluator.meshes();
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  // The epsilon-constraint front of the chosen combination, each level a continuous optimum.
+  if (spec.pareto) {
+    DesignEvaluator& e = *best_evaluator;
+    const OptimiseFrom optimise = [&](const OptimiseSpec& level, const std::vector<double>& from,
+                                      double scale) {
+      return optimise_continuous(e, level, from, nullptr, scale, settings, history).report;
+    };
+    result.pareto = pareto_front(spec, best_continuous, optimise, [&e] { return e.fe_solves(); });
+    result.pareto_files = write_pareto(options.out_dir, spec, *result.pareto);
+  }
+  write_file_atomically(result.history_file, history_csv(spec, history));
+  result.fe_solves = solves_done + best_evaluator->fe_solves();
+  result.meshes = meshes_done + best_evaluator->meshes();
+  result.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
   return result;
 }
 
@@ -341,7 +183,18 @@ std::string format_summary(const OptimiseResult& r) {
   std::ostringstream out;
   out << "Ipopt: " << r.status << " after " << r.iterations << " iterations, " << r.fe_solves
       << " FE solves, " << r.meshes << " mesh(es), " << number_text(r.seconds) << " s\n\n";
-  char line[200];
+  char line[240];
+  if (r.combinations.size() > 1) {
+    out << "discrete choices (each the continuous optimum, counts rounded):\n";
+    for (std::size_t k = 0; k < r.combinations.size(); ++k) {
+      const auto& m = r.combinations[k];
+      std::snprintf(line, sizeof line, "  %-58s %-10s %14.6g %6d solves%s\n",
+                    choice_text(m.choice).c_str(), m.optimal.feasible ? "feasible" : "INFEASIBLE",
+                    m.optimal.objective, m.fe_solves, k == r.chosen ? "  <- best" : "");
+      out << line;
+    }
+    out << "\n";
+  }
   std::snprintf(line, sizeof line, "%-28s %14s %14s\n", "design variable", "initial", "optimal");
   out << line;
   for (std::size_t i = 0; i < r.spec.variables.size(); ++i) {
@@ -372,8 +225,24 @@ std::string format_summary(const OptimiseResult& r) {
            "least-violating design:\n";
     for (const auto& c : r.conflicts) out << "  " << c << "\n";
   }
+  if (r.pareto) {
+    const auto& q = r.pareto->pareto.quantity;
+    out << "\nPareto front (" << r.spec.objective << " with " << q << " limited):\n";
+    std::snprintf(line, sizeof line, "  %14s %14s %14s %9s %7s\n", ("eps " + q).c_str(),
+                  r.spec.objective.c_str(), q.c_str(), "feasible", "solves");
+    out << line;
+    for (const auto& p : r.pareto->points) {
+      auto it = p.design.quantities.find(q);
+      std::snprintf(line, sizeof line, "  %14.6g %14.6g %14.6g %9s %7d\n", p.epsilon,
+                    p.design.objective, it == p.design.quantities.end() ? NAN : it->second,
+                    p.design.feasible ? "yes" : "no", p.fe_solves);
+      out << line;
+    }
+  }
   out << "\nwritten: " << r.case_file.string() << ", " << r.history_file.string() << ", "
-      << r.vtu_file.string() << "\n";
+      << r.vtu_file.string();
+  for (const auto& f : r.pareto_files) out << ", " << f.string();
+  out << "\n";
   return out.str();
 }
 

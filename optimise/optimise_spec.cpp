@@ -1,7 +1,9 @@
 #include "optimise/optimise_spec.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+#include "magnetostatics/material_library.hpp"
 #include "magnetostatics/toml_section.hpp"
 #include "mesh/error.hpp"
 #include "optimise/optimise_case_edit.hpp"
@@ -16,25 +18,146 @@ const std::vector<std::pair<std::string, std::string>>& quantity_units() {
       {"resistance", "Ohm"},  {"time_constant", "s"},
       {"power", "W"},         {"current_density", "A/m^2"},
       {"copper_fill", "-"},   {"outer_radius", "m"},
-      {"length", "m"},        {"min_gap", "m"}};
+      {"length", "m"},        {"min_gap", "m"},
+      {"min_wall", "m"},      {"temperature_rise", "K"},
+      {"rise_time", "s"}};
   return units;
+}
+
+void check_quantity_name(const std::string& name, const std::string& where) {
+  std::vector<std::string_view> known;
+  std::string list;
+  for (const auto& [q, unit] : quantity_units()) {
+    if (q == name) return;
+    known.push_back(q);
+    list += (list.empty() ? "" : ", ") + q;
+  }
+  const std::string close = magnetostatics::closest_key(name, known);
+  throw InputError(where + ": unknown quantity \"" + name + "\"" +
+                   (close.empty() ? "" : " (did you mean \"" + close + "\"?)") +
+                   "; known: " + list);
+}
+
+double objective_value(const OptimiseSpec& spec, const Quantities& q) {
+  double sum = 0.0;
+  for (const auto& term : spec.terms) {
+    auto it = q.find(term.quantity);
+    if (it == q.end() || !std::isfinite(it->second))
+      throw InputError("optimise: quantity \"" + term.quantity +
+                       "\" is not available for this case");
+    sum += term.weight * it->second / term.scale;
+  }
+  return sum;
+}
+
+std::vector<std::string> used_quantities(const OptimiseSpec& spec) {
+  std::vector<std::string> out;
+  auto add = [&](const std::string& q) {
+    if (std::find(out.begin(), out.end(), q) == out.end()) out.push_back(q);
+  };
+  for (const auto& t : spec.terms) add(t.quantity);
+  for (const auto& c : spec.constraints) add(c.quantity);
+  if (spec.pareto) add(spec.pareto->quantity);
+  return out;
 }
 
 namespace {
 
 void check_quantity(const magnetostatics::TomlSection& section, std::string_view key,
                     const std::string& name) {
-  std::vector<std::string_view> known;
-  for (const auto& [q, unit] : quantity_units()) {
-    if (q == name) return;
-    known.push_back(q);
+  check_quantity_name(name, section.where(key));
+}
+
+bool read_sense(const magnetostatics::TomlSection& section) {
+  const std::string sense = section.string("sense").value_or("maximise");
+  if (sense == "maximise" || sense == "maximize") return true;
+  if (sense == "minimise" || sense == "minimize") return false;
+  section.fail("sense", "expected \"maximise\" or \"minimise\", got \"" + sense + "\"");
+  return true;
+}
+
+// objective = "dp_on" or objective = { dp_on = 1.0, power = -0.5 } (weighted sum).
+void read_objective(const magnetostatics::TomlSection& section, OptimiseSpec& spec) {
+  const toml::node* node = section.node("objective");
+  if (node && node->is_table()) {
+    for (const auto& [name, weight] : *node->as_table()) {
+      ObjectiveTerm term;
+      term.quantity = std::string(name.str());
+      check_quantity(section, "objective", term.quantity);
+      const auto w = weight.value<double>();
+      if (!w || !std::isfinite(*w) || *w == 0.0)
+        section.fail("objective", "weight of \"" + term.quantity + "\" must be a non-zero number");
+      term.weight = *w;
+      term.scale = 0.0;  // set to |value at the start| by the run
+      spec.terms.push_back(term);
+    }
+    if (spec.terms.empty()) section.fail("objective", "empty weighted sum");
+    spec.objective = spec.terms.size() == 1 ? spec.terms[0].quantity : "weighted_sum";
+    if (spec.terms.size() == 1) spec.terms[0].scale = 1.0, spec.terms[0].weight = 1.0;
+    return;
   }
-  const std::string close = magnetostatics::closest_key(name, known);
-  section.fail(key, "unknown quantity \"" + name + "\"" +
-                        (close.empty() ? "" : " (did you mean \"" + close + "\"?)") +
-                        "; known: dp_on, dp_off, dynamic_range, b_gap, peak_steel_b, inductance, "
-                        "resistance, time_constant, power, current_density, copper_fill, "
-                        "outer_radius, length, min_gap");
+  spec.objective = section.string("objective").value_or("dp_on");
+  check_quantity(section, "objective", spec.objective);
+  spec.terms = {ObjectiveTerm{spec.objective, 1.0, 1.0}};
+}
+
+void read_pareto(const magnetostatics::TomlSection& optimise, OptimiseSpec& spec) {
+  auto section = optimise.table("pareto");
+  if (!section) return;
+  section->allow_only({"quantity", "sense", "points"});
+  ParetoSpec pareto;
+  pareto.quantity = section->required_string("quantity");
+  check_quantity(*section, "quantity", pareto.quantity);
+  if (!section->has("sense")) section->fail("sense", "required: \"maximise\" or \"minimise\"");
+  pareto.maximise = read_sense(*section);
+  pareto.points = static_cast<int>(section->integer_or("points", 5));
+  if (pareto.points < 2 || pareto.points > 100)
+    section->fail("points", "expected an integer in 2..100 (epsilon levels, end points included)");
+  if (spec.terms.size() == 1 && spec.terms[0].quantity == pareto.quantity)
+    section->fail("quantity", "the second objective must differ from the objective");
+  spec.pareto = pareto;
+}
+
+// enumerate = { "geometry.core_material" = ["AISI 1010", "AISI 1018"], fluid = [...] }
+void read_choices(const magnetostatics::Case& c, const magnetostatics::TomlSection& section,
+                  OptimiseSpec& spec) {
+  const toml::node* node = section.node("enumerate");
+  if (!node) return;
+  if (!node->is_table())
+    section.fail("enumerate", "expected a table of key = [\"choice\", ...] (string case keys)");
+  std::size_t combinations = 1;
+  for (const auto& [name, values] : *node->as_table()) {
+    DiscreteChoice choice;
+    choice.key = std::string(name.str());
+    const auto* array = values.as_array();
+    if (!array || array->empty())
+      section.fail("enumerate", "\"" + choice.key + "\": expected a non-empty array of strings");
+    for (const auto& v : *array) {
+      const auto text = v.value<std::string>();
+      if (!text) section.fail("enumerate", "\"" + choice.key + "\": expected strings");
+      choice.values.push_back(*text);
+    }
+    const bool known = choice.key == "fluid" || c.table.at_path(choice.key).is_string() ||
+                       (choice.key.rfind("geometry.", 0) == 0 &&
+                        choice.key.find("_material") != std::string::npos);
+    if (!known)
+      section.fail("enumerate", "\"" + choice.key +
+                                    "\" is not a string key of the case (e.g. "
+                                    "geometry.core_material, or fluid)");
+    const bool material = choice.key == "fluid" || choice.key.find("material") != std::string::npos;
+    for (const auto& v : choice.values) {  // each candidate must make a valid case
+      try {
+        if (material)
+          magnetostatics::MaterialLibrary::standard().get(v, section.where("enumerate"));
+        case_from_table(with_text(c.table, choice.key, v), c.source.string());
+      } catch (const InputError& e) {
+        section.fail("enumerate", "\"" + choice.key + "\" = \"" + v + "\": " + e.what());
+      }
+    }
+    combinations *= choice.values.size();
+    spec.choices.push_back(choice);
+  }
+  if (combinations > 64) section.fail("enumerate", "more than 64 combinations");
 }
 
 }  // namespace
@@ -46,17 +169,11 @@ OptimiseSpec read_optimise_spec(const magnetostatics::Case& c) {
   if (!section)
     throw InputError(file + ": the case has no [optimise] table (docs/optimisation.md)");
   section->allow_only({"objective", "sense", "current", "flow", "max_iterations", "tolerance",
-                       "step", "variable", "constraint"});
+                       "step", "variable", "constraint", "supply_voltage", "heat_transfer",
+                       "thermal_resistance", "pareto", "enumerate"});
   OptimiseSpec spec;
-  spec.objective = section->string("objective").value_or("dp_on");
-  check_quantity(*section, "objective", spec.objective);
-  const std::string sense = section->string("sense").value_or("maximise");
-  if (sense == "maximise" || sense == "maximize")
-    spec.maximise = true;
-  else if (sense == "minimise" || sense == "minimize")
-    spec.maximise = false;
-  else
-    section->fail("sense", "expected \"maximise\" or \"minimise\", got \"" + sense + "\"");
+  read_objective(*section, spec);
+  spec.maximise = read_sense(*section);
   spec.current = section->number_or("current", 1.0);
   spec.flow = section->positive("flow");
   spec.max_iterations = static_cast<int>(section->integer_or("max_iterations", 40));
@@ -65,6 +182,9 @@ OptimiseSpec read_optimise_spec(const magnetostatics::Case& c) {
   spec.tolerance = section->positive_or("tolerance", 1e-4);
   spec.step = section->positive_or("step", 1e-3);
   if (spec.step > 0.1) section->fail("step", "expected a fraction of the bound range <= 0.1");
+  spec.supply_voltage = section->non_negative_or("supply_voltage", 0.0);
+  spec.heat_transfer = section->positive_or("heat_transfer", 10.0);
+  spec.thermal_resistance = section->non_negative_or("thermal_resistance", 0.0);
 
   const auto variables = section->table_array("variable");
   if (variables.empty())
@@ -107,6 +227,12 @@ OptimiseSpec read_optimise_spec(const magnetostatics::Case& c) {
     constraint.where = k.where();
     spec.constraints.push_back(constraint);
   }
+  read_pareto(*section, spec);
+  read_choices(c, *section, spec);
+  for (const auto& q : used_quantities(spec))
+    if (q == "rise_time" && !(spec.supply_voltage > 0.0))
+      section->fail("supply_voltage",
+                    "rise_time needs the driver's voltage step: set supply_voltage [V] > 0");
   return spec;
 }
 

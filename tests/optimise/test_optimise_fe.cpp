@@ -19,63 +19,17 @@
 #include "optimise/optimise_evaluate.hpp"
 #include "optimise/optimise_run.hpp"
 #include "optimise/optimise_spec.hpp"
+#include "optimise_fixture.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 using namespace rheomag;
-
-// Paper 000's annular valve on a coarse P1 mesh (1 element across the gap) so each FE solve is
-// fast; the [optimise] table is appended per test.
-const std::string kBase = R"(
-[case]
-name = "coarse_annular"
-units = "mm"
-fluid = "MRC-C1L"
-[geometry]
-template = "annular_valve"
-neck_radius = 10.5
-pole_length = 5.0
-coil_length = 32.0
-turns = 600
-[[circuit]]
-name = "coil"
-current = 1.0
-[solver]
-order = 1
-min_gap_elements = 1
-outer_radius_factor = 3.0
-[valve]
-wire = "AWG 24"
-)";
-
-const std::string kTwoVariables = R"(
-[optimise]
-objective = "dp_on"
-current = 1.0
-flow = 6.91e-6
-max_iterations = 12
-[[optimise.variable]]
-key = "geometry.neck_radius"
-lower = 8.0
-upper = 12.5
-[[optimise.variable]]
-key = "geometry.pole_length"
-lower = 3.0
-upper = 8.0
-)";
-
-magnetostatics::Case make_case(const std::string& optimise) {
-  return magnetostatics::parse_case(kBase + optimise, "coarse_annular.toml");
-}
-
-fs::path temp_dir(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("rheomag_optimise_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+using optimise_fixture::kBase;
+using optimise_fixture::kTimeAndLength;
+using optimise_fixture::kTwoVariables;
+using optimise_fixture::make_case;
+using optimise_fixture::TempDir;
 
 // Central differences of dp_on in neck_radius on the morphed mesh at three steps (0.2, 0.05,
 // 0.0125 mm): with a smooth objective the O(h^2) truncation error makes successive estimates
@@ -101,20 +55,9 @@ TEST(OptimiseFe, GradientIsConsistentAcrossStepSizesOnTheMorphedMesh) {
 // fresh mesh (as `rheomag solve` does): every constraint holds there within the feasibility
 // tolerance kFeasibilityTolerance (0.1 % of the limit).
 TEST(OptimiseFe, WrittenOptimumRespectsEveryConstraint) {
-  // Limits below the initial design's values (L/R 68 ms, length 44 mm) so that they bind.
-  const std::string spec = kTwoVariables + R"(
-[[optimise.constraint]]
-quantity = "time_constant"
-max = 0.05
-[[optimise.constraint]]
-quantity = "length"
-max = 0.043
-)";
-  const auto c = make_case(spec);
-  const fs::path dir = temp_dir("constraints");
-  optimise::OptimiseOptions options;
-  options.out_dir = dir;
-  const auto r = optimise::run_optimisation(c, options);
+  const auto c = make_case(kTwoVariables + kTimeAndLength);
+  const TempDir dir("constraints");
+  const auto r = optimise_fixture::run(c, dir);
   ASSERT_TRUE(r.optimal.feasible) << optimise::format_summary(r);
   ASSERT_TRUE(fs::exists(r.case_file));
   ASSERT_TRUE(fs::exists(r.history_file));
@@ -136,7 +79,6 @@ max = 0.043
       EXPECT_GE(value, k.lower * (1.0 - optimise::kFeasibilityTolerance)) << k.quantity;
     }
   }
-  fs::remove_all(dir);
 }
 
 // The optimum against a dense 9 x 9 grid over the same bounds, each grid design on a fresh mesh
@@ -145,19 +87,9 @@ max = 0.043
 // fresh meshes carry the coarse mesh's discretisation noise) and takes fewer FE solves than the
 // grid's 81.
 TEST(OptimiseFe, OptimumBeatsTheBestOfADenseGridAtFewerSolves) {
-  const std::string spec = kTwoVariables + R"(
-[[optimise.constraint]]
-quantity = "time_constant"
-max = 0.05
-[[optimise.constraint]]
-quantity = "length"
-max = 0.043
-)";
-  const auto c = make_case(spec);
-  const fs::path dir = temp_dir("grid");
-  optimise::OptimiseOptions options;
-  options.out_dir = dir;
-  const auto r = optimise::run_optimisation(c, options);
+  const auto c = make_case(kTwoVariables + kTimeAndLength);
+  const TempDir dir("grid");
+  const auto r = optimise_fixture::run(c, dir);
   ASSERT_TRUE(r.optimal.feasible) << optimise::format_summary(r);
 
   const auto s = optimise::read_optimise_spec(c);
@@ -179,7 +111,6 @@ max = 0.043
   EXPECT_LT(r.fe_solves, n * n);
   std::printf("optimum dp_on %.6g Pa in %d FE solves; best of %d grid designs %.6g Pa\n",
               r.optimal.objective, r.fe_solves, n * n, best);
-  fs::remove_all(dir);
 }
 
 // Turns are varied continuously, then rounded (nearest, down, up; re-checked on a fresh mesh):
@@ -190,15 +121,10 @@ TEST(OptimiseFe, TurnsAreRoundedAndReChecked) {
 key = "geometry.turns"
 lower = 300
 upper = 700
-[[optimise.constraint]]
-quantity = "time_constant"
-max = 0.05
-)";
+)" + optimise_fixture::kTimeConstant;
   const auto c = make_case(spec);
-  const fs::path dir = temp_dir("turns");
-  optimise::OptimiseOptions options;
-  options.out_dir = dir;
-  const auto r = optimise::run_optimisation(c, options);
+  const TempDir dir("turns");
+  const auto r = optimise_fixture::run(c, dir);
   ASSERT_TRUE(r.optimal.feasible) << optimise::format_summary(r);
   const double turns = r.optimal.x[2];
   EXPECT_EQ(turns, std::round(turns));
@@ -206,7 +132,6 @@ max = 0.05
   EXPECT_EQ(reloaded.table["geometry"]["turns"].value<double>().value_or(-1.0), turns);
   EXPECT_LE(r.optimal.quantities.at("time_constant"),
             0.05 * (1.0 + optimise::kFeasibilityTolerance));
-  fs::remove_all(dir);
 }
 
 // L/R at most 1 ms and dp_on at least 50 MPa cannot both hold in these bounds: the run ends
@@ -220,28 +145,18 @@ max = 0.001
 quantity = "dp_on"
 min = 5e7
 )";
-  auto c = make_case(spec);
-  const fs::path dir = temp_dir("infeasible");
-  optimise::OptimiseOptions options;
-  options.out_dir = dir;
-  const auto r = optimise::run_optimisation(c, options);
+  const auto c = make_case(spec);
+  const TempDir dir("infeasible");
+  const auto r = optimise_fixture::run(c, dir);
   EXPECT_FALSE(r.optimal.feasible);
   std::string all;
   for (const auto& text : r.conflicts) all += text + "\n";
   EXPECT_NE(all.find("time_constant"), std::string::npos) << all;
   EXPECT_NE(all.find("dp_on"), std::string::npos) << all;
   EXPECT_NE(optimise::format_summary(r).find("No feasible design"), std::string::npos);
-  fs::remove_all(dir);
 }
 
-std::string input_error(const std::string& optimise) {
-  try {
-    optimise::read_optimise_spec(make_case(optimise));
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using optimise_fixture::input_error;
 
 TEST(OptimiseFe, BadInputIsAnInputErrorNamingTheKey) {
   const std::string head = "[optimise]\nflow = 1e-6\n";
@@ -270,7 +185,8 @@ TEST(OptimiseFe, BadInputIsAnInputErrorNamingTheKey) {
 
 // The CLI exits 2 on bad input and prints nothing on stdout.
 TEST(OptimiseFe, CliExitsTwoOnBadInput) {
-  const fs::path dir = temp_dir("cli");
+  const TempDir temp("cli");
+  const fs::path& dir = temp.path;
   const fs::path file = dir / "bad.toml";
   std::ofstream(file) << kBase
                       << "[optimise]\nflow = 1e-6\n[[optimise.variable]]\n"
@@ -282,7 +198,6 @@ TEST(OptimiseFe, CliExitsTwoOnBadInput) {
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 2);
   EXPECT_EQ(fs::file_size(dir / "out.txt"), 0u);
-  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -6,21 +6,19 @@
 #include <numbers>
 
 #include "optimise/optimise_ipopt.hpp"
+#include "optimise_fixture.hpp"
 
 namespace {
 
 using rheomag::optimise::NlpProblem;
 using rheomag::optimise::solve_nlp;
 
-// Analytic magnetic-circuit valve: two pole gaps of width h in series, the steel ideal, so
-// B = mu0 N I / (2 h); linear fluid tau_y = k B; yield pressure drop of the two poles of length L
-// (slit limit, c = 2): dp = 2 c tau_y L / h = (2 c k mu0 I / h^2) N L. The envelope fixes the
-// length: 2 L + a N <= L_max (a = axial winding length per turn). Lagrange: the optimum shares
-// the length equally, 2 L* = a N* = L_max / 2, i.e. L* = L_max / 4, N* = L_max / (2 a).
+// Analytic magnetic-circuit valve (optimise_fixture.hpp): dp = gain N L, the envelope
+// 2 L + a N <= L_max (a = axial winding length per turn). Lagrange: the optimum shares the
+// length equally, 2 L* = a N* = L_max / 2, i.e. L* = L_max / 4, N* = L_max / (2 a).
 TEST(OptimiseIpopt, MagneticCircuitValveReachesTheAnalyticOptimum) {
-  const double mu0 = 4e-7 * std::numbers::pi, k = 5e4, c = 2.0, current = 1.0, h = 1e-3;
-  const double l_max = 0.044, a = 5e-5;  // 44 mm envelope; 0.05 mm of coil length per turn
-  const double gain = 2.0 * c * k * mu0 * current / (h * h);
+  const optimise_fixture::MagneticCircuitValve model;
+  const double l_max = model.l_max, a = model.a, gain = model.gain();
   const double l_star = l_max / 4.0, n_star = l_max / (2.0 * a);
   NlpProblem p;
   p.lower = {1e-3, 50.0};

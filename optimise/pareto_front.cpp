@@ -1,0 +1,130 @@
+#include "optimise/pareto_front.hpp"
+
+#include <unistd.h>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include "optimise/optimise_problem.hpp"
+#include "optimise/sweep_results_file.hpp"
+
+namespace rheomag::optimise {
+
+namespace {
+// SI unit of a quantity ("-" for a weighted sum).
+std::string unit_of(const std::string& name) {
+  for (const auto& [q, unit] : quantity_units())
+    if (q == name) return unit;
+  return "-";
+}
+}  // namespace
+
+OptimiseSpec second_objective_spec(const OptimiseSpec& spec) {
+  OptimiseSpec second = spec;
+  second.objective = spec.pareto->quantity;
+  second.terms = {ObjectiveTerm{spec.pareto->quantity, 1.0, 1.0}};
+  second.maximise = spec.pareto->maximise;
+  second.pareto.reset();
+  return second;
+}
+
+ParetoFront pareto_front(const OptimiseSpec& spec, const DesignReport& objective_alone,
+                         const OptimiseFrom& optimise, const std::function<int()>& solves) {
+  ParetoFront front;
+  front.pareto = *spec.pareto;
+  front.objective_alone = objective_alone;
+  const std::string& name = front.pareto.quantity;
+  const double first_level = quantity_value(objective_alone.quantities, name);
+  const double scale = std::abs(first_level) > 0.0 ? std::abs(first_level) : 1.0;
+  front.second_alone = optimise(second_objective_spec(spec), objective_alone.x, scale);
+  const double last_level = quantity_value(front.second_alone.quantities, name);
+
+  const int n = front.pareto.points;
+  const double objective_scale =
+      std::abs(objective_alone.objective) > 0.0 ? std::abs(objective_alone.objective) : 1.0;
+  std::vector<double> start = objective_alone.x;
+  for (int k = 0; k < n; ++k) {
+    ParetoPoint point;
+    point.epsilon = first_level + (last_level - first_level) * k / (n - 1);
+    if (k == 0) {  // the objective's own optimum satisfies its own level
+      point.design = objective_alone;
+    } else {
+      OptimiseSpec level = spec;
+      level.pareto.reset();
+      Constraint limit;
+      limit.quantity = name;
+      (front.pareto.maximise ? limit.lower : limit.upper) = point.epsilon;
+      limit.where = "optimise.pareto level " + std::to_string(k + 1);
+      level.constraints.push_back(limit);
+      const int before = solves();
+      point.design = optimise(level, start, objective_scale);
+      point.fe_solves = solves() - before;
+      point.design.constraints.pop_back();  // report against the spec's own constraints
+      start = point.design.x;
+    }
+    front.points.push_back(std::move(point));
+  }
+  return front;
+}
+
+std::string pareto_csv(const OptimiseSpec& spec, const ParetoFront& front) {
+  std::ostringstream out;
+  const std::string& second = front.pareto.quantity;
+  out << "epsilon " << second << ",objective " << spec.objective << "," << second
+      << ",feasible,fe_solves";
+  for (const auto& v : spec.variables) out << "," << v.key;
+  for (const auto& [name, unit] : quantity_units()) out << "," << name << " [" << unit << "]";
+  out << "\n";
+  for (const auto& p : front.points) {
+    const auto& q = p.design.quantities;
+    auto it = q.find(second);
+    out << number_text(p.epsilon) << "," << number_text(p.design.objective) << ","
+        << (it == q.end() ? std::string() : number_text(it->second)) << ","
+        << (p.design.feasible ? 1 : 0) << "," << p.fe_solves;
+    for (double x : p.design.x) out << "," << number_text(x);
+    for (const auto& [name, unit] : quantity_units()) {
+      auto v = q.find(name);
+      out << "," << (v == q.end() ? std::string() : number_text(v->second));
+    }
+    out << "\n";
+  }
+  return out.str();
+}
+
+std::vector<std::filesystem::path> write_pareto(const std::filesystem::path& dir,
+                                                const OptimiseSpec& spec,
+                                                const ParetoFront& front) {
+  std::vector<std::filesystem::path> written;
+  const auto csv = dir / "pareto.csv";
+  write_file_atomically(csv, pareto_csv(spec, front));
+  written.push_back(csv);
+  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) return written;
+  // gnuplot writes to a temporary name, renamed when it succeeded (atomic like the CSV).
+  const std::string pid = std::to_string(::getpid());
+  const auto png = dir / "pareto.png";
+  const auto png_tmp = dir / ("pareto.png.tmp-" + pid);
+  const auto script = dir / ("pareto.gp.tmp-" + pid);
+  std::ostringstream gp;
+  gp << "set terminal pngcairo size 800,560 noenhanced\n"
+     << "set output '" << png_tmp.string() << "'\n"
+     << "set datafile separator ','\n"
+     << "set key off\nset grid\n"
+     << "set title 'Pareto front (epsilon-constraint): " << spec.objective << " vs "
+     << front.pareto.quantity << "'\n"
+     << "set xlabel '" << front.pareto.quantity << " [" << unit_of(front.pareto.quantity) << "]'\n"
+     << "set ylabel '" << spec.objective << " [" << unit_of(spec.objective) << "]'\n"
+     << "plot '" << csv.string() << "' every ::1 using 3:2 with linespoints pt 7 ps 1.2 lw 2\n";
+  write_file_atomically(script, gp.str());
+  const std::string command = "gnuplot '" + script.string() + "' > /dev/null 2>&1";
+  const bool ok = std::system(command.c_str()) == 0;
+  std::filesystem::remove(script);
+  if (ok && std::filesystem::exists(png_tmp)) {
+    std::filesystem::rename(png_tmp, png);
+    written.push_back(png);
+  } else {
+    std::filesystem::remove(png_tmp);
+  }
+  return written;
+}
+
+}  // namespace rheomag::optimise

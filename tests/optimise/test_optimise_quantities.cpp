@@ -1,0 +1,89 @@
+// Quantities of a design beyond the field: thinnest steel wall, steady coil temperature rise and
+// the 90 % current rise time with a voltage driver (coarse FE annular valve,
+// optimise_fixture.hpp).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "mesh/error.hpp"
+#include "optimise/optimise_evaluate.hpp"
+#include "optimise/optimise_spec.hpp"
+#include "optimise_fixture.hpp"
+
+namespace {
+
+using namespace rheomag;
+using optimise_fixture::make_case;
+
+std::string optimise_table(const std::string& extra) {
+  return "[optimise]\nflow = 6.91e-6\n" + extra +
+         "[[optimise.variable]]\nkey = \"geometry.pole_length\"\nlower = 2.0\nupper = 8.0\n";
+}
+
+// min_wall of the annular template = min(disk_thickness (5 mm default), pole_length): 3 mm at
+// pole_length 3, 5 mm at 7 (exact: template dimensions).
+TEST(OptimiseQuantities, MinimumWallIsTheThinnestSteelWall) {
+  const auto c = make_case(optimise_table(""));
+  optimise::DesignEvaluator e(c, optimise::read_optimise_spec(c));
+  EXPECT_DOUBLE_EQ(e.evaluate({3.0}).at("min_wall"), 3e-3);
+  EXPECT_DOUBLE_EQ(e.evaluate({7.0}).at("min_wall"), 5e-3);
+}
+
+// temperature_rise = P / (h A), A = 2 pi r_c l_c the coil's outer cylinder: r_c = gap_radius -
+// gap_width / 2 - cover_thickness = 18.5 mm, l_c = coil_length = 32 mm (template defaults and
+// the case), h = 10 W/(m^2 K) by default; with thermal_resistance: P R_th. Exact up to rounding
+// (the mesh has nodes on the coil's corners).
+TEST(OptimiseQuantities, TemperatureRiseIsPowerOverSurfaceConductance) {
+  const auto c = make_case(optimise_table(""));
+  optimise::DesignEvaluator e(c, optimise::read_optimise_spec(c));
+  const auto q = e.evaluate({5.0});
+  const double area = 2.0 * std::numbers::pi * 18.5e-3 * 32e-3;
+  EXPECT_NEAR(q.at("temperature_rise"), q.at("power") / (10.0 * area),
+              1e-9 * q.at("temperature_rise"));
+  const auto c2 = make_case(optimise_table("thermal_resistance = 4.0\n"));
+  optimise::DesignEvaluator e2(c2, optimise::read_optimise_spec(c2));
+  const auto q2 = e2.evaluate({5.0});
+  EXPECT_NEAR(q2.at("temperature_rise"), 4.0 * q2.at("power"), 1e-12);
+}
+
+// 90 % rise time after a voltage step V on R and lambda(i). Reference: for a linear inductor
+// t90 = ln(10) L / R. At I_f = V / R = 0.05 A the steel is far from saturation, so with the
+// secant L at 0.05 A the rise time agrees within 3 % (the residual is the steel's initial
+// permeability, lower than at moderate fields). At I_f = 3 A the core saturates (L(i) falls),
+// so the rise time must be shorter than ln(10) L(0.05 A) / R.
+TEST(OptimiseQuantities, RiseTimeMatchesTheLinearRlLimitAndShortensWithSaturation) {
+  const auto probe = make_case(optimise_table("current = 0.05\n"));
+  optimise::DesignEvaluator p(probe, optimise::read_optimise_spec(probe));
+  const auto q0 = p.evaluate({5.0});
+  const double r = q0.at("resistance"), l = q0.at("inductance");
+  auto rise = [&](double final_current) {
+    const auto c = make_case(
+        optimise_table("current = 0.05\nsupply_voltage = " + std::to_string(final_current * r) +
+                       "\n[[optimise.constraint]]\nquantity = \"rise_time\"\nmax = 1.0\n"));
+    optimise::DesignEvaluator e(c, optimise::read_optimise_spec(c));
+    const auto q = e.evaluate({5.0});
+    EXPECT_EQ(e.fe_solves(), 5);  // the operating point + 4 lambda(i) samples
+    return q.at("rise_time");
+  };
+  const double linear = std::log(10.0) * l / r;
+  EXPECT_NEAR(rise(0.05), linear, 0.03 * linear);
+  EXPECT_LT(rise(3.0), linear);
+}
+
+using optimise_fixture::input_error;
+
+// rise_time without a driver voltage, and an unknown quantity (named, valid names listed).
+TEST(OptimiseQuantities, BadInputNamesTheQuantity) {
+  EXPECT_NE(input_error(optimise_table("objective = \"rise_time\"\nsense = \"minimise\"\n"))
+                .find("supply_voltage"),
+            std::string::npos);
+  const std::string unknown = input_error(optimise_table("objective = \"wall_thickness\"\n"));
+  EXPECT_NE(unknown.find("\"wall_thickness\""), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("min_wall"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("temperature_rise"), std::string::npos) << unknown;
+}
+
+}  // namespace
