@@ -94,6 +94,14 @@ void run_valve(const ValveCli& o) {
     } else {
       for (const char* key : {"resistance", "time_constant", "power"}) coil_json[key] = nullptr;
     }
+    // L(I) from the FE solve at each requested current (one row per current).
+    nlohmann::json table = nlohmann::json::array();
+    for (std::size_t i = 0; i < points.size(); i += flows.size())
+      table.push_back({{"current", points[i].current},
+                       {"flux_linkage", points[i].flux_linkage},
+                       {"inductance", points[i].inductance},
+                       {"incremental_inductance", points[i].incremental_inductance}});
+    coil_json["inductance_table"] = table;
     out["coil"] = coil_json;
     std::cout << out.dump(2) << "\n";
     return;
@@ -104,6 +112,10 @@ void run_valve(const ValveCli& o) {
   for (const auto& p : points)
     std::printf("%10.4g %12.4g %12.5g %12.5g %12.5g %14.5g\n", p.current, p.flow, p.dp_total * 1e-5,
                 p.dp_yield * 1e-5, p.dp_viscous * 1e-5, p.dp_total_average_b * 1e-5);
+  std::printf("%10s %14s %14s %16s\n", "I [A]", "lambda [Wb]", "L = l/I [H]", "dl/dI [H]");
+  for (std::size_t i = 0; i < points.size(); i += flows.size())
+    std::printf("%10.4g %14.5g %14.5g %16.5g\n", points[i].current, points[i].flux_linkage,
+                points[i].inductance, points[i].incremental_inductance);
   std::printf("coil: %g turns, L = %.4g H at %g A", chain.turns(), peak->inductance, peak->current);
   if (have_wire)
     std::printf(

@@ -11,6 +11,7 @@
 #include "fluid/newtonian.hpp"
 #include "fluid/valve_chain.hpp"
 #include "magnetostatics/case_file.hpp"
+#include "magnetostatics/solve_problem.hpp"
 #include "mesh/error.hpp"
 
 using namespace rheomag;
@@ -101,4 +102,36 @@ TEST(CmdValve, JsonKeysAndValues) {
                           " --current 1 2>/dev/null >/dev/null";  // no flow rate
   const int bad_status = std::system(bad.c_str());
   EXPECT_EQ(WEXITSTATUS(bad_status), 2);
+}
+
+// L(I) table of `rheomag valve --json`. References: lambda = L I by definition of the secant
+// inductance; at I = 0 the secant is reported as the incremental one; the core neck saturates
+// towards 1 A, so lambda(I) is concave there and dlambda/dI < lambda/I. The values must equal
+// MagnetostaticSolver::sweep on the same case within Newton's tolerance (1e-6 relative; the
+// sweep warm-starts each current, the valve starts each from A = 0).
+TEST(CmdValve, InductanceTable) {
+  const std::string command = std::string(RHEOMAG_BINARY) + " valve " + kCase +
+                              " --current 0,0.5,1 --flow 1e-6 --json 2>/dev/null";
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string out;
+  std::array<char, 4096> buffer{};
+  while (fgets(buffer.data(), buffer.size(), pipe)) out += buffer.data();
+  ASSERT_EQ(WEXITSTATUS(pclose(pipe)), 0) << out;
+  const auto table = nlohmann::json::parse(out)["coil"]["inductance_table"];
+  ASSERT_EQ(table.size(), 3u);
+  auto solved = magnetostatics::solve_problem(magnetostatics::load_case(kCase).problem);
+  const auto sweep = solved.solver->sweep(0, {0.0, 0.5, 1.0});
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto& row = table[i];
+    const double current = row["current"].get<double>();
+    EXPECT_EQ(current, sweep[i].current);
+    EXPECT_NEAR(row["flux_linkage"].get<double>(), row["inductance"].get<double>() * current,
+                1e-12);
+    EXPECT_NEAR(row["inductance"].get<double>() / sweep[i].secant_inductance, 1.0, 1e-6);
+    EXPECT_NEAR(row["incremental_inductance"].get<double>() / sweep[i].incremental_inductance, 1.0,
+                1e-6);
+  }
+  EXPECT_EQ(table[0]["inductance"].get<double>(), table[0]["incremental_inductance"].get<double>());
+  EXPECT_LT(table[2]["incremental_inductance"].get<double>(), table[2]["inductance"].get<double>());
 }
