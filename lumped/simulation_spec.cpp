@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "lumped/lugre_paper001.hpp"
 #include "lumped/transfer_function.hpp"
 #include "mesh/error.hpp"
 
@@ -311,10 +312,14 @@ SimulationSpec read_simulation_spec(const std::string& path) {
     if (kind == "tf14") {
       model.only({"kind"});
       spec.tf14 = true;
+    } else if (kind == "lugre-paper001") {
+      model.only({"kind", "piston_area"});
+      spec.lugre_paper001 = true;
+      spec.piston_area = model.positive("piston_area", spec.piston_area);
     } else if (parse_pheno_kind(kind, pk)) {
       spec.pheno = read_pheno(model, pk);
     } else {
-      model.fail("kind", "must be tf14, bingham, lugre, bouc-wen, maxwell or dahl");
+      model.fail("kind", "must be tf14, lugre-paper001, bingham, lugre, bouc-wen, maxwell or dahl");
     }
   } else {
     spec.rig = read_rig(doc, path);
@@ -342,6 +347,7 @@ SimulationSpec read_simulation_spec(const std::string& path) {
 std::vector<std::string> spec_drive_columns(const SimulationSpec& spec) {
   if (spec.rig) return rig_drive_columns(*spec.rig);
   if (spec.tf14) return {"current"};
+  if (spec.lugre_paper001) return {"velocity", "current"};
   std::vector<std::string> cols = {"displacement", "velocity"};
   if (!spec.pheno->setup.field_column.empty()) cols.push_back(spec.pheno->setup.field_column);
   return cols;
@@ -365,6 +371,17 @@ Recording simulate_spec(const SimulationSpec& spec, const Recording& drive) {
     rec.meta.output = "pressure";
     rec.meta.rig.kind = "constant_velocity_pump";
     rec.meta.description = "TF14 of paper 000 (Table 7), current -> pressure";
+  } else if (spec.lugre_paper001) {
+    std::vector<double> flow = drive.column("velocity");
+    for (double& q : flow) q *= spec.piston_area;
+    rec.columns["flow"] = flow;
+    if (drive.columns.count("displacement"))
+      rec.columns["displacement"] = drive.column("displacement");
+    rec.columns["pressure"] = simulate_lugre_paper001(drive.t, flow, drive.column("current"));
+    rec.meta.output = "pressure";
+    rec.meta.rig.kind = "bypass_cylinder";
+    rec.meta.rig.piston_area = spec.piston_area;
+    rec.meta.description = "LuGre valve model of paper 001 (eqs. 8-9, Table 3)";
   } else {
     Recording driven = drive;  // the model reads its output column only for scales: give zeros
     driven.columns["force"] = std::vector<double>(drive.t.size(), 0.0);

@@ -19,12 +19,14 @@ struct PhenoSpec {
   std::vector<double> params;  ///< in the order of pheno_params(kind)
 };
 
-/// A parsed simulation spec: exactly one of rig, pheno or tf14 is active.
+/// A parsed simulation spec: exactly one of rig, pheno, tf14 or lugre_paper001 is active.
 struct SimulationSpec {
   std::string path;
   std::optional<RigSpec> rig;
   std::optional<PhenoSpec> pheno;
-  bool tf14 = false;  ///< paper 000 Table 7 transfer function, current -> pressure
+  bool tf14 = false;              ///< paper 000 Table 7 transfer function, current -> pressure
+  bool lugre_paper001 = false;    ///< paper 001 eqs. 8-9 + Table 3, velocity + current -> pressure
+  double piston_area = 4.524e-4;  ///< [m^2] lugre_paper001: flow = piston_area x velocity
   std::map<std::string, double> sensor_noise;
   unsigned noise_seed = 1;
 };
