@@ -42,18 +42,20 @@ bool worth_retrying(const std::vector<CandidateScore>& scores, Effect c, double 
 
 /// Candidates whose output fits tie (within 5 % of the best's improvement) are told apart by
 /// the measured coil current when the recording has one that the model does not take as input:
-/// coil inductance delays that current, field and fluid lags do not.
+/// coil inductance delays that current, field and fluid lags do not. Returns the tied candidates
+/// that the current rules out (their current error at least twice the best's).
 template <class Tried>
-void prefer_by_measured_current(const DiagnosisModel& model, std::vector<Tried>& tried) {
+std::vector<Effect> prefer_by_measured_current(const DiagnosisModel& model,
+                                               std::vector<Tried>& tried) {
   const auto& rec = model.recording();
   if (tried.size() < 2 || model.output_column() == "current" || !rec.columns.count("current") ||
       std::find(rec.meta.drive.begin(), rec.meta.drive.end(), "current") != rec.meta.drive.end())
-    return;
+    return {};
   const double best = tried.front().fit.sse;
   const double spread = 0.05 * std::abs(best);
   std::size_t tied = 1;
   while (tied < tried.size() && tried[tied].fit.sse - best < spread) ++tied;
-  if (tied < 2) return;
+  if (tied < 2) return {};
   const auto& measured = rec.column("current");
   std::vector<double> current_sse(tied);
   for (std::size_t i = 0; i < tied; ++i) {
@@ -66,7 +68,11 @@ void prefer_by_measured_current(const DiagnosisModel& model, std::vector<Tried>&
   }
   const auto best_i = static_cast<std::size_t>(
       std::min_element(current_sse.begin(), current_sse.end()) - current_sse.begin());
+  std::vector<Effect> ruled_out;
+  for (std::size_t i = 0; i < tied; ++i)
+    if (current_sse[i] > 2.0 * current_sse[best_i]) ruled_out.push_back(tried[i].effect);
   if (current_sse[best_i] < 0.5 * current_sse[0]) std::swap(tried[0], tried[best_i]);
+  return ruled_out;
 }
 
 /// Rejects recordings that cannot support a diagnosis, saying why.
@@ -326,7 +332,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
     if (tried.empty()) break;
     std::stable_sort(tried.begin(), tried.end(),
                      [](const Tried& a, const Tried& b) { return a.delta_bic > b.delta_bic; });
-    prefer_by_measured_current(model, tried);
+    const auto ruled_out = prefer_by_measured_current(model, tried);
     const auto& best = tried.front();
     if (best.delta_bic <= options.bic_margin) break;
     const int cv_iterations = std::max(options.max_iterations / 3, 5);
@@ -346,7 +352,10 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
     f.heldout_gain = gain;
     const double reduction = current.sse - best.fit.sse;
     for (std::size_t i = 1; i < tried.size(); ++i)
-      if (tried[i].fit.sse - best.fit.sse < 0.05 * reduction) {
+      if (std::find(ruled_out.begin(), ruled_out.end(), tried[i].effect) != ruled_out.end() &&
+          tried[i].effect != best.effect) {
+        f.ruled_out_by_current.push_back(tried[i].effect);
+      } else if (tried[i].fit.sse - best.fit.sse < 0.05 * reduction) {
         f.ambiguous_with.push_back(tried[i].effect);
         if (f.separating_measurement.empty())
           f.separating_measurement = separating_measurement(best.effect, tried[i].effect);
@@ -376,6 +385,11 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
       ++offset;
     }
     f.evidence = evidence_for(f.effect, d, current);
+    if (!f.ruled_out_by_current.empty()) {
+      f.evidence += "; the output alone fits as well with";
+      for (Effect e : f.ruled_out_by_current) f.evidence += " " + effect_name(e);
+      f.evidence += ", but the measured coil current rules that out";
+    }
   }
   if (!model.chamber_volume_given() && !d.findings.empty())
     d.notes.push_back(
@@ -420,6 +434,11 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
               {"standard_errors", u},          {"fit_percent", f.fit_percent},
               {"delta_bic", f.delta_bic},      {"heldout_gain", f.heldout_gain},
               {"evidence", f.evidence}};
+    if (!f.ruled_out_by_current.empty()) {
+      e["ruled_out_by_measured_current"] = json::array();
+      for (Effect a : f.ruled_out_by_current)
+        e["ruled_out_by_measured_current"].push_back(effect_name(a));
+    }
     if (!f.ambiguous_with.empty()) {
       e["ambiguous_with"] = json::array();
       for (Effect a : f.ambiguous_with) e["ambiguous_with"].push_back(effect_name(a));

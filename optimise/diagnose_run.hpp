@@ -44,6 +44,8 @@ struct Finding {
   std::string evidence;
   std::vector<Effect> ambiguous_with;  ///< candidates that explain the data almost equally
   std::string separating_measurement;  ///< what would tell them apart
+  /// candidates that fit the output as well but not the measured coil current
+  std::vector<Effect> ruled_out_by_current;
 };
 
 /// The whole diagnosis.

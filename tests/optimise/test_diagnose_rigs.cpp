@@ -69,6 +69,9 @@ TEST(DiagnoseRigs, PumpCoilInductance) {
   ASSERT_FALSE(d.findings.empty());
   // The output alone cannot tell L/R from a field lag; the measured current decides.
   EXPECT_EQ(d.findings.front().effect, Effect::coil_inductance);
+  // ... so the field lags are reported as ruled out, not as equally good.
+  EXPECT_TRUE(d.findings.front().ambiguous_with.empty());
+  EXPECT_FALSE(d.findings.front().ruled_out_by_current.empty());
   EXPECT_NEAR(param(d.findings.front(), "inductance") / 0.5, 1.0, 0.2);
   EXPECT_NEAR(d.final_fit_percent, v.noise_ceiling, 2.0);
 }
