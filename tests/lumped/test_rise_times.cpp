@@ -1,0 +1,109 @@
+// Paper 000's measured pressure rise times after a current step (sec. 4.1) against the physical
+// constant-velocity rig (cases/rigs/constant_velocity_pump.toml: chamber compliance ahead of a
+// Bingham plug + a field lag) and against the paper's own TF14 (Table 7).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "lumped/signals.hpp"
+#include "lumped/simulation_spec.hpp"
+#include "lumped/transfer_function.hpp"
+
+using namespace rheomag::lumped;
+
+namespace {
+
+constexpr double kStepTime = 0.5;  // [s] current switched from 0 to I here
+
+/// 10-90 % rise time [s] of y after the step: from the first crossing of 10 % to the first of 90 %
+/// of (final - initial), initial = value at the step, final = the given settled value.
+double rise_time(const std::vector<double>& t, const std::vector<double>& y, double final_value) {
+  double initial = 0.0, t10 = -1.0, t90 = -1.0;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    if (t[k] <= kStepTime) {
+      initial = y[k];
+      continue;
+    }
+    const double f = (y[k] - initial) / (final_value - initial);
+    if (t10 < 0 && f >= 0.1) t10 = t[k];
+    if (t90 < 0 && f >= 0.9) t90 = t[k];
+  }
+  return t90 - t10;
+}
+
+Recording step_drive(double velocity, double current, double duration) {
+  Recording drive;
+  drive.t = uniform_times(duration, 1000.0);
+  std::vector<double> v(drive.t.size(), velocity), i(drive.t.size(), 0.0);
+  for (std::size_t k = 0; k < i.size(); ++k)
+    if (drive.t[k] > kStepTime) i[k] = current;
+  drive.columns["velocity"] = v;
+  drive.columns["current"] = i;
+  return drive;
+}
+
+const double kCurrents[] = {0.25, 0.5, 0.75, 1.0};
+// Paper 000 sec. 4.1: 10-90 % pressure rise times [s] at 5 and 10 mm/s for 0.25 .. 1 A.
+const double kMeasured5[] = {0.299, 0.572, 1.026, 1.164};
+const double kMeasured10[] = {0.276, 0.415, 0.529, 0.605};
+
+}  // namespace
+
+// The physical rig with 2 chosen parameters (compliance 1.1e-11 m^3/Pa per chamber, 0.1 s field
+// lag; yield pressures = the measured amplitudes) against the 8 measured rise times. Tolerances:
+// each point within 30 % and the rms error within 18 % (measured: worst -24 %, rms 14 %, see
+// docs/validation.md); the trend must be right: rise time grows with current at both velocities
+// and is shorter at 10 mm/s than at 5 mm/s for every current.
+TEST(RiseTimes, PhysicalRigExplainsPaper000) {
+  const SimulationSpec spec = read_simulation_spec(std::string(RHEOMAG_SOURCE_DIR) +
+                                                   "/cases/rigs/constant_velocity_pump.toml");
+  double sum_sq = 0.0;
+  std::vector<double> rise5, rise10;
+  for (int v = 0; v < 2; ++v) {
+    const double velocity = v == 0 ? 5e-3 : 10e-3;
+    for (int k = 0; k < 4; ++k) {
+      const Recording rec = simulate_spec(spec, step_drive(velocity, kCurrents[k], 5.0));
+      const auto& p = rec.column("pressure");
+      const double rise = rise_time(rec.t, p, p.back());
+      const double measured = v == 0 ? kMeasured5[k] : kMeasured10[k];
+      const double error = rise / measured - 1.0;
+      std::printf("%g mm/s %g A: simulated %.0f ms, measured %.0f ms (%+.0f %%)\n", velocity * 1e3,
+                  kCurrents[k], rise * 1e3, measured * 1e3, error * 100);
+      EXPECT_LT(std::abs(error), 0.30) << velocity << " m/s, " << kCurrents[k] << " A";
+      sum_sq += error * error;
+      (v == 0 ? rise5 : rise10).push_back(rise);
+    }
+  }
+  EXPECT_LT(std::sqrt(sum_sq / 8.0), 0.18);
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_LT(rise10[k], rise5[k]) << kCurrents[k];
+    if (k > 0) {
+      EXPECT_GT(rise5[k], rise5[k - 1]);
+      EXPECT_GT(rise10[k], rise10[k - 1]);
+    }
+  }
+}
+
+// TF14 is linear and has no velocity input: its 10-90 % rise time (to 90 % of the DC gain
+// 7.485 bar/A x I) is the same at every current and velocity. Reference: its modal step response
+// from Table 7's poles and residues, 292.3 ms (10 % at 27.4 ms, 90 % at 319.7 ms); tolerance 2 ms
+// (1 kHz sampling). Equal for 0.25 and 1 A to 1e-9 s relative (linearity).
+TEST(RiseTimes, Tf14RiseTimeIsOneNumber) {
+  const TransferFunction tf = tf14_paper000();
+  double rise_quarter = 0.0;
+  for (double current : {0.25, 1.0}) {
+    const Recording drive = step_drive(0.0, current, 2.5);
+    const std::vector<double> p =
+        simulate_transfer_function(tf, drive.t, drive.column("current"));  // bar
+    const double rise = rise_time(drive.t, p, dc_gain(tf) * current);
+    EXPECT_NEAR(rise, 0.2923, 0.002) << current;
+    if (current == 0.25) rise_quarter = rise;
+    if (current == 1.0) {
+      EXPECT_NEAR(rise, rise_quarter, 1e-9);
+    }
+  }
+}
