@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "optimise/optimise_case_edit.hpp"
+#include "optimise/optimise_wire_gauge.hpp"
 
 namespace rheomag::optimise {
 
@@ -57,8 +58,10 @@ DesignReport round_counts(DesignEvaluator& evaluator, const magnetostatics::Case
                           std::vector<HistoryRow>& history) {
   std::vector<std::size_t> counts;
   for (std::size_t i = 0; i < design.x.size(); ++i)
-    if (is_count_key(c.table, spec.variables[i].key)) counts.push_back(i);
+    if (is_count_key(c.table, spec.variables[i].key) || spec.variables[i].key == kWireGaugeKey)
+      counts.push_back(i);
   if (counts.empty()) return design;
+  evaluator.exact_winding(true);  // candidates as their written cases have them
   std::optional<DesignReport> chosen;
   for (int mode = 0; mode < 3; ++mode) {
     std::vector<double> x = design.x;
@@ -73,6 +76,7 @@ DesignReport round_counts(DesignEvaluator& evaluator, const magnetostatics::Case
   }
   evaluator.remesh_next();
   evaluator.evaluate(chosen->x);  // the chosen design's field for the .vtu
+  evaluator.exact_winding(false);
   return *chosen;
 }
 

@@ -30,7 +30,8 @@ ContinuousOptimum optimise_continuous(DesignEvaluator& evaluator, const Optimise
                                       double objective_scale, const IpoptSettings& settings,
                                       std::vector<HistoryRow>& history);
 
-/// The design with every template count of `c` (e.g. geometry.turns) rounded: all to the
+/// The design with every template count of `c` (e.g. geometry.turns) and the wire gauge rounded
+/// (the gauge's candidates evaluated with the case's own whole turns): all to the
 /// nearest, all down, all up, each checked on a fresh mesh; the best (feasible first) wins.
 /// Returns `design` unchanged if there is no count. Afterwards the evaluator's last field is the
 /// returned design's.

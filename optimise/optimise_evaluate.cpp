@@ -1,7 +1,6 @@
-// Gap pressure drop: as in fluid/valve_chain.cpp (every gap region in series; annular: mean
-// radius = mid-line r, length = z extent, clearance = area / length; radial: r extent), with
-// the normal flux density sampled at kSamples mid-line points. Off state: B = 0 along the gap.
-// Coil: turns and the winding window from the circuit-0 regions of the (morphed) mesh.
+// Gap pressure drops from fluid::SolvedValve (the valve chain on the already solved field: every
+// gap in series, local tau_y(B(s)) along each mid-line; off state: B = 0). Coil: fluid::coil_spec
+// (turns and winding window from the circuit-0 regions of the (morphed) mesh).
 
 #include "optimise/optimise_evaluate.hpp"
 
@@ -11,19 +10,19 @@
 #include <numbers>
 
 #include "fluid/coil.hpp"
-#include "fluid/field_coupling.hpp"
+#include "fluid/solved_valve.hpp"
 #include "fluid/valve_chain.hpp"
 #include "magnetostatics/domain.hpp"
 #include "magnetostatics/material_library.hpp"
 #include "mesh/error.hpp"
 #include "mesh/mesher.hpp"
 #include "optimise/optimise_case_edit.hpp"
+#include "optimise/optimise_wire_gauge.hpp"
 
 namespace rheomag::optimise {
 
 namespace {
 
-constexpr int kSamples = 101;
 constexpr int kRiseSamples = 4;  // lambda(i) samples of the rise-time integral
 
 // The steel walls of each parametric template (thicknesses, file units): the ring outside the
@@ -53,73 +52,17 @@ double rise_time_90(const std::vector<double>& current, const std::vector<double
   return t;
 }
 
-struct GapDrops {
-  double on = 0.0, off = 0.0, b_average = 0.0, min_gap = INFINITY;
-};
-
-GapDrops gap_drops(const magnetostatics::MagnetostaticSolver& solver,
-                   const magnetostatics::Solution& solution, const magnetostatics::Results& results,
-                   const fluid::Fluid& fluid, double flow, double inlet_radius) {
-  GapDrops out;
-  double b_sum = 0.0;
-  int b_count = 0;
-  for (const auto& gap : results.gaps) {
-    const double dr = gap.line_end.r - gap.line_start.r, dz = gap.line_end.z - gap.line_start.z;
-    const double length = std::hypot(dr, dz);
-    const bool annular = gap.kind == mesh::GapKind::annular;
-    fluid::GapFieldSamples field, zero;
-    for (int i = 0; i < kSamples; ++i) {
-      const double t = (i + 0.5) / kSamples;
-      const mesh::Point p{gap.line_start.r + t * dr, gap.line_start.z + t * dz};
-      std::array<double, 2> b{};
-      if (!magnetostatics::flux_density_at(solver, solution, p, gap.region, b)) continue;
-      const double position = annular ? t * length : p.r;
-      if (!annular && position < inlet_radius) continue;
-      field.position.push_back(position);
-      field.b.push_back(std::abs(annular ? b[0] : b[1]));
-      b_sum += field.b.back();
-      ++b_count;
-    }
-    if (field.position.size() < 2)
-      throw InputError("gap \"" + gap.name + "\": fewer than 2 mid-line field samples found");
-    zero = field;
-    std::fill(zero.b.begin(), zero.b.end(), 0.0);
-    if (annular) {
-      const double h = gap.area / std::abs(dz);
-      const fluid::AnnulusGeometry g{h, gap.line_start.r, std::abs(dz)};
-      out.on += fluid::annular_gap_in_field(g, field, fluid, flow).integrated.dp;
-      out.off += fluid::annular_gap_in_field(g, zero, fluid, flow).integrated.dp;
-      out.min_gap = std::min(out.min_gap, h);
-    } else {
-      const double r_in = std::max(std::min(gap.line_start.r, gap.line_end.r), inlet_radius);
-      const double r_out = std::max(gap.line_start.r, gap.line_end.r);
-      if (!(r_in > 0.0))
-        throw InputError("gap \"" + gap.name + "\" starts on the axis: set [valve] inlet_radius");
-      const double h = gap.area / std::abs(dr);
-      const fluid::RadialGeometry g{h, r_in, r_out};
-      out.on += fluid::radial_gap_in_field(g, field, fluid, flow).integrated.dp;
-      out.off += fluid::radial_gap_in_field(g, zero, fluid, flow).integrated.dp;
-      out.min_gap = std::min(out.min_gap, h);
-    }
-  }
-  out.b_average = b_count > 0 ? b_sum / b_count : 0.0;
-  return out;
-}
-
 }  // namespace
 
 DesignEvaluator::DesignEvaluator(magnetostatics::Case base, OptimiseSpec spec)
     : base_(std::move(base)), spec_(std::move(spec)) {
   const std::string where = base_.source.string();
   for (const auto& v : spec_.variables) keys_.push_back(v.key);
-  if (base_.fluid.empty()) throw InputError(where + ": the case names no MR fluid ([case] fluid)");
-  fluid_ =
-      fluid::read_fluid(magnetostatics::MaterialLibrary::standard().get(base_.fluid, where).file);
+  for (std::size_t i = 0; i < keys_.size(); ++i)
+    if (keys_[i] == kWireGaugeKey) gauge_index_ = static_cast<int>(i);
+  fluid_ = fluid::case_fluid(base_);
   if (base_.problem.circuits.empty()) throw InputError(where + ": the case has no coil circuit");
-  const auto valve = fluid::read_valve_options(base_);
-  wire_ = valve.wire;
-  temperature_ = valve.temperature;
-  if (!wire_.empty()) wire_diameter_ = fluid::wire_diameter(wire_);
+  const std::string wire = fluid::read_valve_options(base_).wire;
   static const std::vector<std::string> needs_wire = {
       "resistance",  "time_constant",    "power",    "current_density",
       "copper_fill", "temperature_rise", "rise_time"};
@@ -128,7 +71,7 @@ DesignEvaluator::DesignEvaluator(magnetostatics::Case base, OptimiseSpec spec)
     return std::find(used.begin(), used.end(), q) != used.end();
   };
   for (const auto& q : needs_wire)
-    if (wire_.empty() && uses(q))
+    if (wire.empty() && uses(q))
       throw InputError(where + ": \"" + q +
                        "\" needs the coil wire: set [valve] wire = \"AWG 24\" (or \"0.5 mm\")");
   need_rise_time_ = uses("rise_time");
@@ -139,7 +82,15 @@ DesignEvaluator::DesignEvaluator(magnetostatics::Case base, OptimiseSpec spec)
 }
 
 magnetostatics::Case DesignEvaluator::case_at(const std::vector<double>& x) const {
-  return case_from_table(with_values(base_.table, keys_, x), base_.source.string());
+  if (gauge_index_ < 0)
+    return case_from_table(with_values(base_.table, keys_, x), base_.source.string());
+  std::vector<std::string> keys = keys_;
+  std::vector<double> values = x;
+  keys.erase(keys.begin() + gauge_index_);
+  values.erase(values.begin() + gauge_index_);
+  return case_from_table(with_text(with_values(base_.table, keys, values), "geometry.wire",
+                                   wire_text(x[gauge_index_])),
+                         base_.source.string());
 }
 
 mesh::Mesh DesignEvaluator::mesh_for(const magnetostatics::Problem& closed,
@@ -163,6 +114,23 @@ Quantities DesignEvaluator::evaluate(const std::vector<double>& x) {
   const auto breakpoints = geometry_breakpoints(c.problem.geometry);
   magnetostatics::Problem closed = magnetostatics::close_domain(c.problem);
   mesh::Mesh mesh = mesh_for(closed, breakpoints);
+  if (gauge_index_ >= 0 && !exact_winding_) {
+    // Continuous relaxation: turns = fill A_window / (pi d(n)^2 / 4) without the case's floor,
+    // so the turns (and everything after) are smooth in the gauge and the window.
+    const double fill = c.table["geometry"]["fill_factor"].value_or(0.0);
+    const double d = awg_diameter_relaxed(x[gauge_index_]);
+    std::vector<double> window(closed.regions.size(), 0.0);
+    for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
+      const auto& t = mesh.triangles[e];
+      const mesh::Point a = mesh.nodes[t[0]], b = mesh.nodes[t[1]], p = mesh.nodes[t[2]];
+      window[mesh.region[e]] +=
+          0.5 * std::abs((b.r - a.r) * (p.z - a.z) - (p.r - a.r) * (b.z - a.z));
+    }
+    for (std::size_t k = 0; k < closed.regions.size(); ++k)
+      if (closed.regions[k].circuit >= 0 && closed.regions[k].turns != 0.0)
+        closed.regions[k].turns = std::copysign(
+            fill * window[k] / (0.25 * std::numbers::pi * d * d), closed.regions[k].turns);
+  }
   magnetostatics::SolveOptions options;
   options.incremental_inductance = false;
   auto solver =
@@ -177,39 +145,33 @@ Quantities DesignEvaluator::evaluate(const std::vector<double>& x) {
 
   Quantities q;
   const auto valve = fluid::read_valve_options(c);
-  const auto drops = gap_drops(*solver, solution, results, fluid_, spec_.flow, valve.inlet_radius);
-  q["dp_on"] = drops.on;
-  q["dp_off"] = drops.off;
-  q["dynamic_range"] = drops.on / drops.off;
-  q["b_gap"] = drops.b_average;
-  q["min_gap"] = drops.min_gap;
-  const double inductance = results.circuits.empty() ? 0.0 : results.circuits[0].inductance;
+  const fluid::SolvedValve solved(*solver, solution, results, fluid_, valve);
+  const auto on = solved.point(spec_.flow);
+  q["dp_on"] = on.dp_total;
+  q["dp_off"] = solved.zero_field_point(spec_.flow).dp_total;
+  q["dynamic_range"] = q["dp_on"] / q["dp_off"];
+  q["b_gap"] = solved.b_average();
+  q["min_gap"] = solved.min_clearance();
+  const double inductance = on.inductance;
   q["inductance"] = inductance;
 
-  // Peak |B| over the elements of nonlinear (steel) materials.
+  // Peak |B| over the elements of nonlinear (steel) materials; the winding's outer surface.
   const auto& m = solver->mesh();
   const auto& regions = solver->problem().regions;
   const auto& materials = solver->problem().materials;
-  double peak = 0.0, area = 0.0, moment = 0.0, turns = 0.0;
-  double coil_r_max = 0.0, coil_z_min = INFINITY, coil_z_max = -INFINITY;
+  double peak = 0.0, coil_r_max = 0.0, coil_z_min = INFINITY, coil_z_max = -INFINITY;
   for (std::size_t e = 0; e < m.triangles.size(); ++e) {
     const auto& region = regions[m.region[e]];
     if (region.material >= 0 && !materials[region.material].bh.empty())
       peak = std::max(peak, results.element_b[e]);
     if (region.circuit != 0) continue;
-    const auto& t = m.triangles[e];
-    const mesh::Point a = m.nodes[t[0]], b = m.nodes[t[1]], d = m.nodes[t[2]];
-    const double triangle = 0.5 * std::abs((b.r - a.r) * (d.z - a.z) - (d.r - a.r) * (b.z - a.z));
-    area += triangle;
-    moment += triangle * (a.r + b.r + d.r) / 3.0;
-    for (const auto& p : {a, b, d}) {
+    for (int k = 0; k < 3; ++k) {
+      const mesh::Point p = m.nodes[m.triangles[e][k]];
       coil_r_max = std::max(coil_r_max, p.r);
       coil_z_min = std::min(coil_z_min, p.z);
       coil_z_max = std::max(coil_z_max, p.z);
     }
   }
-  for (const auto& region : regions)
-    if (region.circuit == 0) turns += std::abs(region.turns);
   q["peak_steel_b"] = peak;
 
   double r_max = 0.0, z_min = INFINITY, z_max = -INFINITY;
@@ -229,13 +191,8 @@ Quantities DesignEvaluator::evaluate(const std::vector<double>& x) {
     q["min_wall"] = thinnest;
   }
 
-  if (wire_diameter_ > 0.0 && area > 0.0 && turns > 0.0) {
-    fluid::CoilSpec coil;
-    coil.turns = turns;
-    coil.wire_diameter = wire_diameter_;
-    coil.window_area = area;
-    coil.mean_turn_length = 2.0 * std::numbers::pi * moment / area;
-    coil.temperature = temperature_;
+  const fluid::CoilSpec coil = fluid::coil_spec(*solver, valve);
+  if (coil.wire_diameter > 0.0) {
     const auto p = fluid::coil_properties(coil, spec_.current, inductance);
     q["resistance"] = p.resistance;
     q["time_constant"] = p.time_constant;

@@ -1,8 +1,9 @@
 #pragma once
 // One design -> its quantities: the case with the design values, the FE field on the morphed
 // mesh of the first design (fixed topology; re-meshed only when a morph would invert elements),
-// gap pressure drops from the FE gap field, coil resistance, L/R, power, peak steel |B| and the
-// envelope.
+// gap pressure drops from the FE gap field, coil resistance, L/R, power, peak steel |B|, the
+// envelope, walls, temperature rise and rise time. A wire_gauge variable is relaxed
+// continuously (optimise_wire_gauge.hpp).
 
 #include <map>
 #include <memory>
@@ -39,6 +40,9 @@ class DesignEvaluator {
   /// Makes the next evaluate() generate a fresh mesh (the one `rheomag solve` would use for that
   /// design) and use it as the reference of later morphs.
   void remesh_next() { have_mesh_ = false; }
+  /// With a wire_gauge variable: true evaluates the winding as the written case has it (the
+  /// case's whole turns from wire and fill_factor), false (default) the continuous relaxation.
+  void exact_winding(bool exact) { exact_winding_ = exact; }
   /// The field of the last evaluate() call.
   const EvaluatedField& last_field() const { return last_; }
   /// FE solves done so far.
@@ -55,9 +59,8 @@ class DesignEvaluator {
   OptimiseSpec spec_;
   std::vector<std::string> keys_;
   fluid::Fluid fluid_;
-  std::string wire_;
-  double wire_diameter_ = 0.0;
-  double temperature_ = 20.0;
+  int gauge_index_ = -1;         ///< index of the wire_gauge variable (-1: none)
+  bool exact_winding_ = false;   ///< whole turns as the case derives them (no relaxation)
   bool need_rise_time_ = false;  ///< rise_time is used: lambda(i) samples per design
   mesh::Mesh reference_mesh_;
   Breakpoints reference_breakpoints_;

@@ -84,7 +84,6 @@ OptimiseResult run_optimisation(const magnetostatics::Case& c, const OptimiseOpt
   // previous combination's), its counts rounded. The best combination is kept.
   int solves_done = 0, meshes_done = 0;
   std::unique_ptr<DesignEvaluator> best_evaluator;
-  magnetostatics::Case best_case = c;
   DesignReport best_continuous;
   std::vector<double> start = x0;
   for (const auto& choice : combinations(spec.choices)) {
@@ -122,7 +121,6 @@ OptimiseResult run_optimisation(const magnetostatics::Case& c, const OptimiseOpt
         meshes_done += best_evaluator->meshes();
       }
       best_evaluator = std::move(e);
-      best_case = cc;
       best_continuous = continuous.report;
     } else {
       solves_done += e->fe_solves();
@@ -145,8 +143,6 @@ OptimiseResult run_optimisation(const magnetostatics::Case& c, const OptimiseOpt
   }
 
   std::filesystem::create_directories(options.out_dir);
-  std::vector<std::string> keys;
-  for (const auto& v : spec.variables) keys.push_back(v.key);
   const std::string stem = c.name.empty() ? c.source.stem().string() : c.name;
   result.case_file = options.out_dir / (stem + "_optimal.toml");
   result.history_file = options.out_dir / (stem + "_history.csv");
@@ -154,9 +150,8 @@ OptimiseResult run_optimisation(const magnetostatics::Case& c, const OptimiseOpt
   std::string header = "# Optimal design of " + c.source.filename().string() +
                        " by rheomag optimise (" + result.status + ")\n";
   if (!chosen.choice.empty()) header += "# Chosen: " + choice_text(chosen.choice) + "\n";
-  write_file_atomically(
-      result.case_file,
-      header + toml_text(with_values(best_case.table, keys, result.optimal.x)) + "\n");
+  write_file_atomically(result.case_file,
+                        header + toml_text(best_evaluator->case_at(result.optimal.x).table) + "\n");
   const auto& field = best_evaluator->last_field();
   magnetostatics::write_results_vtu(result.vtu_file.string(), *field.solver, field.solution,
                                     field.results);

@@ -7,6 +7,7 @@
 #include "magnetostatics/toml_section.hpp"
 #include "mesh/error.hpp"
 #include "optimise/optimise_case_edit.hpp"
+#include "optimise/optimise_wire_gauge.hpp"
 
 namespace rheomag::optimise {
 
@@ -195,7 +196,9 @@ OptimiseSpec read_optimise_spec(const magnetostatics::Case& c) {
     variable.key = v.required_string("key");
     if (variable.key.rfind("optimise.", 0) == 0 || variable.key.rfind("optimise", 0) == 0)
       v.fail("key", "a design variable cannot be part of [optimise]");
-    variable.initial = numeric_case_value(c.table, variable.key, v.where("key"));
+    const bool gauge = variable.key == kWireGaugeKey;
+    variable.initial = gauge ? wire_gauge_start(c.table, v.where("key"))
+                             : numeric_case_value(c.table, variable.key, v.where("key"));
     const auto lower = v.number("lower"), upper = v.number("upper");
     if (!lower || !upper) v.fail(lower ? "upper" : "lower", "required (same unit as the key)");
     variable.lower = *lower;
@@ -206,6 +209,8 @@ OptimiseSpec read_optimise_spec(const magnetostatics::Case& c) {
     if (variable.key.rfind("geometry.", 0) == 0 && !(variable.lower > 0.0))
       v.fail("lower",
              "dimensions and turns must stay > 0; got lower = " + std::to_string(variable.lower));
+    if (gauge && (variable.lower < 0.0 || variable.upper > 40.0))
+      v.fail("lower", "wire_gauge bounds must lie in AWG 0..40 (8.3 mm .. 0.080 mm)");
     if (variable.initial < variable.lower || variable.initial > variable.upper)
       v.fail("key", "initial value " + std::to_string(variable.initial) +
                         " is outside the bounds [" + std::to_string(variable.lower) + ", " +
@@ -214,6 +219,13 @@ OptimiseSpec read_optimise_spec(const magnetostatics::Case& c) {
       if (other.key == variable.key) v.fail("key", "\"" + variable.key + "\" is listed twice");
     spec.variables.push_back(variable);
   }
+  for (const auto& v : spec.variables)
+    if (v.key == "geometry.turns")
+      for (const auto& w : spec.variables)
+        if (w.key == kWireGaugeKey)
+          section->fail("variable",
+                        "geometry.turns and wire_gauge together: with wire_gauge the "
+                        "turns follow from the window, the wire and fill_factor");
   for (const auto& k : section->table_array("constraint")) {
     k.allow_only({"quantity", "min", "max"});
     Constraint constraint;
