@@ -1,5 +1,6 @@
-// rheomag valve CASE: steady-state pressure drop of a case's valve (its magnetised gaps in series,
-// field from the FE solve) at a list of currents and flow rates, plus the coil. Logic in
+// rheomag valve CASE: steady-state pressure drop of a case's valve (its magnetised gaps, listed
+// passages and minor losses in series, field from the FE solve) at a list of currents and flow
+// rates, plus the coil. Logic in
 // fluid/valve_chain.hpp.
 
 #include <CLI/CLI.hpp>
@@ -36,7 +37,8 @@ nlohmann::json segment_json(const rheomag::fluid::SegmentResult& s) {
           {"dp_viscous", d.dp_viscous},
           {"dp_average_b", s.drop.average_b.dp},
           {"plug_fraction", d.plug_fraction},
-          {"bingham_number", d.bingham_number}};
+          {"bingham_number", d.bingham_number},
+          {"reynolds_number", s.kind == "passage" ? nlohmann::json(s.reynolds_number) : nullptr}};
 }
 
 void run_valve(const ValveCli& o) {
@@ -134,8 +136,9 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
       "Steady-state pressure drop of a case's MR valve: the FE field at each current, the\n"
       "exact Bingham law integrated along every magnetised gap (in series) with the local\n"
       "tau_y(B(s)), for each flow rate; also the one-average-B shortcut and the coil (turns,\n"
-      "R at temperature, L from the FE, L/R, I^2 R). SI units. Only the magnetised gaps of the\n"
-      "case geometry are counted (no other passages). See docs/fluid.md.");
+      "R at temperature, L from the FE, L/R, I^2 R). SI units. Unmagnetised passages and minor\n"
+      "losses count when the case lists them ([[valve.passage]], [[valve.loss]]). See\n"
+      "docs/fluid.md.");
   cmd->add_option("case", o->case_file, "Case file (.toml)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--current", o->currents,
                   "Coil currents [A], comma-separated "

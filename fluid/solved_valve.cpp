@@ -7,9 +7,11 @@
 #include "fluid/solved_valve.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
+#include "fluid/newtonian.hpp"
 #include "magnetostatics/material_library.hpp"
 #include "mesh/error.hpp"
 
@@ -39,6 +41,58 @@ GapFieldSamples sample_gap(const magnetostatics::MagnetostaticSolver& solver,
   if (field.position.size() < 2)
     throw InputError("gap \"" + gap.name + "\": fewer than 2 mid-line field samples found");
   return field;
+}
+
+/// Bounding box (r_min, r_max, z_min, z_max) of the mesh elements of the region named `name`.
+std::array<double, 4> region_box(const magnetostatics::MagnetostaticSolver& solver,
+                                 const std::string& name, const std::string& passage) {
+  const auto& regions = solver.problem().geometry.regions;
+  int index = -1;
+  for (std::size_t i = 0; i < regions.size(); ++i)
+    if (regions[i].name == name) index = static_cast<int>(i);
+  if (index < 0)
+    throw InputError("[[valve.passage]] \"" + passage + "\": the case has no region \"" + name +
+                     "\"");
+  std::array<double, 4> box{INFINITY, -INFINITY, INFINITY, -INFINITY};
+  const auto& mesh = solver.mesh();
+  for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
+    if (mesh.region[e] != index) continue;
+    for (int node : mesh.triangles[e]) {
+      const mesh::Point& p = mesh.nodes[node];
+      box = {std::min(box[0], p.r), std::max(box[1], p.r), std::min(box[2], p.z),
+             std::max(box[3], p.z)};
+    }
+  }
+  if (!(box[1] > box[0]))
+    throw InputError("[[valve.passage]] \"" + passage + "\": region \"" + name + "\" is empty");
+  return box;
+}
+
+/// The passage with its dimensions taken from its region (if it names one), validated.
+Passage resolve_passage(const magnetostatics::MagnetostaticSolver& solver, Passage p) {
+  if (!p.region.empty()) {
+    const auto box = region_box(solver, p.region, p.name);
+    const double r_min = box[0] <= 1e-9 * box[1] ? 0.0 : box[0];
+    switch (p.shape) {
+      case PassageShape::pipe:
+        if (r_min > 0.0)
+          throw InputError("[[valve.passage]] \"" + p.name + "\": region \"" + p.region +
+                           "\" does not touch the axis; use shape = \"annulus\"");
+        p.diameter = 2.0 * box[1];
+        p.length = box[3] - box[2];
+        break;
+      case PassageShape::annulus:
+      case PassageShape::radial:
+        p.inner_radius = r_min;
+        p.outer_radius = box[1];
+        (p.shape == PassageShape::annulus ? p.length : p.gap) = box[3] - box[2];
+        break;
+      case PassageShape::slit:
+        break;  // rejected by read_passages
+    }
+  }
+  validate(p);
+  return p;
 }
 
 }  // namespace
@@ -120,6 +174,29 @@ SolvedValve::SolvedValve(const magnetostatics::MagnetostaticSolver& solver,
     gaps_.push_back(std::move(gap));
   }
   b_average_ = b_sum / static_cast<double>(b_count);
+  for (const Passage& passage : options_.passages)
+    passages_.push_back(resolve_passage(solver, passage));
+  for (const MinorLoss& loss : options_.losses) losses_.push_back({loss, section_area(loss)});
+}
+
+double SolvedValve::section_area(const MinorLoss& loss) const {
+  if (loss.section.empty()) return loss.area;
+  const std::string what = "[[valve.loss]] \"" + loss.name + "\": section \"" + loss.section + "\"";
+  for (const Passage& p : passages_)
+    if (p.name == loss.section) {
+      if (p.shape == PassageShape::radial && !(loss.radius > 0.0))
+        throw InputError(what + " is radial: give radius (m) where the velocity is taken");
+      return passage_area(p, loss.radius);
+    }
+  for (const Gap& gap : gaps_) {
+    if (gap.name != loss.section) continue;
+    if (gap.annular) return 2.0 * std::numbers::pi * gap.annulus.radius * gap.annulus.gap;
+    if (!(loss.radius >= gap.radial.r_in && loss.radius <= gap.radial.r_out))
+      throw InputError(what + " is a radial gap: give radius (m) within " +
+                       std::to_string(gap.radial.r_in) + ".." + std::to_string(gap.radial.r_out));
+    return 2.0 * std::numbers::pi * loss.radius * gap.radial.gap;
+  }
+  throw InputError(what + " is neither a gap nor a passage of the valve");
 }
 
 ValvePoint SolvedValve::point(double flow) const {
@@ -157,6 +234,31 @@ ValvePoint SolvedValve::evaluate(double flow, bool zero_field) const {
     point.dp_viscous += segment.drop.integrated.dp_viscous;
     point.dp_total_average_b += segment.drop.average_b.dp;
     point.segments.push_back(std::move(segment));
+  }
+  // Field-independent parts: Newtonian passages and minor losses (in dp_viscous, which is the
+  // tau_y = 0 drop of the whole path).
+  auto add = [&point](SegmentResult segment, double dp) {
+    segment.drop.integrated.dp = segment.drop.integrated.dp_viscous = dp;
+    segment.drop.average_b = segment.drop.integrated;
+    point.dp_total += dp;
+    point.dp_viscous += dp;
+    point.dp_total_average_b += dp;
+    point.segments.push_back(std::move(segment));
+  };
+  for (const Passage& passage : passages_) {
+    SegmentResult segment;
+    segment.name = passage.name;
+    segment.kind = "passage";
+    segment.reynolds_number =
+        reynolds_number(fluid_.density, fluid_.viscosity, flow,
+                        passage_area(passage, passage.inner_radius), hydraulic_diameter(passage));
+    add(std::move(segment), passage_dp(passage, fluid_.viscosity, flow));
+  }
+  for (const Loss& loss : losses_) {
+    SegmentResult segment;
+    segment.name = loss.loss.name;
+    segment.kind = "loss";
+    add(std::move(segment), minor_loss_dp(loss.loss.k, fluid_.density, flow, loss.area));
   }
   point.dp_yield = point.dp_total - point.dp_viscous;
   if (std::abs(point.dp_yield) <= 1e-12 * point.dp_total) point.dp_yield = 0.0;  // rounding

@@ -25,12 +25,14 @@ Fluid case_fluid(const magnetostatics::Case& c);
 CoilSpec coil_spec(const magnetostatics::MagnetostaticSolver& solver, const ValveOptions& options);
 
 /// The flow path of a solved design: every magnetised gap (RegionSeed::gap) in series with the
-/// normal flux density |B_n| at 101 mid-line points. Copies what it needs: the solver, solution
-/// and results may be destroyed afterwards.
+/// normal flux density |B_n| at 101 mid-line points, then the unmagnetised passages and minor
+/// losses of ValveOptions (dimensions of region passages from the mesh). Copies what it needs:
+/// the solver, solution and results may be destroyed afterwards.
 class SolvedValve {
  public:
   /// Samples every gap of `results` in `solution`; InputError if there is no gap, a gap has
-  /// fewer than 2 samples or a radial gap starts on the axis without [valve] inlet_radius.
+  /// fewer than 2 samples, a radial gap starts on the axis without [valve] inlet_radius, or a
+  /// passage's region or a loss's section does not exist or does not fit.
   SolvedValve(const magnetostatics::MagnetostaticSolver& solver,
               const magnetostatics::Solution& solution, const magnetostatics::Results& results,
               const Fluid& fluid, const ValveOptions& options);
@@ -52,8 +54,15 @@ class SolvedValve {
     RadialGeometry radial;
     GapFieldSamples field;
   };
+  struct Loss {
+    MinorLoss loss;
+    double area = 0.0;  ///< of the named section [m^2]
+  };
   ValvePoint evaluate(double flow, bool zero_field) const;
+  double section_area(const MinorLoss& loss) const;
   std::vector<Gap> gaps_;
+  std::vector<Passage> passages_;  ///< dimensions resolved
+  std::vector<Loss> losses_;
   Fluid fluid_;
   ValveOptions options_;
   double current_ = 0.0, flux_linkage_ = 0.0, inductance_ = 0.0, incremental_ = 0.0;

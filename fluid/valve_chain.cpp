@@ -26,7 +26,9 @@ ValveOptions read_valve_options(const magnetostatics::Case& c) {
   if (auto geometry = top.table("geometry")) options.wire = geometry->string("wire").value_or("");
   auto valve = top.table("valve");
   if (!valve) return options;
-  valve->allow_only({"wire", "temperature", "inlet_radius", "flow"});
+  valve->allow_only({"wire", "temperature", "inlet_radius", "flow", "passage", "loss"});
+  options.passages = read_passages(*valve);
+  options.losses = read_losses(*valve);
   if (auto wire = valve->string("wire")) {
     if (!options.wire.empty() && wire_diameter(*wire) != wire_diameter(options.wire))
       valve->fail("wire", "\"" + *wire + "\" differs from [geometry] wire = \"" + options.wire +

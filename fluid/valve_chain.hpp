@@ -9,6 +9,7 @@
 #include "fluid/coil.hpp"
 #include "fluid/field_coupling.hpp"
 #include "fluid/fluid.hpp"
+#include "fluid/passage.hpp"
 #include "magnetostatics/case_file.hpp"
 #include "magnetostatics/solve_problem.hpp"
 
@@ -16,10 +17,12 @@ namespace rheomag::fluid {
 
 /// Options of the [valve] table of a case file (docs/fluid.md); all optional except where noted.
 struct ValveOptions {
-  std::string wire;           ///< wire gauge, e.g. "AWG 24" (needed for the coil resistance)
-  double temperature = 20.0;  ///< coil temperature [deg C]
-  double inlet_radius = 0.0;  ///< radial gaps starting on the axis start here instead [m]
-  std::vector<double> flows;  ///< default flow rates [m^3/s]
+  std::string wire;               ///< wire gauge, e.g. "AWG 24" (needed for the coil resistance)
+  double temperature = 20.0;      ///< coil temperature [deg C]
+  double inlet_radius = 0.0;      ///< radial gaps starting on the axis start here instead [m]
+  std::vector<double> flows;      ///< default flow rates [m^3/s]
+  std::vector<Passage> passages;  ///< unmagnetised passages in series ([[valve.passage]])
+  std::vector<MinorLoss> losses;  ///< minor losses in series ([[valve.loss]])
 };
 
 /// Reads the [valve] table of a case (absent: defaults). InputError names unknown keys.
@@ -28,9 +31,10 @@ ValveOptions read_valve_options(const magnetostatics::Case& c);
 /// One gap segment's result at one operating point.
 struct SegmentResult {
   std::string name;
-  std::string kind;        ///< "annular" or "radial"
-  double b_average = 0.0;  ///< mean |B_n| along the mid-line [T]
-  FieldCoupledDrop drop;   ///< field-integrated and one-average-B pressure drops
+  std::string kind;              ///< "annular", "radial" (gaps), "passage" or "loss"
+  double b_average = 0.0;        ///< mean |B_n| along the mid-line [T] (0 for passages and losses)
+  FieldCoupledDrop drop;         ///< field-integrated and one-average-B pressure drops
+  double reynolds_number = 0.0;  ///< passages: rho V D_h / mu (laminar formulas: < ~2000)
 };
 
 /// One operating point of the valve.
