@@ -29,21 +29,71 @@ void b_operator(Symmetry symmetry, int order, const std::array<mesh::Point, 3>& 
   }
 }
 
+namespace {
+
+/// Shape functions and their reference derivatives at the quadrature points of one order,
+/// evaluated once (the same for every triangle).
+struct ReferenceElement {
+  int nodes = 0, points = 0;
+  double xi[kMaxQuadraturePoints], eta[kMaxQuadraturePoints], weight[kMaxQuadraturePoints];
+  double n[kMaxQuadraturePoints][kMaxElementNodes];
+  double d_xi[kMaxQuadraturePoints][kMaxElementNodes];
+  double d_eta[kMaxQuadraturePoints][kMaxElementNodes];
+};
+
+ReferenceElement make_reference(int order) {
+  ReferenceElement ref;
+  const auto& rule = triangle_quadrature(order);
+  ref.nodes = order == 1 ? 3 : 6;
+  ref.points = static_cast<int>(rule.size());
+  for (int p = 0; p < ref.points; ++p) {
+    ref.xi[p] = rule[p].xi, ref.eta[p] = rule[p].eta, ref.weight[p] = rule[p].weight;
+    lagrange_basis(order, rule[p].xi, rule[p].eta, ref.n[p], ref.d_xi[p], ref.d_eta[p]);
+  }
+  return ref;
+}
+
+const ReferenceElement& reference_element(int order) {
+  static const ReferenceElement p1 = make_reference(1), p2 = make_reference(2);
+  return order == 1 ? p1 : p2;
+}
+
+}  // namespace
+
 void element_quadrature(Symmetry symmetry, double depth, int order,
                         const std::array<mesh::Point, 3>& v, ElementQuadrature& q) {
-  const auto& rule = triangle_quadrature(order);
-  q.nodes = order == 1 ? 3 : 6;
-  q.points = static_cast<int>(rule.size());
-  const double area =
-      0.5 * std::abs((v[1].r - v[0].r) * (v[2].z - v[0].z) - (v[2].r - v[0].r) * (v[1].z - v[0].z));
-  for (int p = 0; p < q.points; ++p) {
-    const double xi = rule[p].xi, eta = rule[p].eta;
-    b_operator(symmetry, order, v, xi, eta, q.n[p].data(), q.g_r[p].data(), q.g_z[p].data());
-    q.r[p] = v[0].r + xi * (v[1].r - v[0].r) + eta * (v[2].r - v[0].r);
-    q.z[p] = v[0].z + xi * (v[1].z - v[0].z) + eta * (v[2].z - v[0].z);
-    q.area_weight[p] = area * rule[p].weight;
-    q.weight[p] = q.area_weight[p] *
-                  (symmetry == Symmetry::axisymmetric ? 2.0 * std::numbers::pi * q.r[p] : depth);
+  // Same arithmetic as b_operator, with the reference shape functions tabulated once.
+  const ReferenceElement& ref = reference_element(order);
+  q.nodes = ref.nodes;
+  q.points = ref.points;
+  const double r10 = v[1].r - v[0].r, r20 = v[2].r - v[0].r;
+  const double z10 = v[1].z - v[0].z, z20 = v[2].z - v[0].z;
+  const double inv_det = 1.0 / (r10 * z20 - r20 * z10);
+  const double area = 0.5 * std::abs(r10 * z20 - r20 * z10);
+  const bool axisymmetric = symmetry == Symmetry::axisymmetric;
+  for (int p = 0; p < ref.points; ++p) {
+    const double xi = ref.xi[p], eta = ref.eta[p];
+    const double r = v[0].r + xi * r10 + eta * r20;
+    const double inv_r = r > 0.0 ? 1.0 / r : 0.0;
+    double* n = q.n[p].data();
+    double* g_r = q.g_r[p].data();
+    double* g_z = q.g_z[p].data();
+    for (int i = 0; i < ref.nodes; ++i) {
+      n[i] = ref.n[p][i];
+      const double dn_dr = (z20 * ref.d_xi[p][i] - z10 * ref.d_eta[p][i]) * inv_det;
+      const double dn_dz = (-r20 * ref.d_xi[p][i] + r10 * ref.d_eta[p][i]) * inv_det;
+      if (axisymmetric) {
+        g_r[i] = -dn_dz;
+        g_z[i] = r > 0.0 ? dn_dr + n[i] * inv_r : 2.0 * dn_dr;
+      } else {
+        g_r[i] = dn_dz;
+        g_z[i] = -dn_dr;
+      }
+    }
+    q.r[p] = r;
+    q.z[p] = v[0].z + xi * z10 + eta * z20;
+    q.area_weight[p] = area * ref.weight[p];
+    q.weight[p] = q.area_weight[p] * (axisymmetric ? 2.0 * std::numbers::pi * r : depth);
   }
 }
 
@@ -56,35 +106,52 @@ std::array<double, 2> element_b(const ElementQuadrature& q, int p, const double*
   return {br, bz};
 }
 
-void element_residual_tangent(const ElementQuadrature& q, const double* a, const Reluctivity& law,
-                              double* residual, double* tangent) {
-  const int m = q.nodes;
-  for (int i = 0; i < m; ++i) residual[i] = 0.0;
-  if (tangent) {
-    for (int i = 0; i < m * m; ++i) tangent[i] = 0.0;
-  }
+namespace {
+
+/// element_residual_tangent for a fixed number of nodes M (loops unrolled by the compiler).
+template <int M>
+void residual_tangent(const ElementQuadrature& q, const double* a, const Reluctivity& law,
+                      double* residual, double* tangent) {
+  double res[M] = {}, k[M * M] = {};
   for (int p = 0; p < q.points; ++p) {
-    const auto [br, bz] = element_b(q, p, a);
+    const double* g_r = q.g_r[p].data();
+    const double* g_z = q.g_z[p].data();
+    double br = 0.0, bz = 0.0;
+    for (int i = 0; i < M; ++i) {
+      br += a[i] * g_r[i];
+      bz += a[i] * g_z[i];
+    }
     const double b2 = br * br + bz * bz;
     const double nu = law.nu(b2), w = q.weight[p];
-    double b_dot_g[kMaxElementNodes];
-    for (int i = 0; i < m; ++i) {
-      b_dot_g[i] = br * q.g_r[p][i] + bz * q.g_z[p][i];
-      residual[i] += w * nu * b_dot_g[i];
+    double b_dot_g[M];
+    for (int i = 0; i < M; ++i) {
+      b_dot_g[i] = br * g_r[i] + bz * g_z[i];
+      res[i] += w * nu * b_dot_g[i];
     }
     if (!tangent) continue;
     const double rank_one = 2.0 * law.dnu_db2(b2);
-    for (int i = 0; i < m; ++i) {
+    for (int i = 0; i < M; ++i) {
       for (int j = 0; j <= i; ++j) {  // lower triangle; mirrored below (K is symmetric)
-        tangent[i * m + j] += w * (nu * (q.g_r[p][i] * q.g_r[p][j] + q.g_z[p][i] * q.g_z[p][j]) +
-                                   rank_one * b_dot_g[i] * b_dot_g[j]);
+        k[i * M + j] +=
+            w * (nu * (g_r[i] * g_r[j] + g_z[i] * g_z[j]) + rank_one * b_dot_g[i] * b_dot_g[j]);
       }
     }
   }
-  if (tangent) {
-    for (int i = 0; i < m; ++i) {
-      for (int j = i + 1; j < m; ++j) tangent[i * m + j] = tangent[j * m + i];
-    }
+  for (int i = 0; i < M; ++i) residual[i] = res[i];
+  if (!tangent) return;
+  for (int i = 0; i < M; ++i) {
+    for (int j = 0; j <= i; ++j) tangent[i * M + j] = tangent[j * M + i] = k[i * M + j];
+  }
+}
+
+}  // namespace
+
+void element_residual_tangent(const ElementQuadrature& q, const double* a, const Reluctivity& law,
+                              double* residual, double* tangent) {
+  if (q.nodes == 6) {
+    residual_tangent<6>(q, a, law, residual, tangent);
+  } else {
+    residual_tangent<3>(q, a, law, residual, tangent);
   }
 }
 
