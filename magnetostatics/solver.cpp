@@ -17,9 +17,18 @@ class MagnetostaticSolver::System : public NonlinearSystem {
       : solver_(solver), source_(std::move(source)) {}
 
   double residual(const Eigen::VectorXd& x, Eigen::VectorXd& r) override {
+    if (x.size() == remembered_x_.size() && x == remembered_x_) {
+      r = remembered_r_;  // Newton's first residual is often the one solve_with evaluated
+      return r.norm();
+    }
     solver_.assembler_->assemble(solver_.free_to_nodes(x), r, nullptr);
     r -= source_;
     return r.norm();
+  }
+  /// Keeps R(x) for a later residual call at the same x (one assembly less).
+  void remember(const Eigen::VectorXd& x, const Eigen::VectorXd& r) {
+    remembered_x_ = x;
+    remembered_r_ = r;
   }
   void factorize_jacobian(const Eigen::VectorXd& x) override {
     solver_.prepare_jacobian(solver_.free_to_nodes(x));
@@ -31,6 +40,7 @@ class MagnetostaticSolver::System : public NonlinearSystem {
  private:
   MagnetostaticSolver& solver_;
   Eigen::VectorXd source_;  // free-dof source at the solve's currents
+  Eigen::VectorXd remembered_x_, remembered_r_;
 };
 
 MagnetostaticSolver::MagnetostaticSolver(Problem problem, mesh::Mesh mesh, SolveOptions options)
@@ -213,6 +223,8 @@ Solution MagnetostaticSolver::solve_with(const std::vector<double>& currents,
   const double scale = system.residual(x, r);
   if (initial_guess) {
     for (int d = 0; d < n; ++d) x[d] = (*initial_guess)[dofs_.node_of_dof[d]];
+  } else {
+    system.remember(x, r);
   }
 
   Solution solution;
