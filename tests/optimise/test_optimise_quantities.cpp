@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -50,9 +51,9 @@ TEST(OptimiseQuantities, TemperatureRiseIsPowerOverSurfaceConductance) {
 }
 
 // 90 % rise time after a voltage step V on R and lambda(i). Reference: for a linear inductor
-// t90 = ln(10) L / R. At I_f = V / R = 0.05 A the steel is far from saturation, so with the
-// secant L at 0.05 A the rise time agrees within 3 % (the residual is the steel's initial
-// permeability, lower than at moderate fields). At I_f = 3 A the core saturates (L(i) falls),
+// t90 = ln(10) L / R. At I_f = V / R = 0.05 A the steel is on the linear start of its B-H
+// table, so with the secant L at 0.05 A the rise time agrees within 0.5 % (measured: to 5
+// digits). At I_f = 3 A the core saturates (L(i) falls),
 // so the rise time must be shorter than ln(10) L(0.05 A) / R.
 TEST(OptimiseQuantities, RiseTimeMatchesTheLinearRlLimitAndShortensWithSaturation) {
   const auto probe = make_case(optimise_table("current = 0.05\n"));
@@ -69,8 +70,11 @@ TEST(OptimiseQuantities, RiseTimeMatchesTheLinearRlLimitAndShortensWithSaturatio
     return q.at("rise_time");
   };
   const double linear = std::log(10.0) * l / r;
-  EXPECT_NEAR(rise(0.05), linear, 0.03 * linear);
-  EXPECT_LT(rise(3.0), linear);
+  const double small = rise(0.05), saturated = rise(3.0);
+  EXPECT_NEAR(small, linear, 0.005 * linear);
+  EXPECT_LT(saturated, linear);
+  std::printf("rise time: ln(10) L/R %.5g s; 0.05 A %.5g s; 3 A %.5g s\n", linear, small,
+              saturated);
 }
 
 using optimise_fixture::input_error;
