@@ -104,6 +104,18 @@ TEST(OptimiseChoices, WeightedSumAndParetoAreReadAndChecked) {
             std::string::npos);
 }
 
+// The shipped examples read: [optimise] spec and evaluator set up (no FE solve), the variables'
+// starts are the cases' own values inside their bounds.
+TEST(OptimiseChoices, ShippedCasesAreValid) {
+  for (const char* name : {"optimise_annular.toml", "optimise_meandering.toml"}) {
+    const auto c = magnetostatics::load_case(fs::path(RHEOMAG_SOURCE_DIR) / "cases" / name);
+    const auto spec = optimise::read_optimise_spec(c);
+    EXPECT_NO_THROW(optimise::DesignEvaluator(c, spec)) << name;
+    EXPECT_GE(spec.variables.size(), 4u) << name;
+    EXPECT_EQ(spec.objective, "dp_on") << name;
+  }
+}
+
 // FE Pareto front, dp_on against L/R on the neck radius (3 levels): dp_on falls monotonically as
 // the L/R limit tightens, every level meets its own limit (feasibility tolerance 0.1 %), the end
 // levels are the two single-objective optima, and pareto.csv has one row per level.
