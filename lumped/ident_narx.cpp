@@ -26,20 +26,6 @@ Eigen::MatrixXd candidate_matrix(const Eigen::MatrixXd& phi, const std::vector<M
   return p;
 }
 
-IoData standardise(const IoData& data, const Eigen::VectorXd& u_mean,
-                   const Eigen::VectorXd& u_scale, double y_mean, double y_scale) {
-  IoData out = data;
-  for (std::ptrdiff_t j = 0; j < data.inputs(); ++j)
-    out.u.col(j) = (data.u.col(j).array() - u_mean(j)) / u_scale(j);
-  out.y = (data.y.array() - y_mean) / y_scale;
-  return out;
-}
-
-double spread(const Eigen::VectorXd& v) {
-  const double s = std::sqrt((v.array() - v.mean()).square().mean());
-  return s > 0.0 ? s : 1.0;
-}
-
 std::string term_name(const Monomial& m, const LagOrders& orders, std::ptrdiff_t inputs) {
   if (m.empty()) return "const";
   std::string s;
@@ -105,14 +91,11 @@ std::vector<int> frols_order(const Eigen::MatrixXd& p, const Eigen::VectorXd& y,
 }
 
 NarxModel::NarxModel(NarxOptions options, std::vector<Monomial> terms, Eigen::VectorXd coefficients,
-                     Eigen::VectorXd u_mean, Eigen::VectorXd u_scale, double y_mean, double y_scale)
+                     Standardisation scaling)
     : options_(options),
       terms_(std::move(terms)),
       coefficients_(std::move(coefficients)),
-      u_mean_(std::move(u_mean)),
-      u_scale_(std::move(u_scale)),
-      y_mean_(y_mean),
-      y_scale_(y_scale) {}
+      scaling_(std::move(scaling)) {}
 
 std::string NarxModel::name() const {
   const auto& o = options_.orders;
@@ -126,43 +109,35 @@ std::vector<NamedValue> NarxModel::params() const {
                               {"nk", options_.orders.nk},
                               {"degree", options_.degree},
                               {"terms", static_cast<double>(terms_.size())},
-                              {"y_mean", y_mean_},
-                              {"y_scale", y_scale_}};
-  for (std::ptrdiff_t j = 0; j < u_mean_.size(); ++j) {
-    out.emplace_back(numbered("u", j + 1) + "_mean", u_mean_(j));
-    out.emplace_back(numbered("u", j + 1) + "_scale", u_scale_(j));
+                              {"y_mean", scaling_.y_mean},
+                              {"y_scale", scaling_.y_scale}};
+  for (std::ptrdiff_t j = 0; j < scaling_.u_mean.size(); ++j) {
+    out.emplace_back(numbered("u", j + 1) + "_mean", scaling_.u_mean(j));
+    out.emplace_back(numbered("u", j + 1) + "_scale", scaling_.u_scale(j));
   }
   for (std::size_t t = 0; t < terms_.size(); ++t)
-    out.emplace_back(term_name(terms_[t], options_.orders, u_mean_.size()), coefficients_(t));
+    out.emplace_back(term_name(terms_[t], options_.orders, scaling_.u_mean.size()),
+                     coefficients_(t));
   return out;
 }
 
 Eigen::VectorXd NarxModel::run(const IoData& data, EvalMode mode) const {
-  if (data.inputs() != u_mean_.size())
-    throw InputError("narx model has " + std::to_string(u_mean_.size()) + " drives, data has " +
-                     std::to_string(data.inputs()));
-  const IoData scaled = standardise(data, u_mean_, u_scale_, y_mean_, y_scale_);
+  const IoData scaled = scaling_.apply(data, "narx");
   const auto f = [this](const Eigen::VectorXd& phi) {
     double v = 0.0;
     for (std::size_t t = 0; t < terms_.size(); ++t)
       v += coefficients_(t) * monomial_value(terms_[t], phi);
     return v;
   };
-  const Eigen::VectorXd out = run_regression_model(scaled, options_.orders, f, mode);
-  return (out.array() * y_scale_ + y_mean_).matrix();
+  return scaling_.restore(run_regression_model(scaled, options_.orders, f, mode));
 }
 
 NarxModel fit_narx(const IoData& data, const NarxOptions& options) {
   const LagOrders& o = options.orders;
   if (o.na < 0 || o.nb < 1 || o.nk < 0 || options.degree < 1 || options.degree > 4)
     throw InputError("narx needs na >= 0, nb >= 1, nk >= 0 and degree 1..4");
-  Eigen::VectorXd u_mean(data.inputs()), u_scale(data.inputs());
-  for (std::ptrdiff_t j = 0; j < data.inputs(); ++j) {
-    u_mean(j) = data.u.col(j).mean();
-    u_scale(j) = spread(data.u.col(j));
-  }
-  const double y_mean = data.y.mean(), y_scale = spread(data.y);
-  const IoData scaled = standardise(data, u_mean, u_scale, y_mean, y_scale);
+  const Standardisation scaling = Standardisation::of(data);
+  const IoData scaled = scaling.apply(data, "narx");
   const std::vector<Monomial> candidates = all_monomials(o.size(data.inputs()), options.degree);
 
   // Term order and count chosen on the first 3/4, judged by free run on the last 1/4.
@@ -182,6 +157,9 @@ NarxModel fit_narx(const IoData& data, const NarxOptions& options) {
   std::vector<int> order = frols_order(p, target, options.max_terms);
   std::size_t best_count = 1;
   double best_error = std::numeric_limits<double>::infinity();
+  Standardisation identity;
+  identity.u_mean = Eigen::VectorXd::Zero(data.inputs());
+  identity.u_scale = Eigen::VectorXd::Ones(data.inputs());
   for (std::size_t count = 1; count <= order.size(); ++count) {
     std::vector<Monomial> terms;
     Eigen::MatrixXd sub(p.rows(), static_cast<std::ptrdiff_t>(count));
@@ -190,8 +168,7 @@ NarxModel fit_narx(const IoData& data, const NarxOptions& options) {
       sub.col(t) = p.col(order[t]);
     }
     const Eigen::VectorXd coef = sub.colPivHouseholderQr().solve(target);
-    const NarxModel trial(options, terms, coef, Eigen::VectorXd::Zero(data.inputs()),
-                          Eigen::VectorXd::Ones(data.inputs()), 0.0, 1.0);
+    const NarxModel trial(options, terms, coef, identity);  // on already standardised data
     const Eigen::VectorXd sim = trial.run(check_part, EvalMode::simulation);
     const double error = (sim - check_part.y).tail(check_part.size() - o.max_lag()).squaredNorm();
     if (error < best_error) {
@@ -210,7 +187,7 @@ NarxModel fit_narx(const IoData& data, const NarxOptions& options) {
     sub.col(t) = p.col(order[t]);
   }
   const Eigen::VectorXd coef = sub.colPivHouseholderQr().solve(target);
-  return NarxModel(options, std::move(terms), coef, u_mean, u_scale, y_mean, y_scale);
+  return NarxModel(options, std::move(terms), coef, scaling);
 }
 
 NarxModel fit_narx_lag_search(const IoData& data, const std::vector<LagOrders>& candidates,

@@ -26,7 +26,7 @@ class NarxModel : public IdentModel {
  public:
   /// Model from its structure, selected monomials with coefficients, and signal scalings.
   NarxModel(NarxOptions options, std::vector<Monomial> terms, Eigen::VectorXd coefficients,
-            Eigen::VectorXd u_mean, Eigen::VectorXd u_scale, double y_mean, double y_scale);
+            Standardisation scaling);
 
   std::string name() const override;
   std::vector<NamedValue> params() const override;
@@ -40,8 +40,7 @@ class NarxModel : public IdentModel {
   NarxOptions options_;
   std::vector<Monomial> terms_;
   Eigen::VectorXd coefficients_;
-  Eigen::VectorXd u_mean_, u_scale_;
-  double y_mean_, y_scale_;
+  Standardisation scaling_;
 };
 
 /// All monomials of `variables` regressor entries with total degree 0..degree.

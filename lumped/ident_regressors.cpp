@@ -8,6 +8,40 @@
 
 namespace rheomag::lumped {
 
+namespace {
+
+/// rms deviation from the mean, 1 for a constant signal.
+double spread(const Eigen::VectorXd& v) {
+  const double s = std::sqrt((v.array() - v.mean()).square().mean());
+  return s > 0.0 ? s : 1.0;
+}
+
+}  // namespace
+
+Standardisation Standardisation::of(const IoData& data) {
+  Standardisation st;
+  st.u_mean.resize(data.inputs());
+  st.u_scale.resize(data.inputs());
+  for (std::ptrdiff_t j = 0; j < data.inputs(); ++j) {
+    st.u_mean(j) = data.u.col(j).mean();
+    st.u_scale(j) = spread(data.u.col(j));
+  }
+  st.y_mean = data.y.mean();
+  st.y_scale = spread(data.y);
+  return st;
+}
+
+IoData Standardisation::apply(const IoData& data, const std::string& model) const {
+  if (data.inputs() != u_mean.size())
+    throw InputError(model + " model has " + std::to_string(u_mean.size()) + " drives, data has " +
+                     std::to_string(data.inputs()));
+  IoData out = data;
+  for (std::ptrdiff_t j = 0; j < data.inputs(); ++j)
+    out.u.col(j) = (data.u.col(j).array() - u_mean(j)) / u_scale(j);
+  out.y = (data.y.array() - y_mean) / y_scale;
+  return out;
+}
+
 void fill_regressor(const Eigen::VectorXd& y_history, const Eigen::MatrixXd& u, std::ptrdiff_t k,
                     const LagOrders& orders, Eigen::Ref<Eigen::VectorXd> phi) {
   int col = 0;

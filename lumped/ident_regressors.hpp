@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 #include <functional>
+#include <string>
 
 #include "lumped/ident_data.hpp"
 #include "lumped/ident_model.hpp"
@@ -20,6 +21,21 @@ struct LagOrders {
   int max_lag() const { return std::max(na, nb + nk - 1); }
   /// Regressor length for `inputs` drives.
   int size(std::ptrdiff_t inputs) const { return na + nb * static_cast<int>(inputs); }
+};
+
+/// Centring and scaling of each signal that regression models (narx, svr) work in: mean and rms
+/// spread of every drive and of the output (spread 1 for a constant signal).
+struct Standardisation {
+  Eigen::VectorXd u_mean, u_scale;
+  double y_mean = 0.0, y_scale = 1.0;
+  /// The means and spreads of `data`.
+  static Standardisation of(const IoData& data);
+  /// `data` centred and scaled; InputError naming `model` if its number of drives differs.
+  IoData apply(const IoData& data, const std::string& model) const;
+  /// A standardised output back in the data's units.
+  Eigen::VectorXd restore(const Eigen::VectorXd& y) const {
+    return (y.array() * y_scale + y_mean).matrix();
+  }
 };
 
 /// Fills phi with the regressor at sample k, past outputs taken from `y_history`.

@@ -31,25 +31,11 @@ namespace {
 
 void quiet(const char*) {}
 
-double spread(const Eigen::VectorXd& v) {
-  const double s = std::sqrt((v.array() - v.mean()).square().mean());
-  return s > 0.0 ? s : 1.0;
-}
-
 std::vector<svm_node> to_nodes(const Eigen::VectorXd& phi) {
   std::vector<svm_node> nodes(phi.size() + 1);
   for (std::ptrdiff_t i = 0; i < phi.size(); ++i) nodes[i] = {static_cast<int>(i + 1), phi(i)};
   nodes[phi.size()] = {-1, 0.0};
   return nodes;
-}
-
-IoData standardise(const IoData& data, const Eigen::VectorXd& u_mean,
-                   const Eigen::VectorXd& u_scale, double y_mean, double y_scale) {
-  IoData out = data;
-  for (std::ptrdiff_t j = 0; j < data.inputs(); ++j)
-    out.u.col(j) = (data.u.col(j).array() - u_mean(j)) / u_scale(j);
-  out.y = (data.y.array() - y_mean) / y_scale;
-  return out;
 }
 
 /// Trains on standardised data.
@@ -99,14 +85,8 @@ Eigen::VectorXd run_standardised(const SvrStorage& storage, const IoData& scaled
 }  // namespace
 
 SvrModel::SvrModel(LagOrders orders, SvrHyper hyper, std::shared_ptr<const SvrStorage> storage,
-                   Eigen::VectorXd u_mean, Eigen::VectorXd u_scale, double y_mean, double y_scale)
-    : orders_(orders),
-      hyper_(hyper),
-      storage_(std::move(storage)),
-      u_mean_(std::move(u_mean)),
-      u_scale_(std::move(u_scale)),
-      y_mean_(y_mean),
-      y_scale_(y_scale) {}
+                   Standardisation scaling)
+    : orders_(orders), hyper_(hyper), storage_(std::move(storage)), scaling_(std::move(scaling)) {}
 
 std::string SvrModel::name() const {
   return "svr:" + std::to_string(orders_.na) + "," + std::to_string(orders_.nb) + "," +
@@ -121,30 +101,20 @@ std::vector<NamedValue> SvrModel::params() const {
           {"gamma", hyper_.gamma},
           {"epsilon", hyper_.epsilon},
           {"support_vectors", static_cast<double>(svm_get_nr_sv(storage_->model))},
-          {"y_mean", y_mean_},
-          {"y_scale", y_scale_}};
+          {"y_mean", scaling_.y_mean},
+          {"y_scale", scaling_.y_scale}};
 }
 
 Eigen::VectorXd SvrModel::run(const IoData& data, EvalMode mode) const {
-  if (data.inputs() != u_mean_.size())
-    throw InputError("svr model has " + std::to_string(u_mean_.size()) + " drives, data has " +
-                     std::to_string(data.inputs()));
-  const IoData scaled = standardise(data, u_mean_, u_scale_, y_mean_, y_scale_);
-  return (run_standardised(*storage_, scaled, orders_, mode).array() * y_scale_ + y_mean_).matrix();
+  return scaling_.restore(run_standardised(*storage_, scaling_.apply(data, "svr"), orders_, mode));
 }
 
 SvrModel train_svr(const IoData& data, const LagOrders& orders, const SvrHyper& hyper) {
   if (orders.na < 0 || orders.nb < 1 || orders.nk < 0)
     throw InputError("svr needs na >= 0, nb >= 1, nk >= 0");
-  Eigen::VectorXd u_mean(data.inputs()), u_scale(data.inputs());
-  for (std::ptrdiff_t j = 0; j < data.inputs(); ++j) {
-    u_mean(j) = data.u.col(j).mean();
-    u_scale(j) = spread(data.u.col(j));
-  }
-  const double y_mean = data.y.mean(), y_scale = spread(data.y);
-  const IoData scaled = standardise(data, u_mean, u_scale, y_mean, y_scale);
-  return SvrModel(orders, hyper, train_standardised(scaled, orders, hyper), u_mean, u_scale, y_mean,
-                  y_scale);
+  const Standardisation scaling = Standardisation::of(data);
+  const IoData scaled = scaling.apply(data, "svr");
+  return SvrModel(orders, hyper, train_standardised(scaled, orders, hyper), scaling);
 }
 
 SvrModel fit_svr(const IoData& data, const SvrSearch& search) {
@@ -154,13 +124,8 @@ SvrModel fit_svr(const IoData& data, const SvrSearch& search) {
   for (const auto& lag : search.lags) largest_lag = std::max(largest_lag, lag.max_lag());
   if (split < 20 + largest_lag || n - split < 10 + largest_lag)
     throw InputError("too few samples (" + std::to_string(n) + ") for the svr search");
-  Eigen::VectorXd u_mean(data.inputs()), u_scale(data.inputs());
-  for (std::ptrdiff_t j = 0; j < data.inputs(); ++j) {
-    u_mean(j) = data.u.col(j).mean();
-    u_scale(j) = spread(data.u.col(j));
-  }
-  const double y_mean = data.y.mean(), y_scale = spread(data.y);
-  const IoData scaled = standardise(data, u_mean, u_scale, y_mean, y_scale);
+  const Standardisation scaling = Standardisation::of(data);
+  const IoData scaled = scaling.apply(data, "svr");
   const IoData fit_part = slice(scaled, 0, split), check_part = slice(scaled, split, n);
   LagOrders best_lag = search.lags.front();
   SvrHyper best_hyper;
@@ -181,8 +146,7 @@ SvrModel fit_svr(const IoData& data, const SvrSearch& search) {
             best_hyper = hyper;
           }
         }
-  return SvrModel(best_lag, best_hyper, train_standardised(scaled, best_lag, best_hyper), u_mean,
-                  u_scale, y_mean, y_scale);
+  return SvrModel(best_lag, best_hyper, train_standardised(scaled, best_lag, best_hyper), scaling);
 }
 
 }  // namespace rheomag::lumped

@@ -34,7 +34,7 @@ class SvrModel : public IdentModel {
  public:
   /// Wraps a trained libsvm model (see fit_svr).
   SvrModel(LagOrders orders, SvrHyper hyper, std::shared_ptr<const SvrStorage> storage,
-           Eigen::VectorXd u_mean, Eigen::VectorXd u_scale, double y_mean, double y_scale);
+           Standardisation scaling);
 
   std::string name() const override;
   std::vector<NamedValue> params() const override;
@@ -45,8 +45,7 @@ class SvrModel : public IdentModel {
   LagOrders orders_;
   SvrHyper hyper_;
   std::shared_ptr<const SvrStorage> storage_;
-  Eigen::VectorXd u_mean_, u_scale_;
-  double y_mean_, y_scale_;
+  Standardisation scaling_;
 };
 
 /// Trains one SVR-NARX with fixed lags and hyperparameters.
