@@ -127,6 +127,10 @@ OptimiseResult run_optimisation(const magnetostatics::Case& c, const OptimiseOpt
       meshes_done += e->meshes();
     }
   }
+  if (evaluator) {  // the case as written, when only enumerated combinations were optimised
+    solves_done += evaluator->fe_solves();
+    meshes_done += evaluator->meshes();
+  }
   const CombinationResult& chosen = result.combinations[result.chosen];
   result.optimal = chosen.optimal;
   result.status = chosen.status;

@@ -46,6 +46,8 @@ TEST(OptimiseChoices, EnumerationPicksTheBestFeasibleCombination) {
   const TempDir dir("enumerate");
   const auto r = optimise_fixture::run(c, dir);
   ASSERT_EQ(r.combinations.size(), 2u);
+  // Every FE solve counted: the case as written (1) plus each combination's.
+  EXPECT_EQ(r.fe_solves, 1 + r.combinations[0].fe_solves + r.combinations[1].fe_solves);
   for (const auto& m : r.combinations) {
     EXPECT_TRUE(m.optimal.feasible) << optimise::format_summary(r);
     EXPECT_GT(m.fe_solves, 0);
@@ -107,7 +109,8 @@ TEST(OptimiseChoices, WeightedSumAndParetoAreReadAndChecked) {
 // The shipped examples read: [optimise] spec and evaluator set up (no FE solve), the variables'
 // starts are the cases' own values inside their bounds.
 TEST(OptimiseChoices, ShippedCasesAreValid) {
-  for (const char* name : {"optimise_annular.toml", "optimise_meandering.toml"}) {
+  for (const char* name :
+       {"optimise_annular.toml", "optimise_meandering.toml", "optimise_annular_pareto.toml"}) {
     const auto c = magnetostatics::load_case(fs::path(RHEOMAG_SOURCE_DIR) / "cases" / name);
     const auto spec = optimise::read_optimise_spec(c);
     EXPECT_NO_THROW(optimise::DesignEvaluator(c, spec)) << name;
