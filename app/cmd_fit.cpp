@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -113,18 +114,18 @@ FitReport fit_black_box_model(const FitOptions& o, const Recording& rec, const S
   return report;
 }
 
-FitReport fit_grey_box_model(const FitOptions& o, const Recording& rec, const SampleRange& train,
-                             const Validation& val) {
-  if (o.mode == EvalMode::prediction)
-    throw rheomag::InputError("--mode prediction: grey-box model '" + o.model +
-                              "' is a state-space model run in free simulation only");
-  GreyboxOptions options;
-  options.train = train;
-  const GreyboxFit fit = fit_greybox(rec, o.model, options);
+/// Report of a grey-box fit (GreyboxFit or ValveChainFit): parameters with standard errors (held
+/// ones left out), its free run on the training and validation parts; `simulate_other` runs the
+/// fitted model on a validation recording.
+template <class Fit>
+FitReport grey_box_report(
+    const Fit& fit, const Recording& rec, const SampleRange& train, const Validation& val,
+    const std::function<std::vector<double>(const Recording&)>& simulate_other) {
   FitReport report;
   report.model = fit.model;
   report.standard_errors = nlohmann::json::object();
   for (const auto& p : fit.params) {
+    if (p.fixed && fit.model == "valve-chain") continue;  // no compliance: the drive is Q itself
     report.params[p.name] = p.value;
     report.standard_errors[p.name] =
         p.standard_error ? nlohmann::json(*p.standard_error) : nlohmann::json(nullptr);
@@ -139,46 +140,37 @@ FitReport fit_grey_box_model(const FitOptions& o, const Recording& rec, const Sa
         fit.simulated.begin() + static_cast<std::ptrdiff_t>(val.range->begin),
         fit.simulated.begin() + static_cast<std::ptrdiff_t>(val.range->end));
   } else if (val.other) {
-    report.validation_output = simulate_greybox(*val.other, fit);
+    report.validation_output = simulate_other(*val.other);
     const std::vector<double>& yv = val.other->column(val.other->meta.output);
     report.validation = metrics_on(yv, report.validation_output, SampleRange{0, yv.size()});
   }
   return report;
 }
 
+void reject_prediction_mode(const FitOptions& o) {
+  if (o.mode == EvalMode::prediction)
+    throw rheomag::InputError("--mode prediction: grey-box model '" + o.model +
+                              "' is a state-space model run in free simulation only");
+}
+
+FitReport fit_grey_box_model(const FitOptions& o, const Recording& rec, const SampleRange& train,
+                             const Validation& val) {
+  reject_prediction_mode(o);
+  GreyboxOptions options;
+  options.train = train;
+  const GreyboxFit fit = fit_greybox(rec, o.model, options);
+  return grey_box_report(fit, rec, train, val,
+                         [&](const Recording& other) { return simulate_greybox(other, fit); });
+}
+
 FitReport fit_valve_chain_model(const FitOptions& o, const Recording& rec, const SampleRange& train,
                                 const Validation& val) {
-  if (o.mode == EvalMode::prediction)
-    throw rheomag::InputError(
-        "--mode prediction: grey-box model 'valve-chain' is a state-space model run in free "
-        "simulation only");
+  reject_prediction_mode(o);
   ValveChainFitOptions options;
   options.train = train;
   const ValveChainFit fit = fit_valve_chain(rec, options);
-  FitReport report;
-  report.model = fit.model;
-  report.standard_errors = nlohmann::json::object();
-  for (const auto& p : fit.params) {
-    if (p.fixed) continue;  // no compliance when the drive is the valve flow itself
-    report.params[p.name] = p.value;
-    report.standard_errors[p.name] =
-        p.standard_error ? nlohmann::json(*p.standard_error) : nlohmann::json(nullptr);
-  }
-  report.train = fit.train;
-  report.train_output.assign(fit.simulated.begin() + static_cast<std::ptrdiff_t>(train.begin),
-                             fit.simulated.begin() + static_cast<std::ptrdiff_t>(train.end));
-  const std::vector<double>& y = rec.column(rec.meta.output);
-  if (val.range) {
-    report.validation = metrics_on(y, fit.simulated, *val.range);
-    report.validation_output.assign(
-        fit.simulated.begin() + static_cast<std::ptrdiff_t>(val.range->begin),
-        fit.simulated.begin() + static_cast<std::ptrdiff_t>(val.range->end));
-  } else if (val.other) {
-    report.validation_output = simulate_valve_chain(*val.other, fit);
-    const std::vector<double>& yv = val.other->column(val.other->meta.output);
-    report.validation = metrics_on(yv, report.validation_output, SampleRange{0, yv.size()});
-  }
-  return report;
+  return grey_box_report(fit, rec, train, val,
+                         [&](const Recording& other) { return simulate_valve_chain(other, fit); });
 }
 
 nlohmann::json metrics_json(const Metrics& m) {

@@ -13,6 +13,7 @@
 #include <numeric>
 #include <random>
 
+#include "lumped/multistart_fit.hpp"
 #include "lumped/ode.hpp"
 #include "lumped/standard_errors.hpp"
 #include "mesh/error.hpp"
@@ -52,14 +53,6 @@ DriveSeries drive_series(const Recording& rec, const GreyboxSetup& setup) {
     for (double& x : d.position) x -= mean;
   }
   return d;
-}
-
-double value_of(double x) {
-  return x;
-}
-template <class J>
-double value_of(const J& x) {
-  return x.a;
 }
 
 /// Largest |df_k/dx_k| at state x (forward differences on the values): the stiffest rate, used to
@@ -360,8 +353,7 @@ void run_fit(const DriveSeries& d, const GreyboxSetup& setup, const ParamGuess& 
 
   std::mt19937 rng(options.seed);
   std::normal_distribution<double> normal(0.0, 1.0);
-  std::array<double, N> best{};
-  double best_cost = std::numeric_limits<double>::infinity();
+  BestStart<N> best;
   const int starts = std::max(1, options.starts);
   for (int start = 0; start < starts; ++start) {
     std::array<double, N> theta;
@@ -385,43 +377,24 @@ void run_fit(const DriveSeries& d, const GreyboxSetup& setup, const ParamGuess& 
       problem.SetParameterUpperBound(theta.data(), k, guess.upper[k] / guess.scale[k]);
     }
     if (!fixed.empty()) problem.SetManifold(theta.data(), new ceres::SubsetManifold(N, fixed));
-    ceres::Solver::Options so;
-    so.minimizer_type = ceres::TRUST_REGION;
-    so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-    so.linear_solver_type = ceres::DENSE_QR;
-    so.max_num_iterations = options.max_iterations;
-    so.function_tolerance = 1e-10;
-    so.parameter_tolerance = 1e-10;
-    so.num_threads = 1;
-    so.max_num_consecutive_invalid_steps = 50;  // trial steps into unstable parameter regions
-    so.logging_type = ceres::SILENT;
+    const ceres::Solver::Options so =
+        greybox_solver_options(options.max_iterations, 50);  // trial steps into unstable regions
     ceres::Solver::Summary summary;
     ceres::Solve(so, &problem, &summary);
     ++fit.starts_run;
-    // A FAILURE termination still leaves the last accepted iterate in theta; cost < 0 = no start.
-    if (summary.final_cost >= 0.0 && std::isfinite(summary.final_cost) &&
-        summary.final_cost < best_cost) {
-      best_cost = summary.final_cost;
-      best = theta;
-      fit.best_start = start;
-      fit.converged = summary.termination_type == ceres::CONVERGENCE;
-    }
+    best.offer(summary, theta, start);
   }
-  if (!std::isfinite(best_cost))
+  if (!best.found())
     throw ConvergenceError("grey-box fit of " + fit.model +
                            ": no starting point gave a finite simulation");
 
   // Standard errors: cov = (J^T J)^-1 sigma^2 on the free parameters (normalised), then scaled.
   const int m = static_cast<int>(range.size());
-  Eigen::Matrix<double, Eigen::Dynamic, N, Eigen::RowMajor> jac(m, N);
-  Eigen::VectorXd res(m);
-  {
-    ceres::AutoDiffCostFunction<FitResidual<N>, ceres::DYNAMIC, N> cost(new FitResidual<N>(functor),
-                                                                        m);
-    const double* params[] = {best.data()};
-    double* jacs[] = {jac.data()};
-    cost.Evaluate(params, res.data(), jacs);
-  }
+  Eigen::Matrix<double, Eigen::Dynamic, N, Eigen::RowMajor> jac;
+  Eigen::VectorXd res;
+  residual_jacobian(functor, m, best.theta.data(), jac, res);
+  fit.best_start = best.start;
+  fit.converged = best.converged;
   std::vector<int> free;
   for (int k = 0; k < N; ++k)
     if (!guess.fixed[k]) free.push_back(k);
@@ -436,7 +409,7 @@ void run_fit(const DriveSeries& d, const GreyboxSetup& setup, const ParamGuess& 
     FittedParameter fp;
     fp.name = specs[k].name;
     fp.unit = unit_string(specs[k].unit, setup);
-    fp.value = best[k] * guess.scale[k];
+    fp.value = best.theta[k] * guess.scale[k];
     fp.fixed = guess.fixed[k];
     if (!fp.fixed) {
       const double span = guess.upper[k] - guess.lower[k];
@@ -543,10 +516,7 @@ GreyboxFit fit_greybox(const Recording& rec, const std::string& model,
   for (const auto& p : fit.params) values.push_back(p.value);
   fit.simulated = simulate_for_report(d, fit.setup, values, options.max_substep);
   fit.train = compute_metrics(d.y, fit.simulated, range);
-  double ss = 0.0;
-  for (std::size_t i = range.begin; i < range.end; ++i)
-    ss += (d.y[i] - fit.simulated[i]) * (d.y[i] - fit.simulated[i]);
-  fit.residual_sigma = std::sqrt(ss / static_cast<double>(range.size()));
+  fit.residual_sigma = rms_residual(d.y, fit.simulated, range);
   return fit;
 }
 

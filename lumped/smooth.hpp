@@ -8,6 +8,16 @@
 
 namespace rheomag::lumped {
 
+/// The value of a double (itself) or of a Ceres Jet (its scalar part), for decisions that must not
+/// be differentiated (table segments, step counts).
+inline double value_of(double x) {
+  return x;
+}
+template <class J>
+double value_of(const J& x) {
+  return x.a;
+}
+
 /// sign(x) regularised: tanh(x / eps).
 template <class T>
 T smooth_sign(const T& x, double eps) {

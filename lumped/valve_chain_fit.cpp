@@ -11,6 +11,7 @@
 #include <cmath>
 #include <random>
 
+#include "lumped/multistart_fit.hpp"
 #include "lumped/ode.hpp"
 #include "lumped/standard_errors.hpp"
 #include "mesh/error.hpp"
@@ -70,14 +71,6 @@ void chain_initial_state(const ValveChainSetup& s, const T* p, double inflow, do
   if (s.compliant)
     x[1] = chain_pressure_drop(*s.map, T(inflow), T(current), p[kYieldScale], p[kViscousScale],
                                s.eps_flow);
-}
-
-double value_of(double x) {
-  return x;
-}
-template <class J>
-double value_of(const J& x) {
-  return x.a;
 }
 
 /// Free-run RK4 over samples [begin, end); substeps short enough for the lag and the compliance
@@ -292,8 +285,7 @@ ValveChainFit fit_valve_chain(const Recording& rec, const ValveChainFitOptions& 
 
   std::mt19937 rng(options.seed);
   std::normal_distribution<double> normal(0.0, 1.0);
-  std::array<double, kParams> best{};
-  double best_cost = std::numeric_limits<double>::infinity();
+  BestStart<kParams> best;
   for (int start = 0; start < std::max(1, options.starts); ++start) {
     std::array<double, kParams> theta = {1.0, 1.0, 0.0, 0.0};
     if (start > 0) {
@@ -313,43 +305,26 @@ ValveChainFit fit_valve_chain(const Recording& rec, const ValveChainFitOptions& 
       problem.SetParameterUpperBound(theta.data(), k, upper[k]);
     }
     if (!s.compliant) problem.SetManifold(theta.data(), new ceres::SubsetManifold(kParams, {3}));
-    ceres::Solver::Options so;
-    so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-    so.linear_solver_type = ceres::DENSE_QR;
-    so.max_num_iterations = options.max_iterations;
-    so.function_tolerance = 1e-10;
-    so.parameter_tolerance = 1e-10;
-    so.max_num_consecutive_invalid_steps = 20;
-    so.logging_type = ceres::SILENT;
+    const ceres::Solver::Options so = greybox_solver_options(options.max_iterations, 20);
     ceres::Solver::Summary summary;
     ceres::Solve(so, &problem, &summary);
     ++fit.starts_run;
-    if (summary.final_cost >= 0.0 && std::isfinite(summary.final_cost) &&
-        summary.final_cost < best_cost) {
-      best_cost = summary.final_cost;
-      best = theta;
-      fit.best_start = start;
-      fit.converged = summary.termination_type == ceres::CONVERGENCE;
-    }
+    best.offer(summary, theta, start);
   }
-  if (!std::isfinite(best_cost))
+  if (!best.found())
     throw ConvergenceError("valve-chain fit: no starting point gave a finite simulation");
 
   // Standard errors on the normalised parameters, mapped to physical ones (delta method).
   const int m = static_cast<int>(range.size());
-  Eigen::Matrix<double, Eigen::Dynamic, kParams, Eigen::RowMajor> jac(m, kParams);
-  Eigen::VectorXd res(m);
-  {
-    ceres::AutoDiffCostFunction<ChainResidual, ceres::DYNAMIC, kParams> cost(
-        new ChainResidual(functor), m);
-    const double* params[] = {best.data()};
-    double* jacs[] = {jac.data()};
-    cost.Evaluate(params, res.data(), jacs);
-  }
+  Eigen::Matrix<double, Eigen::Dynamic, kParams, Eigen::RowMajor> jac;
+  Eigen::VectorXd res;
+  residual_jacobian(functor, m, best.theta.data(), jac, res);
+  fit.best_start = best.start;
+  fit.converged = best.converged;
   const int nf = s.compliant ? kParams : kParams - 1;
   const std::vector<std::optional<double>> se =
       jacobian_standard_errors(Eigen::MatrixXd(jac.leftCols(nf)), res);
-  const std::array<double, kParams> value = norm.physical(best.data());
+  const std::array<double, kParams> value = norm.physical(best.theta.data());
   static const std::array<const char*, kParams> names = {
       "yield_scale", "viscous_scale", "field_time_constant", "hydraulic_capacitance"};
   static const std::array<const char*, kParams> units = {"1", "1", "s", "m^3/Pa"};
@@ -360,8 +335,8 @@ ValveChainFit fit_valve_chain(const Recording& rec, const ValveChainFitOptions& 
     fp.fixed = k >= nf;
     fp.value = fp.fixed ? 0.0 : value[k];
     if (!fp.fixed) {
-      fp.at_bound = std::abs(best[k] - lower[k]) < 1e-6 * (upper[k] - lower[k]) ||
-                    std::abs(best[k] - upper[k]) < 1e-6 * (upper[k] - lower[k]);
+      fp.at_bound = std::abs(best.theta[k] - lower[k]) < 1e-6 * (upper[k] - lower[k]) ||
+                    std::abs(best.theta[k] - upper[k]) < 1e-6 * (upper[k] - lower[k]);
       // d(physical)/d(theta) = 1 for the scales, = value for the log-scaled tau and C.
       if (se[k]) fp.standard_error = *se[k] * (k < 2 ? 1.0 : value[k]);
     }
@@ -370,10 +345,7 @@ ValveChainFit fit_valve_chain(const Recording& rec, const ValveChainFitOptions& 
   std::vector<double> p(value.begin(), value.end());
   fit.simulated = simulate_series(d, s, p);
   fit.train = compute_metrics(d.y, fit.simulated, range);
-  double ss = 0.0;
-  for (std::size_t i = range.begin; i < range.end; ++i)
-    ss += (d.y[i] - fit.simulated[i]) * (d.y[i] - fit.simulated[i]);
-  fit.residual_sigma = std::sqrt(ss / static_cast<double>(range.size()));
+  fit.residual_sigma = rms_residual(d.y, fit.simulated, range);
   return fit;
 }
 

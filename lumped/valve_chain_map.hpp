@@ -50,13 +50,6 @@ T chain_flow(const ChainMapTable& m, const T& dp, const T& current, const S& yie
 // ---- implementation -------------------------------------------------------------------------
 
 namespace chain_detail {
-inline double value_of(double x) {
-  return x;
-}
-template <class J>
-double value_of(const J& x) {
-  return x.a;
-}
 /// Index k of the grid segment [x[k], x[k+1]] holding v (clamped to the end segments).
 inline std::size_t segment(const std::vector<double>& x, double v) {
   auto it = std::upper_bound(x.begin(), x.end(), v);
@@ -67,7 +60,6 @@ inline std::size_t segment(const std::vector<double>& x, double v) {
 
 template <class T>
 T ChainMapTable::yield_at(std::size_t k, const T& i) const {
-  using chain_detail::value_of;
   const std::size_t nf = flow.size();
   if (current.size() == 1) return T(yield[k]);
   const double iv = std::clamp(std::abs(value_of(i)), current.front(), current.back());
@@ -83,7 +75,6 @@ T ChainMapTable::yield_at(std::size_t k, const T& i) const {
 template <class T, class S>
 T chain_pressure_drop(const ChainMapTable& m, const T& flow, const T& current, const S& yield_scale,
                       const S& viscous_scale, double eps_flow) {
-  using chain_detail::value_of;
   const T q = smooth_abs(flow, eps_flow);
   const double qv = value_of(q);
   T y;
@@ -101,7 +92,6 @@ T chain_pressure_drop(const ChainMapTable& m, const T& flow, const T& current, c
 template <class T, class S>
 T chain_flow(const ChainMapTable& m, const T& dp, const T& current, const S& yield_scale,
              const S& viscous_scale, double eps_flow) {
-  using chain_detail::value_of;
   // f(q) - f(0) on the knots q = 0, flow[0], ..., with f(q) = s_y yield(q) + s_v R q (increasing).
   const T plug = yield_scale * m.yield_at(0, current);
   const S resistance = viscous_scale * m.viscous_resistance;
