@@ -109,8 +109,8 @@ TEST(OptimiseChoices, WeightedSumAndParetoAreReadAndChecked) {
 // The shipped examples read: [optimise] spec and evaluator set up (no FE solve), the variables'
 // starts are the cases' own values inside their bounds.
 TEST(OptimiseChoices, ShippedCasesAreValid) {
-  for (const char* name :
-       {"optimise_annular.toml", "optimise_meandering.toml", "optimise_annular_pareto.toml"}) {
+  for (const char* name : {"optimise_annular.toml", "optimise_meandering.toml",
+                           "optimise_annular_pareto.toml", "optimise_annular_rise.toml"}) {
     const auto c = magnetostatics::load_case(fs::path(RHEOMAG_SOURCE_DIR) / "cases" / name);
     const auto spec = optimise::read_optimise_spec(c);
     EXPECT_NO_THROW(optimise::DesignEvaluator(c, spec)) << name;
