@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <thread>
 
 #include "mesh/error.hpp"
 
@@ -27,8 +28,9 @@ double to_value(const ParamDef& d, double z) {
 class SimulationCost : public ceres::CostFunction {
  public:
   SimulationCost(const DiagnosisModel& model, const std::vector<Effect>& effects,
-                 const std::vector<ParamDef>& layout, const std::vector<bool>& mask, double scale)
-      : model_(model), effects_(effects), layout_(layout), scale_(scale) {
+                 const std::vector<ParamDef>& layout, const std::vector<bool>& mask, double scale,
+                 int threads)
+      : model_(model), effects_(effects), layout_(layout), scale_(scale), threads_(threads) {
     const auto n = model.measured().size();
     for (std::size_t k = 0; k < n; ++k)
       if (mask.empty() || mask[k]) index_.push_back(k);
@@ -59,21 +61,37 @@ class SimulationCost : public ceres::CostFunction {
     const double* z = parameters[0];
     if (!residuals_at(z, residuals)) return false;
     if (jacobians && jacobians[0]) {
-      const std::size_t p = layout_.size(), m = index_.size();
-      std::vector<double> zz(z, z + p), r1(m);
-      for (std::size_t j = 0; j < p; ++j) {
-        const double h = 1e-4;
-        zz[j] = z[j] + h;
-        if (!residuals_at(zz.data(), r1.data())) {
-          zz[j] = z[j] - h;
-          if (!residuals_at(zz.data(), r1.data())) return false;
-          for (std::size_t i = 0; i < m; ++i) jacobians[0][i * p + j] = (residuals[i] - r1[i]) / h;
-        } else {
-          for (std::size_t i = 0; i < m; ++i) jacobians[0][i * p + j] = (r1[i] - residuals[i]) / h;
-        }
-        zz[j] = z[j];
-      }
+      // One simulation per column; the columns are independent and share the threads.
+      const std::size_t p = layout_.size();
+      const std::size_t workers = std::min<std::size_t>(std::max(threads_, 1), p);
+      std::vector<char> ok(p, 1);
+      auto columns = [&](std::size_t first) {
+        for (std::size_t j = first; j < p; j += workers)
+          ok[j] = jacobian_column(z, residuals, j, jacobians[0]);
+      };
+      std::vector<std::thread> pool;
+      for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(columns, w);
+      columns(0);
+      for (auto& t : pool) t.join();
+      if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return false;
     }
+    return true;
+  }
+
+  /// Forward (or, where the model fails, backward) difference column j of the Jacobian.
+  bool jacobian_column(const double* z, const double* residuals, std::size_t j,
+                       double* jacobian) const {
+    const std::size_t p = layout_.size(), m = index_.size();
+    std::vector<double> zz(z, z + p), r1(m);
+    const double h = 1e-4;
+    zz[j] = z[j] + h;
+    double sign = 1.0;
+    if (!residuals_at(zz.data(), r1.data())) {
+      zz[j] = z[j] - h;
+      sign = -1.0;
+      if (!residuals_at(zz.data(), r1.data())) return false;
+    }
+    for (std::size_t i = 0; i < m; ++i) jacobian[i * p + j] = sign * (r1[i] - residuals[i]) / h;
     return true;
   }
 
@@ -83,6 +101,7 @@ class SimulationCost : public ceres::CostFunction {
   std::vector<ParamDef> layout_;
   std::vector<std::size_t> index_;
   double scale_;
+  int threads_ = 1;
 };
 
 double output_scale(const std::vector<double>& y) {
@@ -119,7 +138,8 @@ ModelFit fit_model(const DiagnosisModel& model, const std::vector<Effect>& effec
     z[j] = std::clamp(to_internal(d, std::clamp(start[j], d.lower, d.upper)), lo[j], hi[j]);
   }
   const double scale = output_scale(model.measured());
-  auto* cost = new SimulationCost(model, effects, fit.layout, settings.mask, scale);
+  auto* cost =
+      new SimulationCost(model, effects, fit.layout, settings.mask, scale, settings.threads);
   ceres::Problem problem;
   problem.AddResidualBlock(cost, nullptr, z.data());
   for (std::size_t j = 0; j < p; ++j) {
@@ -158,7 +178,8 @@ ModelFit fit_model(const DiagnosisModel& model, const std::vector<Effect>& effec
   std::vector<double> r(m), jac(static_cast<std::size_t>(m) * p);
   const double* params[] = {z.data()};
   double* jacs[] = {jac.data()};
-  if (m > static_cast<int>(p) && cost->Evaluate(params, r.data(), jacs)) {
+  if (settings.standard_errors && m > static_cast<int>(p) &&
+      cost->Evaluate(params, r.data(), jacs)) {
     Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> J(
         jac.data(), m, static_cast<int>(p));
     const double s2 = fit.sse / (scale * scale) / static_cast<double>(m - static_cast<int>(p));
@@ -177,23 +198,35 @@ ModelFit fit_model(const DiagnosisModel& model, const std::vector<Effect>& effec
 }
 
 std::vector<double> grid_start(const DiagnosisModel& model, const std::vector<Effect>& effects,
-                               std::vector<double> start, double* best_sse) {
+                               std::vector<double> start, double* best_sse, int threads) {
   const auto layout = model.layout(effects);
   const std::size_t j = layout.size() - model.effect_params(effects.back()).size();
   const auto& d = layout[j];
+  std::vector<double> grid;
+  for (double v = d.lower * 3.0; v <= d.upper; v *= 10.0) grid.push_back(v);
+  std::vector<double> sse(grid.size(), std::numeric_limits<double>::infinity());
+  const std::size_t workers = std::min<std::size_t>(std::max(threads, 1), grid.size());
+  auto score = [&](std::size_t first) {
+    auto values = start;
+    for (std::size_t g = first; g < grid.size(); g += workers) {
+      values[j] = grid[g];
+      try {
+        sse[g] = masked_sse(model.measured(), model.predict(effects, values), {});
+      } catch (const std::exception&) {
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(score, w);
+  score(0);
+  for (auto& t : pool) t.join();
   double best = std::numeric_limits<double>::infinity();
   double best_value = start[j];
-  for (double v = d.lower * 3.0; v <= d.upper; v *= 10.0) {
-    start[j] = v;
-    try {
-      const double s = masked_sse(model.measured(), model.predict(effects, start), {});
-      if (s < best) {
-        best = s;
-        best_value = v;
-      }
-    } catch (const std::exception&) {
+  for (std::size_t g = 0; g < grid.size(); ++g)
+    if (sse[g] < best) {
+      best = sse[g];
+      best_value = grid[g];
     }
-  }
   start[j] = best_value;
   if (best_sse) *best_sse = best;
   return start;

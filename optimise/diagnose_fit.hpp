@@ -22,8 +22,10 @@ struct ModelFit {
 
 /// Options of fit_model.
 struct FitSettings {
-  int max_iterations = 25;
-  std::vector<bool> mask;  ///< samples to fit; all when empty
+  int max_iterations = 25;      ///< 0: only evaluate (and give standard errors) at the start
+  std::vector<bool> mask;       ///< samples to fit; all when empty
+  int threads = 1;              ///< threads sharing the Jacobian's columns (one simulation each)
+  bool standard_errors = true;  ///< compute them (one more Jacobian) or leave them NaN
 };
 
 /// Fits `effects` on top of the baseline, starting from `start` (SI values in the order of
@@ -38,8 +40,9 @@ double masked_sse(const std::vector<double>& measured, const std::vector<double>
 
 /// Best start for `effects.back()`'s first parameter: a decade grid over its bounds with the
 /// other values held at `start`; returns `start` with that parameter replaced and, in
-/// `best_sse` when given, the squared error there.
+/// `best_sse` when given, the squared error there. The grid points share `threads` threads.
 std::vector<double> grid_start(const DiagnosisModel& model, const std::vector<Effect>& effects,
-                               std::vector<double> start, double* best_sse = nullptr);
+                               std::vector<double> start, double* best_sse = nullptr,
+                               int threads = 1);
 
 }  // namespace rheomag::optimise

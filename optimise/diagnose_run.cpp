@@ -8,6 +8,7 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <thread>
 
 #include "lumped/metrics.hpp"
 #include "mesh/error.hpp"
@@ -110,19 +111,38 @@ std::vector<bool> block_mask(std::size_t n, int blocks, bool even) {
   return mask;
 }
 
-/// Held-out squared error: fit on even blocks, score on odd, and the other way round.
-double heldout_sse(const DiagnosisModel& model, const ModelFit& full, int blocks, int iterations) {
-  double total = 0.0;
-  for (bool even : {true, false}) {
-    FitSettings s;
-    s.mask = block_mask(model.measured().size(), blocks, even);
-    s.max_iterations = iterations;
-    const auto f = fit_model(model, full.effects, full.values, s);
-    auto other = s.mask;
-    other.flip();
-    total += masked_sse(model.measured(), f.prediction, other);
+/// Held-out squared error: fit on even blocks, score on odd, and the other way round (the two
+/// folds on two threads when `threads` > 1).
+double heldout_sse(const DiagnosisModel& model, const ModelFit& full, int blocks, int iterations,
+                   int threads) {
+  double fold_sse[2] = {0.0, 0.0};
+  std::exception_ptr failure[2];
+  auto fold = [&](int k) {
+    try {
+      FitSettings s;
+      s.mask = block_mask(model.measured().size(), blocks, k == 0);
+      s.max_iterations = iterations;
+      s.threads = threads > 1 ? std::max(threads / 2, 1) : 1;
+      s.standard_errors = false;
+      const auto f = fit_model(model, full.effects, full.values, s);
+      auto other = s.mask;
+      other.flip();
+      fold_sse[k] = masked_sse(model.measured(), f.prediction, other);
+    } catch (...) {
+      failure[k] = std::current_exception();
+    }
+  };
+  if (threads > 1) {
+    std::thread second(fold, 1);
+    fold(0);
+    second.join();
+  } else {
+    fold(0);
+    fold(1);
   }
-  return total;
+  for (const auto& e : failure)
+    if (e) std::rethrow_exception(e);
+  return fold_sse[0] + fold_sse[1];
 }
 
 std::string fmt(double v, int digits = 3) {
@@ -239,6 +259,14 @@ std::string separating_measurement(Effect a, Effect b) {
 }  // namespace
 
 Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options) {
+  auto stage_start = std::chrono::steady_clock::now();
+  auto stage = [&](const std::string& what) {
+    if (!options.trace) return;
+    const auto now = std::chrono::steady_clock::now();
+    std::cerr << "diagnose: " << what << " in "
+              << std::chrono::duration<double>(now - stage_start).count() << " s\n";
+    stage_start = now;
+  };
   DiagnosisModel model(rec);
   check_informative(model);
   Diagnosis d;
@@ -254,8 +282,10 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
   for (const auto& p : model.static_params()) start.push_back(p.nominal);
   FitSettings calib;
   calib.max_iterations = 50;
+  calib.threads = options.threads;
   d.baseline = fit_model(model, {}, start, calib);
   d.baseline_fit_percent = fit_percent_of(y, d.baseline.prediction);
+  stage("baseline calibration");
 
   // 2. Locate.
   std::vector<double> residual(n);
@@ -268,6 +298,9 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
   ModelFit current = d.baseline;
   FitSettings settings;
   settings.max_iterations = options.max_iterations;
+  settings.threads = options.threads;
+  settings.standard_errors = false;  // only the final model's are reported
+  double held_current = -1.0;        // held-out error of `current`, once known
   const auto candidates = model.applicable_effects();
   for (int step = 0; step < options.max_effects; ++step) {
     struct Tried {
@@ -304,7 +337,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
       try {
         const auto started = std::chrono::steady_clock::now();
         double grid_sse = 0.0;
-        s = grid_start(model, effects, s, &grid_sse);
+        s = grid_start(model, effects, s, &grid_sse, options.threads);
         // Screening: a candidate that lowers the error at no decade of its parameter (the
         // others held at the current fit) is scored there and not fitted.
         if (!(grid_sse < current.sse)) {
@@ -329,6 +362,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
                           std::to_string(step + 1));
       }
     }
+    stage("step " + std::to_string(step + 1) + " candidates");
     if (tried.empty()) break;
     std::stable_sort(tried.begin(), tried.end(),
                      [](const Tried& a, const Tried& b) { return a.delta_bic > b.delta_bic; });
@@ -336,8 +370,12 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
     const auto& best = tried.front();
     if (best.delta_bic <= options.bic_margin) break;
     const int cv_iterations = std::max(options.max_iterations / 3, 5);
-    const double held_now = heldout_sse(model, current, options.blocks, cv_iterations);
-    const double held_new = heldout_sse(model, best.fit, options.blocks, cv_iterations);
+    const double held_now = held_current >= 0.0 ? held_current
+                                                : heldout_sse(model, current, options.blocks,
+                                                              cv_iterations, options.threads);
+    const double held_new =
+        heldout_sse(model, best.fit, options.blocks, cv_iterations, options.threads);
+    stage("held-out check of " + effect_name(best.effect));
     const double gain = held_now > 0 ? 1.0 - held_new / held_now : 0.0;
     if (gain < options.heldout_margin) {
       d.notes.push_back(effect_name(best.effect) + " lowered BIC by " + fmt(best.delta_bic) +
@@ -362,15 +400,20 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
       }
     d.findings.push_back(std::move(f));
     current = best.fit;
+    held_current = held_new;
   }
 
-  // Re-fit all accepted effects together.
+  // Re-fit all accepted effects together. The last forward step already fitted them all jointly;
+  // with one effect whose fit converged there is nothing left to polish.
   if (!d.findings.empty()) {
-    FitSettings polish;
-    polish.max_iterations = 2 * options.max_iterations;
-    auto refit = fit_model(model, current.effects, current.values, polish);
-    if (refit.sse <= current.sse) current = std::move(refit);
+    const bool polish = d.findings.size() > 1 || !current.converged;
+    FitSettings final_settings;
+    final_settings.max_iterations = polish ? 2 * options.max_iterations : 0;
+    final_settings.threads = options.threads;
+    auto refit = fit_model(model, current.effects, current.values, final_settings);
+    if (refit.sse <= current.sse || !polish) current = std::move(refit);
   }
+  stage("joint re-fit");
   d.final_fit = current;
   d.final_fit_percent = fit_percent_of(y, current.prediction);
   d.final_stats = residual_statistics(model.recording(), rec.meta.drive, y, current.prediction);

@@ -21,6 +21,7 @@ struct DiagnoseOptions {
   int blocks = 8;                ///< alternating time blocks for the two-fold held-out check
   int max_iterations = 15;       ///< Levenberg-Marquardt iterations per fit
   bool trace = false;            ///< print each candidate fit and its time on stderr
+  int threads = 2;               ///< threads for Jacobian columns, grid points and held-out folds
 };
 
 /// One candidate tried at one step of forward selection.
