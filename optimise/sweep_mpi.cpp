@@ -6,6 +6,7 @@
 #include "mesh/error.hpp"
 #include "optimise/sweep_evaluate.hpp"
 #include "optimise/sweep_progress.hpp"
+#include "optimise/sweep_threads.hpp"
 
 #ifdef RHEOMAG_HAVE_MPI
 #define OMPI_SKIP_MPICXX 1  // the C API only (the deprecated C++ bindings warn under -Wextra)
@@ -144,6 +145,7 @@ void run_worker(const SweepSpec& spec, const SweepRunOptions& options) {
 }  // namespace
 
 SweepSummary run_sweep_mpi(const SweepSpec& spec, const SweepRunOptions& options, bool& is_root) {
+  sweep_serial_openmp();  // parallel over ranks, not inside each factorisation
   MpiSession session;
   int rank = 0, ranks = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);

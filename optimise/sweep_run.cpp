@@ -11,6 +11,7 @@
 #include "mesh/mesher.hpp"
 #include "optimise/sweep_evaluate.hpp"
 #include "optimise/sweep_progress.hpp"
+#include "optimise/sweep_threads.hpp"
 
 namespace rheomag::optimise {
 
@@ -167,6 +168,7 @@ PreparedSweep prepare_sweep(const SweepSpec& spec, const RowLayout& layout,
 
 SweepSummary run_sweep(const SweepSpec& spec, const SweepRunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
+  sweep_serial_openmp();  // parallel over designs, not inside each factorisation
   const RowLayout layout(spec, options.extra_columns);
   const DesignGenerator designs(spec);
   PreparedSweep prepared = prepare_sweep(spec, layout, designs, options);

@@ -121,9 +121,10 @@ TEST(Passage, TomlFormatAndBadInput) {
   std::ifstream in(kCase);
   std::stringstream text;
   text << in.rdbuf();
+  const std::string base = text.str().substr(0, text.str().find("\n[valve]"));
   auto options_of = [&](const std::string& valve) {
     return fluid::read_valve_options(
-        magnetostatics::parse_case(text.str() + "\n[valve]\n" + valve, "valve.toml"));
+        magnetostatics::parse_case(base + "\n[valve]\n" + valve, "valve.toml"));
   };
   const auto options = options_of(
       "[[valve.passage]]\nname = \"port\"\nshape = \"pipe\"\ndiameter = 6e-3\nlength = 0.02\n"

@@ -98,8 +98,9 @@ TEST(CmdValve, JsonKeysAndValues) {
   const auto points = annular_chain().evaluate({1.0}, {1e-6});
   EXPECT_NEAR(json["points"][1]["dp_total"].get<double>() / points[0].dp_total, 1.0, 1e-9);
   EXPECT_EQ(json["points"][0]["dp_yield"].get<double>(), 0.0);
-  const std::string bad = std::string(RHEOMAG_BINARY) + " valve " + kCase +
-                          " --current 1 2>/dev/null >/dev/null";  // no flow rate
+  const std::string bad =
+      std::string(RHEOMAG_BINARY) + " valve " + std::string(RHEOMAG_SOURCE_DIR) +
+      "/cases/meandering_valve.toml --current 1 2>/dev/null >/dev/null";  // no flow rate
   const int bad_status = std::system(bad.c_str());
   EXPECT_EQ(WEXITSTATUS(bad_status), 2);
 }
