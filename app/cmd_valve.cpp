@@ -45,7 +45,14 @@ void run_valve(const ValveCli& o) {
   using namespace rheomag;
   const auto c = magnetostatics::load_case(o.case_file);
   fluid::ValveOptions options = fluid::read_valve_options(c);
-  if (!o.wire.empty()) options.wire = o.wire;
+  if (!o.wire.empty()) {
+    try {
+      fluid::wire_diameter(o.wire);
+    } catch (const InputError& e) {
+      throw InputError(std::string("--wire: ") + e.what());
+    }
+    options.wire = o.wire;
+  }
   if (!std::isnan(o.temperature)) options.temperature = o.temperature;
   std::vector<double> currents = o.currents;
   if (currents.empty())
