@@ -100,7 +100,7 @@ TEST(CmdValve, JsonKeysAndValues) {
   EXPECT_EQ(json["points"][0]["dp_yield"].get<double>(), 0.0);
   const std::string bad =
       std::string(RHEOMAG_BINARY) + " valve " + std::string(RHEOMAG_SOURCE_DIR) +
-      "/cases/meandering_valve.toml --current 1 2>/dev/null >/dev/null";  // no flow rate
+      "/cases/radial_valve.toml --current 1 2>/dev/null >/dev/null";  // no flow rate
   const int bad_status = std::system(bad.c_str());
   EXPECT_EQ(WEXITSTATUS(bad_status), 2);
 }
