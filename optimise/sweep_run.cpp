@@ -168,7 +168,6 @@ PreparedSweep prepare_sweep(const SweepSpec& spec, const RowLayout& layout,
 
 SweepSummary run_sweep(const SweepSpec& spec, const SweepRunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  sweep_serial_openmp();  // parallel over designs, not inside each factorisation
   const RowLayout layout(spec, options.extra_columns);
   const DesignGenerator designs(spec);
   PreparedSweep prepared = prepare_sweep(spec, layout, designs, options);
@@ -197,6 +196,7 @@ SweepSummary run_sweep(const SweepSpec& spec, const SweepRunOptions& options) {
   std::mutex mutex;  // guards prepared.rows, failure and the mesh counters
   std::exception_ptr failure;
   auto work = [&] {
+    sweep_serial_openmp();  // parallel over designs, not inside each factorisation
     DesignEvaluator evaluator(spec, layout, prepared.vtu_dir);
     std::size_t i = 0, end = 0;
     while (!g_stop.load() && !failed.load()) {

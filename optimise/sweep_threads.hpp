@@ -3,8 +3,9 @@
 
 namespace rheomag::optimise {
 
-/// Makes every OpenMP parallel region of the process run on its calling thread (OpenMP
-/// max-active-levels 0) unless the user set OMP_THREAD_LIMIT. Debian's CHOLMOD 3 opens a team
+/// Makes every OpenMP parallel region started by the calling thread run on that thread (its
+/// OpenMP max-active-levels 0, a per-thread setting: call it in each worker) unless the user
+/// set OMP_THREAD_LIMIT. Debian's CHOLMOD 3 opens a team
 /// of 4 threads (a compiled-in num_threads) for each supernode of every factorisation; in a
 /// sweep those teams only add wake-ups and barrier waits (measured in docs/performance.md,
 /// sweep section). The numbers are unchanged: the regions split independent loops. The OpenMP
