@@ -351,12 +351,13 @@ void run_fit(const DriveSeries& d, const GreyboxSetup& setup, const ParamGuess& 
   for (int k = 0; k < N; ++k)
     if (guess.fixed[k]) fixed.push_back(k);
 
+  // Starting points are drawn first, in order, so the result does not depend on which thread
+  // finishes first; the starts are independent Ceres problems, solved `threads` at a time.
   std::mt19937 rng(options.seed);
   std::normal_distribution<double> normal(0.0, 1.0);
-  BestStart<N> best;
   const int starts = std::max(1, options.starts);
+  std::vector<std::array<double, N>> thetas(static_cast<std::size_t>(starts));
   for (int start = 0; start < starts; ++start) {
-    std::array<double, N> theta;
     for (int k = 0; k < N; ++k) {
       double value = guess.nominal[k];
       if (start > 0 && !guess.fixed[k]) {
@@ -365,8 +366,12 @@ void run_fit(const DriveSeries& d, const GreyboxSetup& setup, const ParamGuess& 
         const double margin = 1e-6 * (guess.upper[k] - guess.lower[k]);
         value = std::clamp(value, guess.lower[k] + margin, guess.upper[k] - margin);
       }
-      theta[k] = value / guess.scale[k];
+      thetas[static_cast<std::size_t>(start)][k] = value / guess.scale[k];
     }
+  }
+  std::vector<ceres::Solver::Summary> summaries(static_cast<std::size_t>(starts));
+  const auto solve_start = [&](std::size_t start) {
+    std::array<double, N>& theta = thetas[start];
     ceres::Problem problem;
     auto* cost = new ceres::AutoDiffCostFunction<FitResidual<N>, ceres::DYNAMIC, N>(
         new FitResidual<N>(functor), static_cast<int>(range.size()));
@@ -379,10 +384,14 @@ void run_fit(const DriveSeries& d, const GreyboxSetup& setup, const ParamGuess& 
     if (!fixed.empty()) problem.SetManifold(theta.data(), new ceres::SubsetManifold(N, fixed));
     const ceres::Solver::Options so =
         greybox_solver_options(options.max_iterations, 50);  // trial steps into unstable regions
-    ceres::Solver::Summary summary;
-    ceres::Solve(so, &problem, &summary);
+    ceres::Solve(so, &problem, &summaries[start]);
+  };
+  for_each_start(static_cast<std::size_t>(starts), fit_threads(options.threads), solve_start);
+  BestStart<N> best;
+  for (int start = 0; start < starts; ++start) {
     ++fit.starts_run;
-    best.offer(summary, theta, start);
+    best.offer(summaries[static_cast<std::size_t>(start)], thetas[static_cast<std::size_t>(start)],
+               start);
   }
   if (!best.found())
     throw ConvergenceError("grey-box fit of " + fit.model +

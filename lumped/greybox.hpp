@@ -19,6 +19,7 @@ struct GreyboxOptions {
   int starts = 4;                    ///< multi-start: number of starting points (first = nominal)
   unsigned seed = 1;                 ///< seed of the perturbed starting points
   int max_iterations = 60;           ///< Levenberg-Marquardt iterations per start
+  int threads = 0;                   ///< starts solved at once (0: one per core); same result
   double max_substep = 2.5e-4;       ///< [s] largest RK4 substep inside the fit
   double eps_fraction = 1e-3;        ///< sign/|.| regularisation width as a fraction of rms motion
 };

@@ -5,9 +5,14 @@
 #include <ceres/ceres.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <cstddef>
+#include <exception>
 #include <limits>
+#include <thread>
 #include <vector>
 
 #include "lumped/metrics.hpp"
@@ -28,6 +33,40 @@ inline ceres::Solver::Options greybox_solver_options(int max_iterations, int max
   so.max_num_consecutive_invalid_steps = max_invalid_steps;
   so.logging_type = ceres::SILENT;
   return so;
+}
+
+/// Threads for the starts of a multi-start fit: `requested` if positive, else the machine's cores.
+inline unsigned fit_threads(int requested) {
+  if (requested > 0) return static_cast<unsigned>(requested);
+  return std::max(1u, std::thread::hardware_concurrency());
+}
+
+/// Calls solve(i) for every start i < count on up to `threads` threads (each start once; the
+/// starts must not share mutable state); rethrows the first exception a start threw.
+template <class Solve>
+void for_each_start(std::size_t count, unsigned threads, const Solve& solve) {
+  const std::size_t workers = std::min<std::size_t>(std::max(1u, threads), count);
+  if (workers <= 1) {
+    for (std::size_t i = 0; i < count; ++i) solve(i);
+    return;
+  }
+  std::atomic<std::size_t> next{0};
+  std::vector<std::exception_ptr> errors(count);
+  const auto work = [&] {
+    for (std::size_t i = next++; i < count; i = next++) {
+      try {
+        solve(i);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
 }
 
 /// The lowest-cost start of a multi-start fit.
