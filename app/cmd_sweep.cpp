@@ -36,6 +36,7 @@ void print_summary(const SweepSummary& s, bool json) {
                      {"errors", s.errors},
                      {"meshes_built", s.meshes_built},
                      {"meshes_reused", s.meshes_reused},
+                     {"solvers_reused", s.solvers_reused},
                      {"seconds", s.seconds},
                      {"designs_per_minute", s.designs_per_minute},
                      {"interrupted", s.interrupted}};
@@ -45,8 +46,10 @@ void print_summary(const SweepSummary& s, bool json) {
   std::printf("sweep: %lld designs (%lld from an earlier run), %lld solved now, %lld error rows\n",
               s.designs, s.resumed, s.evaluated, s.errors);
   if (s.meshes_built + s.meshes_reused > 0) {
-    std::printf("meshes: %lld generated, %lld reused (same geometry)\n", s.meshes_built,
-                s.meshes_reused);
+    std::printf(
+        "meshes: %lld generated, %lld reused (same geometry); solvers: %lld reused "
+        "(only the currents changed)\n",
+        s.meshes_built, s.meshes_reused, s.solvers_reused);
   }
   std::printf("%.1f s, %.1f designs/min\nresults: %s\n", s.seconds, s.designs_per_minute,
               s.csv.c_str());

@@ -273,4 +273,9 @@ std::vector<SweepPoint> MagnetostaticSolver::sweep(int circuit,
   return table;
 }
 
+void MagnetostaticSolver::discard_factorisation() {
+  has_factor_ = factor_current_ = factorized_linear_ = false;
+  refactor_next_ = true;
+}
+
 }  // namespace rheomag::magnetostatics

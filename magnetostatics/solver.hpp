@@ -66,6 +66,9 @@ class MagnetostaticSolver {
   /// lambda(I) and L(I) of circuit `circuit` for each current (other circuits at their problem
   /// currents), each solve warm-started from the previous one, same factorisation analysis.
   std::vector<SweepPoint> sweep(int circuit, const std::vector<double>& currents);
+  /// Drops the numeric factorisation but keeps the symbolic analysis: the next solve gives
+  /// bitwise what a newly constructed solver of the same problem and mesh would give.
+  void discard_factorisation();
 
   const Problem& problem() const { return problem_; }
   const mesh::Mesh& mesh() const { return mesh_; }

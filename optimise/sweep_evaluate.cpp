@@ -19,16 +19,27 @@ void put(std::string& s, double v) {
   s += buffer;
 }
 
-}  // namespace
+/// True for the key of a circuit's current ("circuit.N.current").
+bool is_current_key(const ResolvedKey& key) {
+  return key.path.size() == 3 && key.path[0] == "circuit" && key.path[2] == "current";
+}
 
-std::string design_case_text(const SweepSpec& spec, const Design& design) {
+/// The text of the base case with the design's values set, its currents too if `currents`.
+std::string case_text(const SweepSpec& spec, const Design& design, bool currents) {
   toml::table table = spec.base.table;
   for (std::size_t a = 0; a < spec.axes.size(); ++a) {
-    override_key(table, spec.axes[a].key, design.values[a]);
+    if (currents || !is_current_key(spec.axes[a].key))
+      override_key(table, spec.axes[a].key, design.values[a]);
   }
   std::ostringstream text;
   text << table;
   return text.str();
+}
+
+}  // namespace
+
+std::string design_case_text(const SweepSpec& spec, const Design& design) {
+  return case_text(spec, design, true);
 }
 
 std::string geometry_signature(const magnetostatics::Problem& closed,
@@ -67,11 +78,11 @@ std::filesystem::path design_vtu_path(const std::filesystem::path& vtu_dir, long
   return vtu_dir / name;
 }
 
-DesignEvaluator::DesignEvaluator(const SweepSpec& spec, const RowLayout& layout,
-                                 std::filesystem::path vtu_dir)
+SweepEvaluator::SweepEvaluator(const SweepSpec& spec, const RowLayout& layout,
+                               std::filesystem::path vtu_dir)
     : spec_(&spec), layout_(&layout), vtu_dir_(std::move(vtu_dir)) {}
 
-std::string DesignEvaluator::row(const Design& design) {
+std::string SweepEvaluator::row(const Design& design) {
   try {
     return solve_row(design);
   } catch (const InputError& e) {
@@ -83,29 +94,42 @@ std::string DesignEvaluator::row(const Design& design) {
   }
 }
 
-std::string DesignEvaluator::solve_row(const Design& design) {
+std::string SweepEvaluator::solve_row(const Design& design) {
   using namespace magnetostatics;
   // Every design is validated exactly as a case file.
   const Case design_case = parse_case(design_case_text(*spec_, design), spec_->base_case.string());
-  Problem closed = close_domain(design_case.problem);
-  mesh::MeshOptions mesh_options = options_.mesh;
-  mesh_options.order = closed.order;
-  mesh_options.min_gap_elements = closed.min_gap_elements;
-  const std::string signature = geometry_signature(closed, mesh_options);
-  std::shared_ptr<const mesh::Mesh> mesh;
-  for (const auto& [key, cached] : meshes_) {
-    if (key == signature) mesh = cached;
-  }
-  if (mesh) {
-    ++reused_;
+  std::vector<double> currents;
+  for (const Circuit& circuit : design_case.problem.circuits) currents.push_back(circuit.current);
+  // Same text without the currents: same problem and mesh, only the currents differ.
+  const std::string solver_key = case_text(*spec_, design, false);
+  if (solver_ && solver_key == solver_key_) {
+    solver_->discard_factorisation();
+    ++solvers_reused_;
   } else {
-    mesh = std::make_shared<const mesh::Mesh>(mesh::generate_mesh(closed.geometry, mesh_options));
-    ++built_;
-    meshes_.emplace_back(signature, mesh);
-    if (meshes_.size() > kMeshCacheSize) meshes_.pop_front();
+    solver_.reset();
+    solver_key_.clear();
+    Problem closed = close_domain(design_case.problem);
+    mesh::MeshOptions mesh_options = options_.mesh;
+    mesh_options.order = closed.order;
+    mesh_options.min_gap_elements = closed.min_gap_elements;
+    const std::string signature = geometry_signature(closed, mesh_options);
+    std::shared_ptr<const mesh::Mesh> mesh;
+    for (const auto& [key, cached] : meshes_) {
+      if (key == signature) mesh = cached;
+    }
+    if (mesh) {
+      ++reused_;
+    } else {
+      mesh = std::make_shared<const mesh::Mesh>(mesh::generate_mesh(closed.geometry, mesh_options));
+      ++built_;
+      meshes_.emplace_back(signature, mesh);
+      if (meshes_.size() > kMeshCacheSize) meshes_.pop_front();
+    }
+    solver_ = std::make_unique<MagnetostaticSolver>(std::move(closed), *mesh, options_);
+    solver_key_ = solver_key;
   }
-  MagnetostaticSolver solver(std::move(closed), *mesh, options_);
-  const Solution solution = solver.solve();
+  MagnetostaticSolver& solver = *solver_;
+  const Solution solution = solver.solve(currents);
   const Results results = compute_results(solver, solution);
   const SolvedDesign solved{design_case, solver, solution, results};
   std::string line = layout_->ok_row(design, solved);

@@ -131,7 +131,7 @@ void run_worker(const SweepSpec& spec, const SweepRunOptions& options) {
   const std::filesystem::path vtu_dir =
       spec.write_vtu ? vtu_directory(results_path(spec, options.out_dir, options.shard))
                      : std::filesystem::path();
-  DesignEvaluator evaluator(spec, layout, vtu_dir);
+  SweepEvaluator evaluator(spec, layout, vtu_dir);
   std::string row;
   while (true) {
     MPI_Send(row.data(), static_cast<int>(row.size()), MPI_CHAR, 0, kTagRow, MPI_COMM_WORLD);

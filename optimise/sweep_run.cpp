@@ -197,7 +197,7 @@ SweepSummary run_sweep(const SweepSpec& spec, const SweepRunOptions& options) {
   std::exception_ptr failure;
   auto work = [&] {
     sweep_serial_openmp();  // parallel over designs, not inside each factorisation
-    DesignEvaluator evaluator(spec, layout, prepared.vtu_dir);
+    SweepEvaluator evaluator(spec, layout, prepared.vtu_dir);
     std::size_t i = 0, end = 0;
     while (!g_stop.load() && !failed.load()) {
       if (i == end) {
@@ -224,6 +224,7 @@ SweepSummary run_sweep(const SweepSpec& spec, const SweepRunOptions& options) {
     std::lock_guard<std::mutex> lock(mutex);
     summary.meshes_built += evaluator.meshes_built();
     summary.meshes_reused += evaluator.meshes_reused();
+    summary.solvers_reused += evaluator.solvers_reused();
   };
   std::vector<std::thread> workers;
   for (unsigned j = 1; j < jobs; ++j) workers.emplace_back(work);

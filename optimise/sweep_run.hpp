@@ -36,12 +36,13 @@ struct SweepRunOptions {
 /// What a run did.
 struct SweepSummary {
   std::filesystem::path csv;
-  long long designs = 0;        ///< designs of this run (the shard's)
-  long long resumed = 0;        ///< rows already in the CSV, skipped
-  long long evaluated = 0;      ///< designs solved now
-  long long errors = 0;         ///< error rows among those solved now
-  long long meshes_built = 0;   ///< meshes generated now
-  long long meshes_reused = 0;  ///< designs that reused a mesh of the same geometry
+  long long designs = 0;         ///< designs of this run (the shard's)
+  long long resumed = 0;         ///< rows already in the CSV, skipped
+  long long evaluated = 0;       ///< designs solved now
+  long long errors = 0;          ///< error rows among those solved now
+  long long meshes_built = 0;    ///< meshes generated now
+  long long meshes_reused = 0;   ///< designs that reused a mesh of the same geometry
+  long long solvers_reused = 0;  ///< designs solved on the previous design's solver (currents only)
   double seconds = 0.0;
   double designs_per_minute = 0.0;  ///< of the designs solved now
   bool interrupted = false;         ///< stopped by a signal: rows kept, the CSV not yet sorted

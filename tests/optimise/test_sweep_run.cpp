@@ -87,14 +87,16 @@ TEST(SweepRun, OneAndTwoJobsGiveTheSameCsvAndErrorRowsDoNotStopTheSweep) {
 
 TEST(SweepRun, ReusedMeshGivesTheNumbersOfADirectSolve) {
   // Reference: solve_problem on the same design case file (its own meshing and solver). The
-  // sweep meshes once and reuses the mesh for the other currents; the CSV cells must equal the
-  // direct solve's values formatted the same way (the mesher is deterministic).
+  // sweep meshes once and reuses the solver (symbolic analysis) for the other currents; the CSV
+  // cells must equal the direct solve's values formatted the same way (the mesher is
+  // deterministic and the reused solver discards its numeric factorisation).
   const auto dir = scratch_dir("reuse");
   const std::string axes = "[[axis]]\nkey = \"circuit.current\"\nvalues = [0.5, 1.0, 1.5]\n";
   const std::string text = sweep_text("", axes);
   const SweepSummary summary = run_in(dir, text, 1);
   EXPECT_EQ(summary.meshes_built, 1);
-  EXPECT_EQ(summary.meshes_reused, 2);
+  EXPECT_EQ(summary.meshes_reused, 0);
+  EXPECT_EQ(summary.solvers_reused, 2);  // only the current changes: one solver, analysed once
   const SweepSpec spec = parse_sweep(text, dir / "sweep.toml");
   const DesignGenerator designs(spec);
   const auto lines = lines_of(read_text(dir / "results.csv"));
