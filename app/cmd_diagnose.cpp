@@ -8,6 +8,8 @@
 #include <string>
 
 #include "app/command.hpp"
+#include "lumped/metrics.hpp"
+#include "lumped/recording_excerpt.hpp"
 #include "lumped/recording_io.hpp"
 #include "mesh/error.hpp"
 #include "optimise/diagnose_report.hpp"
@@ -21,6 +23,7 @@ struct DiagnoseCliOptions {
   std::string recording;
   std::string meta;
   std::string out;
+  std::string samples;
   bool json = false;
 };
 
@@ -80,9 +83,14 @@ const bool registered = app::register_command([](CLI::App& root) {
       ->required();
   cmd->add_option("--meta", o->meta, "Sidecar TOML to use instead of the one beside the CSV");
   cmd->add_option("--out", o->out, "Folder for diagnosis.json, report.html and traces.csv");
+  cmd->add_option("--samples", o->samples,
+                  "Diagnose only samples a:b (half-open indices; 'a:' to the end), e.g. an excerpt "
+                  "of a long recording");
   cmd->add_flag("--json", o->json, "Print the diagnosis as one JSON object on stdout");
   cmd->callback([o]() {
-    const auto rec = read_input(*o);
+    auto rec = read_input(*o);
+    if (!o->samples.empty())
+      rec = lumped::excerpt(rec, lumped::parse_sample_range(o->samples, rec.t.size(), "--samples"));
     const auto d = optimise::diagnose(rec);
     if (!o->out.empty()) optimise::write_diagnosis_outputs(d, o->out);
     if (o->json)

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include "lumped/recording_excerpt.hpp"
 #include "lumped/recording_io.hpp"
 #include "mesh/error.hpp"
 
@@ -156,4 +157,22 @@ TEST(SharedRecordings, MrdamperParses) {
   EXPECT_NEAR(rec.t[1] - rec.t[0], 0.005, 1e-12);
   EXPECT_EQ(rec.meta.output, "force");
   EXPECT_EQ(rec.meta.rig.kind, "damper");
+}
+
+TEST(SharedRecordings, ExcerptKeepsColumnsTimesAndSidecar) {
+  // Reference: the full recording's own samples 100..299.
+  const Recording rec =
+      read_recording(std::string(RHEOMAG_SHARED_DIR) + "/data/mrdamper/mrdamper.csv");
+  const Recording part = excerpt(rec, SampleRange{100, 300});
+  ASSERT_EQ(part.t.size(), 200u);
+  EXPECT_EQ(part.t.front(), rec.t[100]);
+  EXPECT_EQ(part.t.back(), rec.t[299]);
+  ASSERT_EQ(part.columns.size(), rec.columns.size());
+  for (const auto& [name, values] : rec.columns) {
+    ASSERT_EQ(part.columns.at(name).size(), 200u) << name;
+    EXPECT_EQ(part.columns.at(name)[7], values[107]) << name;
+  }
+  EXPECT_EQ(part.meta.output, rec.meta.output);
+  EXPECT_THROW(excerpt(rec, SampleRange{3000, 4000}), rheomag::InputError);
+  EXPECT_THROW(excerpt(rec, SampleRange{10, 10}), rheomag::InputError);
 }

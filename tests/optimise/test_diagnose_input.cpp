@@ -113,6 +113,12 @@ TEST(DiagnoseCli, RejectsWhatTheReaderRejectsWithExit2) {
   EXPECT_EQ(run(bin + " diagnose " + (dir / "lonely.csv").string() + " > /dev/null 2>&1"), 2);
   // Missing file.
   EXPECT_EQ(run(bin + " diagnose " + (dir / "none.csv").string() + " > /dev/null 2>&1"), 2);
+  // An excerpt outside the recording, reversed, or malformed.
+  for (const char* samples : {"0:999999999", "50:10", "x:y"})
+    EXPECT_EQ(run(bin + " diagnose " + (dir / "rec.csv").string() + " --samples " + samples +
+                  " > /dev/null 2>&1"),
+              2)
+        << samples;
 }
 
 TEST(DiagnoseCli, WritesJsonReportAndTraces) {
