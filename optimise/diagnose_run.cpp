@@ -182,14 +182,15 @@ std::string evidence_for(Effect e, const Diagnosis& d, const ModelFit& fit) {
         << " Pa s^2/m^3 explains it";
       break;
     case Effect::eddy_currents:
-    case Effect::mr_response_time:
-      o << "the output lags the baseline by " << fmt(lag_ms) << " ms, mostly at current edges ("
-        << fmt(100 * (regime_share(d.mismatch, "current rising edge") +
-                      regime_share(d.mismatch, "current falling edge")),
-               2)
+    case Effect::mr_response_time: {
+      const double edges = regime_share(d.mismatch, "current rising edge") +
+                           regime_share(d.mismatch, "current falling edge");
+      o << "the output lags the baseline by " << fmt(lag_ms) << " ms"
+        << (edges >= 0.5 ? ", mostly at current edges (" : " (") << fmt(100 * edges, 2)
         << " % of the residual energy in rising/falling-edge windows); a first-order lag of "
         << fmt(1e3 * value("time_constant")) << " ms between current and yield stress removes it";
       break;
+    }
     case Effect::coil_inductance:
       o << "the response lags the coil voltage at its edges (output " << fmt(lag_ms)
         << " ms behind the baseline); an inductance of " << fmt(value("inductance"))
