@@ -72,12 +72,42 @@ double ValveMapBlock::flow(double dp, double current) const {
 double ChamberBlock::capacitance(double pressure) const {
   double c = oil_volume / bulk_modulus;
   if (air_volume > 0.0) {
-    // Absolute pressure kept above 1 kPa (cavitation is not modelled).
-    const double p = 1e3 + smooth_ramp(pressure - 1e3, 1e3);
-    const double v_air = air_volume * std::pow(precharge / p, 1.0 / polytropic);
-    c += v_air / (polytropic * p);
+    const double ratio = precharge / pressure;
+    const double v_air =
+        air_volume * (polytropic == 1.0 ? ratio : std::pow(ratio, 1.0 / polytropic));
+    c += v_air / (polytropic * pressure);
   }
   return c;
+}
+
+double ChamberBlock::stored_volume(double pressure) const {
+  double v = oil_volume / bulk_modulus * (pressure - precharge);
+  if (air_volume > 0.0) {
+    const double ratio = precharge / pressure;
+    v += air_volume * (1.0 - (polytropic == 1.0 ? ratio : std::pow(ratio, 1.0 / polytropic)));
+  }
+  return v;
+}
+
+double ChamberBlock::pressure_at(double volume) const {
+  const double c = oil_volume / bulk_modulus, a = air_volume, p0 = precharge;
+  if (!(a > 0.0)) return p0 + volume / c;
+  // Isothermal: c p^2 + b p - a p0 = 0 with b = a - c p0 - volume; its positive root, written
+  // without cancellation.
+  const double b = a - c * p0 - volume, disc = std::sqrt(b * b + 4.0 * c * a * p0);
+  double p = b >= 0.0 ? 2.0 * a * p0 / (b + disc) : (disc - b) / (2.0 * c);
+  if (polytropic == 1.0) return p;
+  // Polytropic: Newton on u = ln p (stored_volume is increasing in u), from the isothermal root.
+  double u = std::log(p);
+  for (int it = 0; it < 60; ++it) {
+    const double e = std::exp(u), air = std::pow(p0 / e, 1.0 / polytropic);
+    const double g = c * (e - p0) + a * (1.0 - air) - volume;
+    const double dg = c * e + a * air / polytropic;
+    const double du = g / dg;
+    u -= du;
+    if (std::abs(du) < 1e-14) break;
+  }
+  return std::exp(u);
 }
 
 }  // namespace rheomag::lumped

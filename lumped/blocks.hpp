@@ -110,8 +110,14 @@ struct ChamberBlock {
   double air_volume = 0.0;      ///< [m^3] per chamber at the precharge pressure
   double precharge = 1e5;       ///< [Pa] absolute pressure at rest
   double polytropic = 1.0;      ///< 1 = isothermal, 1.4 = adiabatic
-  /// Hydraulic capacitance dV/dp [m^3/Pa] at absolute pressure p [Pa].
+  /// Hydraulic capacitance dV/dp [m^3/Pa] at absolute pressure p > 0 [Pa].
   double capacitance(double pressure) const;
+  /// Fluid volume [m^3] pushed into the chamber to raise it from the precharge to absolute
+  /// pressure p > 0: oil compression plus air compression (negative below the precharge; the
+  /// air expands without bound as p -> 0, so no absolute pressure below zero is reached).
+  double stored_volume(double pressure) const;
+  /// Absolute pressure [Pa] at stored volume `volume` [m^3]: the inverse of stored_volume.
+  double pressure_at(double volume) const;
 };
 
 }  // namespace rheomag::lumped

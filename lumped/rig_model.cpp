@@ -7,6 +7,7 @@
 #include <random>
 
 #include "lumped/ode.hpp"
+#include "lumped/ode_grid.hpp"
 #include "lumped/smooth.hpp"
 #include "mesh/error.hpp"
 
@@ -70,21 +71,35 @@ std::string rig_output_column(const RigSpec& spec) {
 
 namespace {
 
-/// Piecewise-linear drive signals with their segment slopes.
+/// The drive signals a rig reads, by role.
+enum class Drive { velocity, current, voltage, current_cmd };
+
+/// Piecewise-linear drive signals with their segment slopes. Successive lookups are near each
+/// other in time, so the last segment found is tried first (one instance per simulation).
 struct DriveInputs {
   const std::vector<double>* t = nullptr;
-  std::map<std::string, const std::vector<double>*> columns;
-  /// Value and slope of `name` at time tt.
-  std::pair<double, double> at(const std::string& name, double tt) const {
-    const auto& v = *columns.at(name);
+  const std::vector<double>* columns[4] = {nullptr, nullptr, nullptr, nullptr};
+  mutable std::size_t hint = 0;
+  /// Value and slope of drive `which` at time tt.
+  std::pair<double, double> at(Drive which, double tt) const {
+    const auto& v = *columns[static_cast<int>(which)];
     const auto& ts = *t;
-    auto it = std::upper_bound(ts.begin(), ts.end(), tt);
-    std::size_t k =
-        it == ts.begin() ? 0 : std::min<std::size_t>(it - ts.begin() - 1, ts.size() - 2);
+    const std::size_t k = segment(tt);
     const double slope = (v[k + 1] - v[k]) / (ts[k + 1] - ts[k]);
     if (tt <= ts.front()) return {v.front(), slope};
     if (tt >= ts.back()) return {v.back(), slope};
     return {v[k] + slope * (tt - ts[k]), slope};
+  }
+  /// Index k of the segment [t_k, t_k+1) holding tt (clamped to the first and last segment).
+  std::size_t segment(double tt) const {
+    const auto& ts = *t;
+    const std::size_t last = ts.size() - 2;
+    std::size_t k = std::min(hint, last);
+    if (ts[k] <= tt && (k == last || tt < ts[k + 1])) return k;
+    if (k < last && ts[k + 1] <= tt && (k + 1 == last || tt < ts[k + 2])) return hint = k + 1;
+    auto it = std::upper_bound(ts.begin(), ts.end(), tt);
+    k = it == ts.begin() ? 0 : std::min<std::size_t>(it - ts.begin() - 1, last);
+    return hint = k;
   }
 };
 
@@ -117,8 +132,12 @@ class RigSystem : public OdeSystem {
     if (spec.mr_response_time && *spec.mr_response_time > 0) i_mr_ = add(1.0);
     if (spec.kind != RigKind::coil_bench) {
       if (spec.compressibility) {
-        i_p1_ = add(1e6);
-        i_p2_ = add(1e6);
+        // Chamber states are stored fluid volumes, so the total is conserved exactly by the
+        // integrator (pressures follow from ChamberBlock::pressure_at); scale: 1 MPa's worth.
+        const double scale =
+            spec.compressibility->stored_volume(spec.compressibility->precharge + 1e6);
+        i_p1_ = add(scale);
+        i_p2_ = add(scale);
         if (spec.inertance) i_flow_ = add(1e-5);
       }
     }
@@ -130,16 +149,15 @@ class RigSystem : public OdeSystem {
     std::vector<double> x(scales_.size(), 0.0);
     const double t0 = in_.t->front();
     if (i_temperature_ >= 0) x[i_temperature_] = s_.coil_heating->ambient_c;
-    if (i_p1_ >= 0) x[i_p1_] = x[i_p2_] = s_.compressibility->precharge;
     // Electrical states start at the DC operating point of the first sample.
     RigSignals sig;
     if (s_.driver_mode == DriverMode::current_source) {
-      sig.current = in_.at("current", t0).first;
+      sig.current = in_.at(Drive::current, t0).first;
     } else if (s_.driver_mode == DriverMode::voltage) {
-      sig.current = s_.driver.gain * in_.at(s_.voltage_column, t0).first /
+      sig.current = s_.driver.gain * in_.at(Drive::voltage, t0).first /
                     s_.coil.resistance(temperature(x.data()));
     } else {
-      sig.current = in_.at("current_cmd", t0).first;
+      sig.current = in_.at(Drive::current_cmd, t0).first;
       if (i_integral_ >= 0 && s_.driver.ki > 0)
         x[i_integral_] = sig.current * s_.coil.resistance(temperature(x.data())) / s_.driver.ki;
     }
@@ -173,7 +191,7 @@ class RigSystem : public OdeSystem {
     // Driver and coil.
     double voltage = 0.0;
     if (s_.driver_mode == DriverMode::current_source) {
-      const auto [current, rate] = in_.at("current", t);
+      const auto [current, rate] = in_.at(Drive::current, t);
       sig.current = current;
       voltage = sig.current * resistance;
       if (i_flux_ >= 0) {  // Duhem: dlambda/dt = di/dt * dlambda/di along sign(di/dt)
@@ -188,9 +206,9 @@ class RigSystem : public OdeSystem {
       else if (i_flux_ >= 0)
         current = s_.coil.current_of_flux(x[i_flux_]);
       if (s_.driver_mode == DriverMode::voltage) {
-        voltage = s_.driver.gain * in_.at(s_.voltage_column, t).first;
+        voltage = s_.driver.gain * in_.at(Drive::voltage, t).first;
       } else {
-        const double command = in_.at("current_cmd", t).first;
+        const double command = in_.at(Drive::current_cmd, t).first;
         const double error = i_current_ >= 0 || i_flux_ >= 0 ? command - current : 0.0;
         const double raw = s_.driver.kp * error + s_.driver.ki * x[i_integral_];
         voltage = s_.driver.saturate(raw);
@@ -234,7 +252,7 @@ class RigSystem : public OdeSystem {
     sig.valve_current = field;
     if (s_.kind == RigKind::coil_bench) return;
     // Hydraulics.
-    const auto [velocity, acceleration] = in_.at("velocity", t);
+    const auto [velocity, acceleration] = in_.at(Drive::velocity, t);
     sig.velocity = velocity;
     sig.flow_in = s_.piston_area * velocity;
     if (!s_.compressibility) {
@@ -242,7 +260,8 @@ class RigSystem : public OdeSystem {
       sig.pressure = s_.valve.pressure_drop(sig.flow, field);
       if (s_.inertance) sig.pressure += *s_.inertance * s_.piston_area * acceleration;
     } else {
-      const double p1 = x[i_p1_], p2 = x[i_p2_];
+      const double p1 = s_.compressibility->pressure_at(x[i_p1_]);
+      const double p2 = s_.compressibility->pressure_at(x[i_p2_]);
       sig.pressure = p1 - p2;
       if (i_flow_ >= 0) {
         sig.flow = x[i_flow_];
@@ -250,8 +269,8 @@ class RigSystem : public OdeSystem {
       } else {
         sig.flow = s_.valve.flow(sig.pressure, field);
       }
-      dxdt[i_p1_] = (sig.flow_in - sig.flow) / s_.compressibility->capacitance(p1);
-      dxdt[i_p2_] = (sig.flow - sig.flow_in) / s_.compressibility->capacitance(p2);
+      dxdt[i_p1_] = sig.flow_in - sig.flow;
+      dxdt[i_p2_] = sig.flow - sig.flow_in;
     }
     sig.force = s_.piston_area * sig.pressure + s_.gas_force;
     if (s_.coulomb_force)
@@ -309,7 +328,19 @@ Recording simulate_rig(const RigSpec& spec_in, const Recording& drive) {
   if (drive.t.size() < 2) throw InputError("simulate: the drive needs at least 2 samples");
   DriveInputs in;
   in.t = &drive.t;
-  for (const auto& c : rig_drive_columns(spec_in)) in.columns[c] = &drive.column(c);
+  if (spec_in.kind != RigKind::coil_bench)
+    in.columns[static_cast<int>(Drive::velocity)] = &drive.column("velocity");
+  switch (spec_in.driver_mode) {
+    case DriverMode::current_source:
+      in.columns[static_cast<int>(Drive::current)] = &drive.column("current");
+      break;
+    case DriverMode::voltage:
+      in.columns[static_cast<int>(Drive::voltage)] = &drive.column(spec_in.voltage_column);
+      break;
+    case DriverMode::current_pi:
+      in.columns[static_cast<int>(Drive::current_cmd)] = &drive.column("current_cmd");
+      break;
+  }
   if (spec_in.inertance && *spec_in.inertance <= 0)
     throw InputError("simulate: inertance must be > 0");
   const RigSpec spec = with_chain_map(spec_in, drive);
@@ -325,7 +356,9 @@ Recording simulate_rig(const RigSpec& spec_in, const Recording& drive) {
       spacing = std::min(spacing, drive.t[k] - drive.t[k - 1]);
     opt.max_step = 0.5 * spacing;
   }
-  auto states = integrate_stiff(system, system.initial_state(), drive.t, opt);
+  auto states = spec.grid_substeps > 0
+                    ? integrate_on_grid(system, system.initial_state(), drive.t, spec.grid_substeps)
+                    : integrate_stiff(system, system.initial_state(), drive.t, opt);
 
   Recording rec;
   rec.t = drive.t;

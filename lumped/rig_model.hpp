@@ -46,6 +46,9 @@ struct RigSpec {
   double friction_velocity = 1e-3;                ///< [m/s] width of the friction tanh
   std::map<std::string, double> sensor_noise;     ///< column -> standard deviation (SI)
   unsigned noise_seed = 1;
+  /// 0: adaptive rosenbrock4 (error-controlled); n > 0: n fixed SDIRK2 steps per sample
+  /// interval (lumped/ode_grid.hpp: cost set by the samples, output smooth in the parameters).
+  int grid_substeps = 0;
 };
 
 /// Parses "constant_velocity_pump" | "bypass_cylinder" | "damper" | "coil_bench".
@@ -60,7 +63,8 @@ std::vector<std::string> rig_drive_columns(const RigSpec& spec);
 /// Output column the rig explains ("pressure", "force" or "current").
 std::string rig_output_column(const RigSpec& spec);
 
-/// Simulates the rig driven by the drive columns of `drive` at its sample times (rosenbrock4),
+/// Simulates the rig driven by the drive columns of `drive` at its sample times (rosenbrock4, or
+/// the fixed sample grid when spec.grid_substeps > 0),
 /// adds the spec's sensor noise, and returns a recording (CSV columns + sidecar metadata).
 Recording simulate_rig(const RigSpec& spec, const Recording& drive);
 

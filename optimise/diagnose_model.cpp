@@ -58,6 +58,7 @@ DiagnosisModel::DiagnosisModel(const lumped::Recording& rec) : rec_(rec) {
                      "\" is not one of constant_velocity_pump, bypass_cylinder, damper, "
                      "coil_bench; the baseline needs the rig layout");
   base_.description = meta.description;
+  base_.grid_substeps = kDiagnosisGridSubsteps;
   // Driver: an imposed current, or a voltage-driven coil, or an (ideally tracked) current command.
   if (has(meta.drive, "current")) {
     base_.driver_mode = DriverMode::current_source;
