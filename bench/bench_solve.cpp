@@ -44,7 +44,7 @@ void BM_NonlinearSolve(benchmark::State& state) {
   }
   const Problem problem = test::pot_core_problem(steel, 400, 2.0, 2);
   const mesh::Mesh mesh = test::pot_core_mesh(core, cells_per_mm(state.range(0)), 2);
-  int iterations = 0, factorizations = 0, cg = 0, dofs = 0;
+  int iterations = 0, local_steps = 0, factorizations = 0, cg = 0, dofs = 0;
   double cpu = 0.0;
   for (auto _ : state) {
     state.PauseTiming();
@@ -54,6 +54,7 @@ void BM_NonlinearSolve(benchmark::State& state) {
     const Solution s = solver.solve();
     cpu += process_cpu_seconds() - cpu_start;
     iterations = s.newton.iterations;
+    local_steps = s.newton.local_steps;
     factorizations = solver.factorizations();
     cg = solver.reuse_iterations();
     dofs = solver.dofs().free_count();
@@ -62,6 +63,7 @@ void BM_NonlinearSolve(benchmark::State& state) {
   state.counters["cpu_s"] = cpu / static_cast<double>(state.iterations());
   state.counters["dofs"] = dofs;
   state.counters["newton"] = iterations;
+  state.counters["local_steps"] = local_steps;
   state.counters["factorisations"] = factorizations;
   state.counters["cg_iterations"] = cg;
 }

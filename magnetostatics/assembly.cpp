@@ -90,6 +90,8 @@ Assembler::Assembler(const Problem& problem, const mesh::Mesh& mesh, const DofMa
     }
   }
   const int edge_nodes = mesh.order == 1 ? 2 : 3;
+  build_node_adjacency(edge_nodes);
+  build_colouring();
   for (const RobinEdge& edge : robin_edges_) {
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) {
@@ -100,6 +102,65 @@ Assembler::Assembler(const Problem& problem, const mesh::Mesh& mesh, const DofMa
       }
     }
   }
+}
+
+void Assembler::build_node_adjacency(int edge_nodes) {
+  // Counting sort of (node, triangle) and (node, Robin edge) pairs into CSR arrays.
+  const int nodes = static_cast<int>(mesh_.nodes.size());
+  const int m = mesh_.nodes_per_triangle();
+  auto build = [nodes](int items, int per_item, auto node_of, std::vector<int>& start,
+                       std::vector<int>& list) {
+    start.assign(nodes + 1, 0);
+    for (int e = 0; e < items; ++e) {
+      for (int i = 0; i < per_item; ++i) ++start[node_of(e, i) + 1];
+    }
+    for (int v = 0; v < nodes; ++v) start[v + 1] += start[v];
+    list.resize(start[nodes]);
+    std::vector<int> next(start.begin(), start.end() - 1);
+    for (int e = 0; e < items; ++e) {
+      for (int i = 0; i < per_item; ++i) list[next[node_of(e, i)]++] = e;
+    }
+  };
+  build(
+      static_cast<int>(mesh_.triangles.size()), m,
+      [&](int e, int i) { return mesh_.triangles[e][i]; }, node_element_start_, node_elements_);
+  build(
+      static_cast<int>(robin_edges_.size()), edge_nodes,
+      [&](int e, int i) { return robin_edges_[e].nodes[i]; }, node_edge_start_, node_edges_);
+}
+
+void Assembler::build_colouring() {
+  // Greedy colouring of the chunks in order: a chunk takes the smallest colour that no earlier
+  // chunk sharing a free dof with it has.
+  const int elements = static_cast<int>(mesh_.triangles.size());
+  const int chunks = (elements + kChunkElements - 1) / kChunkElements;
+  const int m = mesh_.nodes_per_triangle();
+  std::vector<int> colour(chunks, -1), seen_by;
+  for (int c = 0; c < chunks; ++c) {
+    for_chunk_elements(c, [&](int e) {
+      for (int i = 0; i < m; ++i) {
+        const int node = mesh_.triangles[e][i];
+        if (dofs_.dof_of_node[node] < 0) continue;
+        for (int s = node_element_start_[node]; s < node_element_start_[node + 1]; ++s) {
+          const int other = colour[node_elements_[s] / kChunkElements];
+          if (other < 0) continue;
+          if (other >= static_cast<int>(seen_by.size())) seen_by.resize(other + 1, -1);
+          seen_by[other] = c;
+        }
+      }
+    });
+    int k = 0;
+    while (k < static_cast<int>(seen_by.size()) && seen_by[k] == c) ++k;
+    colour[c] = k;
+    if (k >= static_cast<int>(colour_chunks_.size())) colour_chunks_.resize(k + 1);
+    colour_chunks_[k].push_back(c);
+  }
+}
+
+template <class Visit>
+void Assembler::for_chunk_elements(int chunk, Visit visit) const {
+  const int end = std::min(static_cast<int>(mesh_.triangles.size()), (chunk + 1) * kChunkElements);
+  for (int e = chunk * kChunkElements; e < end; ++e) visit(e);
 }
 
 int Assembler::matrix_offset(int row, int col) const {
@@ -122,29 +183,55 @@ bool Assembler::nonlinear() const {
 void Assembler::assemble(const Eigen::VectorXd& a, Eigen::VectorXd& residual,
                          SparseMatrix* tangent) const {
   residual.setZero(dofs_.free_count());
-  if (tangent) std::fill_n(tangent->valuePtr(), tangent->nonZeros(), 0.0);
   const int m = mesh_.nodes_per_triangle();
   const int elements = static_cast<int>(mesh_.triangles.size());
-  ElementQuadrature q;
-  double a_local[kMaxElementNodes], r_local[kMaxElementNodes];
-  double k_local[kMaxElementNodes * kMaxElementNodes];
-  for (int e = 0; e < elements; ++e) {
-    const auto& t = mesh_.triangles[e];
-    for (int i = 0; i < m; ++i) a_local[i] = a[t[i]];
-    quadrature(e, q);
-    element_residual_tangent(q, a_local, law(e), r_local, tangent ? k_local : nullptr);
-    for (int i = 0; i < m; ++i) {
-      const int row = dofs_.dof_of_node[t[i]];
-      if (row >= 0) residual[row] += r_local[i];
-    }
-    if (!tangent) continue;
-    const int* offsets = &element_offsets_[static_cast<std::size_t>(e) * m * m];
-    double* values = tangent->valuePtr();
-    for (int k = 0; k < m * m; ++k) {
-      if (offsets[k] >= 0) values[offsets[k]] += k_local[k];
+  double* values = tangent ? tangent->valuePtr() : nullptr;
+  const std::ptrdiff_t nonzeros = tangent ? tangent->nonZeros() : 0;
+#pragma omp parallel if (elements >= 8 * kChunkElements)
+  {
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t k = 0; k < nonzeros; ++k) values[k] = 0.0;
+    ElementQuadrature q;
+    double a_local[kMaxElementNodes], r_local[kMaxElementNodes];
+    double k_local[kMaxElementNodes * kMaxElementNodes];
+    for (const std::vector<int>& chunks : colour_chunks_) {
+      // Chunks of one colour touch disjoint dofs: no two threads add to the same entry.
+#pragma omp for schedule(dynamic, 1)
+      for (std::size_t c = 0; c < chunks.size(); ++c) {
+        for_chunk_elements(chunks[c], [&](int e) {
+          const auto& t = mesh_.triangles[e];
+          for (int i = 0; i < m; ++i) a_local[i] = a[t[i]];
+          quadrature(e, q);
+          element_residual_tangent(q, a_local, law(e), r_local, tangent ? k_local : nullptr);
+          for (int i = 0; i < m; ++i) {
+            const int row = dofs_.dof_of_node[t[i]];
+            if (row >= 0) residual[row] += r_local[i];
+          }
+          if (!tangent) return;
+          const int* offsets = &element_offsets_[static_cast<std::size_t>(e) * m * m];
+          for (int k = 0; k < m * m; ++k) {
+            if (offsets[k] >= 0) values[offsets[k]] += k_local[k];
+          }
+        });
+      }
     }
   }
   scatter_robin(a, residual, tangent);
+}
+
+void Assembler::robin_local(const RobinEdge& edge, const Eigen::VectorXd& a, double* r_local,
+                            double* k_local) const {
+  const int edge_nodes = mesh_.order == 1 ? 2 : 3;
+  std::fill_n(r_local, 3, 0.0);
+  std::fill_n(k_local, 9, 0.0);
+  for_robin_points(edge, [&](const double* n, double w) {
+    double a_point = 0.0;
+    for (int i = 0; i < edge_nodes; ++i) a_point += n[i] * a[edge.nodes[i]];
+    for (int i = 0; i < edge_nodes; ++i) {
+      r_local[i] += w * (edge.c0 * a_point - edge.c1) * n[i];
+      for (int j = 0; j < edge_nodes; ++j) k_local[i * 3 + j] += w * edge.c0 * n[i] * n[j];
+    }
+  });
 }
 
 template <class Visit>
@@ -169,15 +256,8 @@ void Assembler::scatter_robin(const Eigen::VectorXd& a, Eigen::VectorXd& residua
   const int edge_nodes = mesh_.order == 1 ? 2 : 3;
   for (std::size_t k = 0; k < robin_edges_.size(); ++k) {
     const RobinEdge& edge = robin_edges_[k];
-    double r_local[3] = {0, 0, 0}, k_local[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-    for_robin_points(edge, [&](const double* n, double w) {
-      double a_point = 0.0;
-      for (int i = 0; i < edge_nodes; ++i) a_point += n[i] * a[edge.nodes[i]];
-      for (int i = 0; i < edge_nodes; ++i) {
-        r_local[i] += w * (edge.c0 * a_point - edge.c1) * n[i];
-        for (int j = 0; j < edge_nodes; ++j) k_local[i * 3 + j] += w * edge.c0 * n[i] * n[j];
-      }
-    });
+    double r_local[3], k_local[9];
+    robin_local(edge, a, r_local, k_local);
     for (int i = 0; i < edge_nodes; ++i) {
       const int row = dofs_.dof_of_node[edge.nodes[i]];
       if (row >= 0) residual[row] += r_local[i];
@@ -190,17 +270,166 @@ void Assembler::scatter_robin(const Eigen::VectorXd& a, Eigen::VectorXd& residua
   }
 }
 
-double Assembler::boundary_energy(const Eigen::VectorXd& a) const {
+double Assembler::edge_energy(const RobinEdge& edge, const Eigen::VectorXd& a) const {
   const int edge_nodes = mesh_.order == 1 ? 2 : 3;
   double energy = 0.0;
-  for (const RobinEdge& edge : robin_edges_) {
-    for_robin_points(edge, [&](const double* n, double w) {
-      double a_point = 0.0;
-      for (int i = 0; i < edge_nodes; ++i) a_point += n[i] * a[edge.nodes[i]];
-      energy += w * (0.5 * edge.c0 * a_point * a_point - edge.c1 * a_point);
-    });
-  }
+  for_robin_points(edge, [&](const double* n, double w) {
+    double a_point = 0.0;
+    for (int i = 0; i < edge_nodes; ++i) a_point += n[i] * a[edge.nodes[i]];
+    energy += w * (0.5 * edge.c0 * a_point * a_point - edge.c1 * a_point);
+  });
   return energy;
+}
+
+double Assembler::boundary_energy(const Eigen::VectorXd& a) const {
+  double energy = 0.0;
+  for (const RobinEdge& edge : robin_edges_) energy += edge_energy(edge, a);
+  return energy;
+}
+
+Patch Assembler::patch(const std::vector<int>& seeds, int layers) const {
+  const int m = mesh_.nodes_per_triangle();
+  std::vector<char> in_patch(dofs_.free_count(), 0);
+  Patch p;
+  for (int d : seeds) {
+    if (!in_patch[d]) p.dofs.push_back(d), in_patch[d] = 1;
+  }
+  std::size_t ring_begin = 0;
+  for (int layer = 0; layer < layers; ++layer) {
+    const std::size_t ring_end = p.dofs.size();
+    for (std::size_t k = ring_begin; k < ring_end; ++k) {
+      const int node = dofs_.node_of_dof[p.dofs[k]];
+      for (int s = node_element_start_[node]; s < node_element_start_[node + 1]; ++s) {
+        const auto& t = mesh_.triangles[node_elements_[s]];
+        for (int i = 0; i < m; ++i) {
+          const int d = dofs_.dof_of_node[t[i]];
+          if (d >= 0 && !in_patch[d]) p.dofs.push_back(d), in_patch[d] = 1;
+        }
+      }
+    }
+    ring_begin = ring_end;
+  }
+  std::sort(p.dofs.begin(), p.dofs.end());
+  std::vector<char> element_in(mesh_.triangles.size(), 0), edge_in(robin_edges_.size(), 0);
+  for (int d : p.dofs) {
+    const int node = dofs_.node_of_dof[d];
+    for (int s = node_element_start_[node]; s < node_element_start_[node + 1]; ++s) {
+      if (!element_in[node_elements_[s]]) p.elements.push_back(node_elements_[s]);
+      element_in[node_elements_[s]] = 1;
+    }
+    for (int s = node_edge_start_[node]; s < node_edge_start_[node + 1]; ++s) {
+      if (!edge_in[node_edges_[s]]) p.edges.push_back(node_edges_[s]);
+      edge_in[node_edges_[s]] = 1;
+    }
+  }
+  std::sort(p.elements.begin(), p.elements.end());
+  std::sort(p.edges.begin(), p.edges.end());
+  p.rows = p.dofs;
+  auto add_row = [&](int node) {
+    const int d = dofs_.dof_of_node[node];
+    if (d >= 0 && !in_patch[d]) p.rows.push_back(d), in_patch[d] = 1;
+  };
+  for (int e : p.elements) {
+    for (int i = 0; i < m; ++i) add_row(mesh_.triangles[e][i]);
+  }
+  const int edge_nodes = mesh_.order == 1 ? 2 : 3;
+  for (int e : p.edges) {
+    for (int i = 0; i < edge_nodes; ++i) add_row(robin_edges_[e].nodes[i]);
+  }
+  return p;
+}
+
+void Assembler::assemble_patch(const Patch& patch, const Eigen::VectorXd& a,
+                               Eigen::VectorXd& residual, SparseMatrix* tangent) const {
+  // Local row of each dof: patch.rows is short, a sorted search is cheap enough.
+  std::vector<std::pair<int, int>> local(patch.rows.size());
+  for (std::size_t k = 0; k < patch.rows.size(); ++k)
+    local[k] = {patch.rows[k], static_cast<int>(k)};
+  std::sort(local.begin(), local.end());
+  auto row_of = [&](int node) {
+    const int d = dofs_.dof_of_node[node];
+    if (d < 0) return -1;
+    return std::lower_bound(local.begin(), local.end(), std::pair<int, int>{d, -1})->second;
+  };
+  const int unknowns = static_cast<int>(patch.dofs.size());
+  residual.setZero(static_cast<Eigen::Index>(patch.rows.size()));
+  std::vector<Eigen::Triplet<double>> entries;
+  auto scatter = [&](const int* row, int nodes, const double* r_local, const double* k_local,
+                     int stride) {
+    for (int i = 0; i < nodes; ++i) {
+      if (row[i] < 0) continue;
+      residual[row[i]] += r_local[i];
+      if (!tangent || row[i] >= unknowns) continue;
+      for (int j = 0; j < nodes; ++j) {
+        if (row[j] >= 0 && row[j] <= row[i])
+          entries.emplace_back(row[i], row[j], k_local[i * stride + j]);
+      }
+    }
+  };
+  const int m = mesh_.nodes_per_triangle();
+  ElementQuadrature q;
+  double a_local[kMaxElementNodes], r_local[kMaxElementNodes];
+  double k_local[kMaxElementNodes * kMaxElementNodes];
+  int row[kMaxElementNodes];
+  for (int e : patch.elements) {
+    const auto& t = mesh_.triangles[e];
+    for (int i = 0; i < m; ++i) a_local[i] = a[t[i]], row[i] = row_of(t[i]);
+    quadrature(e, q);
+    element_residual_tangent(q, a_local, law(e), r_local, tangent ? k_local : nullptr);
+    scatter(row, m, r_local, k_local, m);
+  }
+  const int edge_nodes = mesh_.order == 1 ? 2 : 3;
+  for (int k : patch.edges) {
+    const RobinEdge& edge = robin_edges_[k];
+    double re[3], ke[9];
+    robin_local(edge, a, re, ke);
+    for (int i = 0; i < edge_nodes; ++i) row[i] = row_of(edge.nodes[i]);
+    scatter(row, edge_nodes, re, ke, 3);
+  }
+  if (tangent) {
+    tangent->resize(unknowns, unknowns);
+    tangent->setFromTriplets(entries.begin(), entries.end());
+  }
+}
+
+double Assembler::patch_energy(const Patch& patch, const Eigen::VectorXd& a) const {
+  const int m = mesh_.nodes_per_triangle();
+  ElementQuadrature q;
+  double a_local[kMaxElementNodes];
+  double energy = 0.0;
+  for (int e : patch.elements) {
+    const auto& t = mesh_.triangles[e];
+    for (int i = 0; i < m; ++i) a_local[i] = a[t[i]];
+    quadrature(e, q);
+    energy += element_stored_energy(q, a_local, law(e));
+  }
+  for (int k : patch.edges) energy += edge_energy(robin_edges_[k], a);
+  return energy;
+}
+
+double Assembler::energy(const Eigen::VectorXd& a) const {
+  // Per-chunk sums added in chunk order: the same total for any number of threads.
+  const int m = mesh_.nodes_per_triangle();
+  const int elements = static_cast<int>(mesh_.triangles.size());
+  const int chunks = (elements + kChunkElements - 1) / kChunkElements;
+  std::vector<double> chunk_energy(chunks, 0.0);
+#pragma omp parallel if (elements >= 8 * kChunkElements)
+  {
+    ElementQuadrature q;
+    double a_local[kMaxElementNodes];
+#pragma omp for schedule(dynamic, 1)
+    for (int c = 0; c < chunks; ++c) {
+      for_chunk_elements(c, [&](int e) {
+        const auto& t = mesh_.triangles[e];
+        for (int i = 0; i < m; ++i) a_local[i] = a[t[i]];
+        quadrature(e, q);
+        chunk_energy[c] += element_stored_energy(q, a_local, law(e));
+      });
+    }
+  }
+  double total = 0.0;
+  for (double e : chunk_energy) total += e;
+  return total + boundary_energy(a);
 }
 
 Eigen::VectorXd Assembler::circuit_source(int c) const {

@@ -15,9 +15,22 @@ namespace rheomag::magnetostatics {
 /// Sparse matrix type of the tangent: column-major, only the lower triangle is stored.
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
+/// A set of free dofs with every triangle and mixed-boundary edge touching them (the patch of a
+/// local correction): the residual rows of `dofs` are complete over `elements` and `edges`.
+struct Patch {
+  std::vector<int> dofs;      ///< free dofs of the patch (the local unknowns), ascending
+  std::vector<int> elements;  ///< triangles with at least one node in `dofs`
+  std::vector<int> edges;     ///< mixed (Robin) boundary edges with a node in `dofs`
+  std::vector<int> rows;  ///< free dofs of those triangles and edges: `dofs` first, then the rest
+};
+
 /// Assembles the residual R(A) = K(A) A + (Robin terms) - (sources are added by the caller) and
 /// its exact tangent over one mesh. The sparsity pattern and the element-to-matrix scatter map
-/// are built once in the constructor and reused for every assembly.
+/// are built once in the constructor and reused for every assembly. Assembly runs on the OpenMP
+/// threads (OMP_NUM_THREADS, default one per core): the triangles are cut into fixed chunks of
+/// consecutive triangles, chunks sharing no free dof get one colour, and the chunks of a colour
+/// are assembled in parallel, colour after colour. Every matrix and residual entry thus receives
+/// its contributions in the same order for any number of threads (bitwise the same result).
 class Assembler {
  public:
   /// Checks that every triangle's region has a material (InputError otherwise).
@@ -44,6 +57,21 @@ class Assembler {
   /// Energy of the mixed (Robin) boundary terms, integral (c0 A^2 / 2 - c1 A) dw [J]: for the
   /// open boundary (c0 = nu0 / R0, c1 = 0) the exact field energy outside R0 of a dipole field.
   double boundary_energy(const Eigen::VectorXd& a) const;
+  /// Stored energy of the internal fields plus the boundary terms at the nodal values `a`:
+  /// sum over triangles of integral w(B) dV + boundary_energy(a) [J] (its gradient over the free
+  /// dofs is the residual of assemble).
+  double energy(const Eigen::VectorXd& a) const;
+  /// The patch of `seeds` (free dofs) grown by `layers` rings of triangles: dofs = the seeds and
+  /// every free dof sharing a triangle with a dof of the previous ring.
+  Patch patch(const std::vector<int>& seeds, int layers) const;
+  /// Residual contributions of the patch's triangles and edges at `a` into `residual`, one entry
+  /// per patch row (patch.rows order), and when `tangent` is not null the tangent block of the
+  /// patch dofs (lower triangle, local numbering = position in patch.dofs).
+  void assemble_patch(const Patch& patch, const Eigen::VectorXd& a, Eigen::VectorXd& residual,
+                      SparseMatrix* tangent) const;
+  /// energy(a) restricted to the patch's triangles and edges [J] (differences between two `a`
+  /// that agree outside patch.dofs equal those of energy).
+  double patch_energy(const Patch& patch, const Eigen::VectorXd& a) const;
   /// True when some material has a B-H curve.
   bool nonlinear() const;
 
@@ -54,6 +82,13 @@ class Assembler {
   };
   template <class Visit>
   void for_robin_points(const RobinEdge& edge, Visit visit) const;
+  void build_node_adjacency(int edge_nodes);
+  void build_colouring();
+  template <class Visit>
+  void for_chunk_elements(int chunk, Visit visit) const;  // visit(e) for the chunk's triangles
+  void robin_local(const RobinEdge& edge, const Eigen::VectorXd& a, double* r_local,
+                   double* k_local) const;  // 3 residual and 3 x 3 tangent entries of one edge
+  double edge_energy(const RobinEdge& edge, const Eigen::VectorXd& a) const;
   void scatter_robin(const Eigen::VectorXd& a, Eigen::VectorXd& residual,
                      SparseMatrix* tangent) const;
   int matrix_offset(int row, int col) const;  // position in pattern_ values, -1 if not stored
@@ -68,6 +103,10 @@ class Assembler {
   SparseMatrix pattern_;
   std::vector<int> element_offsets_;  // nodes^2 per element, row-major local (i, j)
   std::vector<int> robin_offsets_;    // 9 per Robin edge
+  std::vector<int> node_element_start_, node_elements_;  // triangles of each node (CSR)
+  std::vector<int> node_edge_start_, node_edges_;        // Robin edges of each node (CSR)
+  static constexpr int kChunkElements = 256;             // triangles per assembly chunk
+  std::vector<std::vector<int>> colour_chunks_;          // chunks of each colour, ascending
 };
 
 }  // namespace rheomag::magnetostatics

@@ -162,6 +162,15 @@ void element_source(const ElementQuadrature& q, double* source) {
   }
 }
 
+double element_stored_energy(const ElementQuadrature& q, const double* a, const Reluctivity& law) {
+  double energy = 0.0;
+  for (int p = 0; p < q.points; ++p) {
+    const auto [br, bz] = element_b(q, p, a);
+    energy += q.weight[p] * law.energy_density(br * br + bz * bz);
+  }
+  return energy;
+}
+
 std::array<double, 2> element_energy(const ElementQuadrature& q, const double* a,
                                      const Reluctivity& law) {
   double energy = 0.0, b_dot_h = 0.0;

@@ -52,6 +52,9 @@ void element_residual_tangent(const ElementQuadrature& q, const double* a, const
 /// Source vector f_i = sum_q w N_i (per unit current density, J = 1 A/m^2).
 void element_source(const ElementQuadrature& q, double* source);
 
+/// Stored magnetic energy integral_V integral_0^B H dB dV of one triangle [J].
+double element_stored_energy(const ElementQuadrature& q, const double* a, const Reluctivity& law);
+
 /// Magnetic energy integral_V integral_0^B H dB dV and integral_V B . H dV of one triangle [J].
 std::array<double, 2> element_energy(const ElementQuadrature& q, const double* a,
                                      const Reluctivity& law);

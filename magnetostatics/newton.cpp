@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "mesh/error.hpp"
@@ -43,11 +44,26 @@ NewtonReport newton_solve(NonlinearSystem& system, Eigen::VectorXd& x, double sc
     const Eigen::VectorXd step = system.solve_jacobian(-r, forcing);
     double alpha = 1.0, trial_norm = 0.0;
     bool accepted = false;
+    // Energy test: E is convex and R = grad E, so R.dx < 0 for a descent direction; its value far
+    // from the solution is what |R| cannot tell (a few saturated corner dofs can hold most of
+    // |R| while the step lowers the energy everywhere else).
+    const double slope = r.dot(step);
+    double energy = std::numeric_limits<double>::quiet_NaN();
+    bool has_energy = slope < 0.0;
     for (int k = 0; k <= options.max_backtracks; ++k, alpha *= 0.5) {
       trial = x + alpha * step;
       trial_norm = system.residual(trial, trial_r);
-      if (std::isfinite(trial_norm) &&
-          trial_norm <= (1.0 - options.sufficient_decrease * alpha) * norm) {
+      if (!std::isfinite(trial_norm)) continue;
+      if (trial_norm <= (1.0 - options.sufficient_decrease * alpha) * norm) {
+        accepted = true;
+        break;
+      }
+      if (has_energy && std::isnan(energy)) {
+        energy = system.energy(x);
+        has_energy = std::isfinite(energy);
+      }
+      if (has_energy &&
+          system.energy(trial) <= energy + options.sufficient_decrease * alpha * slope) {
         accepted = true;
         break;
       }
@@ -59,6 +75,9 @@ NewtonReport newton_solve(NonlinearSystem& system, Eigen::VectorXd& x, double sc
     x.swap(trial);
     r.swap(trial_r);
     norm = trial_norm;
+    if (options.local_iterations > 0 && norm > options.relative_tolerance * scale) {
+      report.local_steps += system.correct_locally(x, r, norm);
+    }
     report.iterations = it + 1;
     report.step_lengths.push_back(alpha);
     report.residual_history.push_back(norm / scale);

@@ -1,7 +1,9 @@
 #pragma once
-// Newton's method with a backtracking line search on the residual norm.
+// Newton's method with a backtracking line search on the residual norm or, for systems with a
+// potential, on that energy; optional local corrections where the residual concentrates.
 
 #include <Eigen/Core>
+#include <limits>
 #include <vector>
 
 namespace rheomag::magnetostatics {
@@ -17,6 +19,14 @@ struct NewtonOptions {
   /// |J dx + R| <= eta |R| with eta = min(max_forcing, |R| / |R(x = 0)|), which keeps the
   /// convergence quadratic (eta = O(|R|)).
   double max_forcing = 1e-2;
+  /// Local corrections after each Newton step (nonlinear elimination): when at most
+  /// local_max_dofs dofs hold local_fraction of |R|^2 (a saturating corner), up to
+  /// local_iterations Newton steps on those dofs grown by local_layers rings of elements, the rest
+  /// held fixed. 0 disables them.
+  int local_iterations = 3;
+  double local_fraction = 0.9;  ///< share of |R|^2 that makes the residual "concentrated"
+  int local_max_dofs = 500;     ///< at most this many seed dofs
+  int local_layers = 4;         ///< rings of elements added around the seed dofs
 };
 
 /// What the iteration did.
@@ -24,6 +34,7 @@ struct NewtonReport {
   int iterations = 0;                    ///< Newton steps taken
   std::vector<double> residual_history;  ///< relative residual before the first and after each step
   std::vector<double> step_lengths;      ///< accepted line-search step per iteration
+  int local_steps = 0;                   ///< local correction steps in all
 };
 
 /// A nonlinear system R(x) = 0 with a factorisable Jacobian.
@@ -37,12 +48,24 @@ class NonlinearSystem {
   /// Solves J dx = rhs for the Jacobian of the last factorize_jacobian call, to a relative
   /// residual `tolerance` or better.
   virtual Eigen::VectorXd solve_jacobian(const Eigen::VectorXd& rhs, double tolerance) = 0;
+  /// A potential E(x) with R = grad E (convex for a monotone material law), or NaN when the
+  /// system has none. The line search also accepts steps that decrease E sufficiently.
+  virtual double energy(const Eigen::VectorXd& /*x*/) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  /// Local corrections after a Newton step: may change x where the residual r concentrates,
+  /// keeping r = R(x) and norm = |r| up to date; returns the number of local steps (0: none).
+  virtual int correct_locally(Eigen::VectorXd& /*x*/, Eigen::VectorXd& /*r*/, double& /*norm*/) {
+    return 0;
+  }
 };
 
-/// Solves R(x) = 0 from the initial x; `scale` = |R(x = 0)| is the reference of the relative
-/// residual (if scale == 0 the solution is x = 0). Throws ConvergenceError, with the relative
-/// residual reached, when the tolerance is not met within max_iterations, when the line search
-/// cannot reduce the residual, or when the residual exceeds divergence_factor * scale or is NaN.
+/// Solves R(x) = 0 from the initial x; a step x + alpha dx is accepted when it reduces |R| by the
+/// Armijo factor or, for a system with energy, when E(x + alpha dx) <= E(x) + c alpha R.dx; `scale`
+/// = |R(x = 0)| is the reference of the relative residual (if scale == 0 the solution is x = 0).
+/// Throws ConvergenceError, with the relative residual reached, when the tolerance is not met
+/// within max_iterations, when the line search cannot reduce the residual, or when the residual
+/// exceeds divergence_factor * scale or is NaN.
 NewtonReport newton_solve(NonlinearSystem& system, Eigen::VectorXd& x, double scale,
                           const NewtonOptions& options);
 

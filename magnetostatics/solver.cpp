@@ -1,11 +1,13 @@
 #include "magnetostatics/solver.hpp"
 
-#include <Eigen/IterativeLinearSolvers>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
 
+#include "magnetostatics/local_correction.hpp"
+#include "magnetostatics/preconditioned_cg.hpp"
+#include "magnetostatics/serial_openmp.hpp"
 #include "mesh/error.hpp"
 
 namespace rheomag::magnetostatics {
@@ -24,6 +26,20 @@ class MagnetostaticSolver::System : public NonlinearSystem {
     solver_.assembler_->assemble(solver_.free_to_nodes(x), r, nullptr);
     r -= source_;
     return r.norm();
+  }
+  /// Stored energy plus boundary terms minus the sources' work: R = grad E.
+  double energy(const Eigen::VectorXd& x) override {
+    return solver_.assembler_->energy(solver_.free_to_nodes(x)) - source_.dot(x);
+  }
+  int correct_locally(Eigen::VectorXd& x, Eigen::VectorXd& r, double& norm) override {
+    if (solver_.linear_) return 0;  // one Newton step solves a linear problem everywhere
+    Eigen::VectorXd a = solver_.free_to_nodes(x);
+    const int steps = magnetostatics::correct_locally(*solver_.assembler_, solver_.dofs_, source_,
+                                                      solver_.options_.newton, a, r, norm);
+    for (int d = 0; steps > 0 && d < solver_.dofs_.free_count(); ++d) {
+      x[d] = a[solver_.dofs_.node_of_dof[d]];
+    }
+    return steps;
   }
   /// Keeps R(x) for a later residual call at the same x (one assembly less).
   void remember(const Eigen::VectorXd& x, const Eigen::VectorXd& r) {
@@ -79,6 +95,7 @@ MagnetostaticSolver::MagnetostaticSolver(Problem problem, mesh::Mesh mesh, Solve
   }
   tangent_ = assembler_->pattern();
   if (dofs_.free_count() > 0) {
+    const SerialOpenMp serial;
     cholesky_.analyzePattern(tangent_);
     if (cholesky_.info() != Eigen::Success) {
       throw ConvergenceError("CHOLMOD symbolic analysis failed for " +
@@ -94,37 +111,6 @@ Eigen::VectorXd MagnetostaticSolver::free_to_nodes(const Eigen::VectorXd& x) con
   return a;
 }
 
-namespace {
-
-/// Eigen preconditioner applying an existing Cholesky factorisation (of a nearby matrix).
-class FactorPreconditioner {
- public:
-  using Factor = Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>;
-  void set(const Factor* factor) { factor_ = factor; }
-  template <class Matrix>
-  FactorPreconditioner& analyzePattern(const Matrix&) {
-    return *this;
-  }
-  template <class Matrix>
-  FactorPreconditioner& factorize(const Matrix&) {
-    return *this;
-  }
-  template <class Matrix>
-  FactorPreconditioner& compute(const Matrix&) {
-    return *this;
-  }
-  template <class Rhs>
-  Eigen::VectorXd solve(const Rhs& b) const {
-    return factor_->solve(b);
-  }
-  Eigen::ComputationInfo info() const { return Eigen::Success; }
-
- private:
-  const Factor* factor_ = nullptr;
-};
-
-}  // namespace
-
 void MagnetostaticSolver::prepare_jacobian(const Eigen::VectorXd& a_nodes) {
   if (linear_ && factorized_linear_) {
     factor_current_ = true;
@@ -132,11 +118,17 @@ void MagnetostaticSolver::prepare_jacobian(const Eigen::VectorXd& a_nodes) {
   }
   Eigen::VectorXd r;
   assembler_->assemble(a_nodes, r, &tangent_);
+  tangent_a_ = a_nodes;
   factor_current_ = false;
-  if (!has_factor_ || refactor_next_ || linear_) factorize_tangent();
+  // A moved by more than kRefactorChange since the factorised tangent: far from the solution the
+  // tangents differ too much (mostly at saturating corners) for a few CG iterations to pay.
+  const bool moved =
+      !has_factor_ || (a_nodes - factored_a_).norm() > kRefactorChange * a_nodes.norm();
+  if (moved || refactor_next_ || linear_) factorize_tangent();
 }
 
 void MagnetostaticSolver::factorize_tangent() {
+  const SerialOpenMp serial;
   cholesky_.factorize(tangent_);
   ++factorizations_;
   if (cholesky_.info() != Eigen::Success) {
@@ -145,28 +137,32 @@ void MagnetostaticSolver::factorize_tangent() {
                            std::to_string(dofs_.free_count()) + " unknowns)");
   }
   has_factor_ = factor_current_ = true;
+  factored_a_ = tangent_a_;
   refactor_next_ = false;
   factorized_linear_ = linear_;
 }
 
-Eigen::VectorXd MagnetostaticSolver::solve_jacobian(const Eigen::VectorXd& rhs, double tolerance) {
+Eigen::VectorXd MagnetostaticSolver::solve_jacobian(const Eigen::VectorXd& rhs, double tolerance,
+                                                    double functional_tolerance) {
   if (factor_current_) return solve_factorized(rhs);
-  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower, FactorPreconditioner> cg;
-  cg.preconditioner().set(&cholesky_);
-  cg.setMaxIterations(kReuseIterations);
-  cg.setTolerance(tolerance);
-  cg.compute(tangent_);
-  Eigen::VectorXd x = cg.solve(rhs);
-  reuse_iterations_ += static_cast<int>(cg.iterations());
-  if (cg.info() == Eigen::Success && x.allFinite()) {
-    if (2 * cg.iterations() > kReuseIterations) refactor_next_ = true;
+  Eigen::VectorXd x;
+  const SerialOpenMp serial;
+  const CgResult cg = preconditioned_cg(tangent_, cholesky_, rhs, tolerance, kReuseIterations, x,
+                                        functional_tolerance);
+  reuse_iterations_ += cg.iterations;
+  if (cg.converged && x.allFinite()) {
+    if (2 * cg.iterations > kReuseIterations) refactor_next_ = true;
     return x;
   }
+  // The factor was too far from this tangent: factorise it, and factorise the next one directly
+  // too (far from the solution consecutive tangents differ as much).
   factorize_tangent();
+  refactor_next_ = true;
   return solve_factorized(rhs);
 }
 
 Eigen::VectorXd MagnetostaticSolver::solve_factorized(const Eigen::VectorXd& rhs) {
+  const SerialOpenMp serial;
   Eigen::VectorXd x = cholesky_.solve(rhs);
   if (cholesky_.info() != Eigen::Success || !x.allFinite()) {
     throw ConvergenceError("CHOLMOD triangular solve failed");
@@ -233,13 +229,13 @@ Solution MagnetostaticSolver::solve_with(const std::vector<double>& currents,
   solution.a = free_to_nodes(x);
   for (const Eigen::VectorXd& f : sources_) solution.flux_linkage.push_back(f.dot(solution.a));
   if (incremental && n > 0) {
-    // dlambda_c/dI_c = F_c^T K_t^{-1} F_c with K_t the exact tangent at the solution (solved to
-    // 1e-12 relative residual).
+    // dlambda_c/dI_c = F_c^T K_t^{-1} F_c with K_t the exact tangent at the solution, to 1e-12
+    // relative (CG's error of F.x, r.K^-1.r, below 1e-12 F.x, or a residual below 1e-12).
     prepare_jacobian(solution.a);
     for (const Eigen::VectorXd& f : sources_) {
       Eigen::VectorXd f_free(n);
       for (int d = 0; d < n; ++d) f_free[d] = f[dofs_.node_of_dof[d]];
-      solution.incremental_inductance.push_back(f_free.dot(solve_jacobian(f_free, 1e-12)));
+      solution.incremental_inductance.push_back(f_free.dot(solve_jacobian(f_free, 1e-12, 1e-12)));
     }
   }
   solution.seconds =

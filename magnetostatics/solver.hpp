@@ -44,11 +44,14 @@ struct SweepPoint {
 };
 
 /// Nonlinear magnetostatic finite-element solver on a fixed mesh (see element_kernel.hpp for the
-/// weak form). Newton with the exact Jacobian; CHOLMOD supernodal Cholesky whose symbolic analysis
-/// is done once in the constructor and reused by every factorisation of every solve. A Newton
-/// step whose Jacobian is close to the last factorised one is solved by conjugate gradients
-/// preconditioned with that factorisation (to Newton's forcing tolerance); the Jacobian is
-/// refactorised when that takes more than kReuseIterations iterations.
+/// weak form). Newton with the exact Jacobian, a line search on the residual norm or the field
+/// energy, and local corrections at saturating corners (newton.hpp, local_correction.hpp);
+/// CHOLMOD supernodal Cholesky whose symbolic analysis is done once in the constructor and reused
+/// by every factorisation of every solve (CHOLMOD's OpenMP regions run serially,
+/// serial_openmp.hpp). A Newton step whose A is within kRefactorChange of the A of the last
+/// factorisation is solved by conjugate gradients preconditioned with that factorisation (to
+/// Newton's forcing tolerance); otherwise, or after a CG solve that failed or took more than
+/// kReuseIterations / 2 iterations, the Jacobian is factorised.
 class MagnetostaticSolver {
  public:
   /// Takes the problem (regions, materials, circuits, boundaries) and a mesh of it
@@ -88,6 +91,9 @@ class MagnetostaticSolver {
 
   /// Most CG iterations accepted with a reused factorisation before refactorising.
   static constexpr int kReuseIterations = 8;
+  /// Relative change of the nodal A since the last factorisation above which the next Jacobian
+  /// is factorised rather than solved by CG with the old factor.
+  static constexpr double kRefactorChange = 1e-2;
 
  private:
   class System;
@@ -96,7 +102,8 @@ class MagnetostaticSolver {
   Eigen::VectorXd free_to_nodes(const Eigen::VectorXd& x) const;
   void prepare_jacobian(const Eigen::VectorXd& a_nodes);
   void factorize_tangent();
-  Eigen::VectorXd solve_jacobian(const Eigen::VectorXd& rhs, double tolerance);
+  Eigen::VectorXd solve_jacobian(const Eigen::VectorXd& rhs, double tolerance,
+                                 double functional_tolerance = 0.0);
   Eigen::VectorXd solve_factorized(const Eigen::VectorXd& rhs);
 
   Problem problem_;
@@ -107,6 +114,7 @@ class MagnetostaticSolver {
   std::vector<Eigen::VectorXd> sources_;
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholesky_;
   SparseMatrix tangent_;
+  Eigen::VectorXd tangent_a_, factored_a_;  // nodal A of tangent_ and of the factorised tangent
   bool linear_ = true;
   bool factorized_linear_ = false;  // linear problem: the one factorisation stays valid
   bool has_factor_ = false;         // cholesky_ holds a factorisation of some tangent

@@ -1,0 +1,95 @@
+#include "magnetostatics/local_correction.hpp"
+
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+namespace rheomag::magnetostatics {
+namespace {
+
+/// The dofs of largest |r_i| that hold `fraction` of |r|^2, if at most `max_dofs` of them do;
+/// empty otherwise.
+std::vector<int> concentrated_dofs(const Eigen::VectorXd& r, double fraction, int max_dofs) {
+  const int n = static_cast<int>(r.size());
+  const int count = std::min(n, max_dofs);
+  if (count == 0) return {};
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::partial_sort(order.begin(), order.begin() + count, order.end(),
+                    [&](int i, int j) { return std::abs(r[i]) > std::abs(r[j]); });
+  const double target = fraction * r.squaredNorm();
+  double held = 0.0;
+  for (int k = 0; k < count; ++k) {
+    held += r[order[k]] * r[order[k]];
+    if (held >= target) return {order.begin(), order.begin() + k + 1};
+  }
+  return {};
+}
+
+/// Energy of the patch including the sources' work on its dofs (differences equal those of E).
+double patch_potential(const Assembler& assembler, const DofMap& dofs, const Patch& patch,
+                       const Eigen::VectorXd& source, const Eigen::VectorXd& a) {
+  double work = 0.0;
+  for (int d : patch.dofs) work += source[d] * a[dofs.node_of_dof[d]];
+  return assembler.patch_energy(patch, a) - work;
+}
+
+}  // namespace
+
+int correct_locally(const Assembler& assembler, const DofMap& dofs, const Eigen::VectorXd& source,
+                    const NewtonOptions& options, Eigen::VectorXd& a, Eigen::VectorXd& r,
+                    double& norm) {
+  int steps = 0;
+  for (int it = 0; it < options.local_iterations; ++it) {
+    const std::vector<int> seeds =
+        concentrated_dofs(r, options.local_fraction, options.local_max_dofs);
+    const Patch patch = assembler.patch(seeds, options.local_layers);
+    const int unknowns = static_cast<int>(patch.dofs.size());
+    const int rows = static_cast<int>(patch.rows.size());
+    Eigen::VectorXd internal, trial_internal;
+    SparseMatrix tangent;
+    assembler.assemble_patch(patch, a, internal, &tangent);
+    Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower> cholesky(tangent);
+    if (cholesky.info() != Eigen::Success) break;
+    Eigen::VectorXd r_rows(rows);
+    for (int k = 0; k < rows; ++k) r_rows[k] = r[patch.rows[k]];
+    const Eigen::VectorXd step = cholesky.solve(-r_rows.head(unknowns));
+    const double slope = r_rows.head(unknowns).dot(step);
+    if (!step.allFinite() || !(slope < 0.0)) break;
+    const double rows_norm = r_rows.norm();
+    const double potential = patch_potential(assembler, dofs, patch, source, a);
+
+    Eigen::VectorXd start(unknowns);
+    for (int k = 0; k < unknowns; ++k) start[k] = a[dofs.node_of_dof[patch.dofs[k]]];
+    double alpha = 1.0;
+    bool accepted = false;
+    Eigen::VectorXd trial_rows;
+    for (int k = 0; k <= options.max_backtracks; ++k, alpha *= 0.5) {
+      for (int j = 0; j < unknowns; ++j) {
+        a[dofs.node_of_dof[patch.dofs[j]]] = start[j] + alpha * step[j];
+      }
+      assembler.assemble_patch(patch, a, trial_internal, nullptr);
+      trial_rows = r_rows + (trial_internal - internal);  // the source is unchanged
+      const double trial_norm = trial_rows.norm();
+      if (!std::isfinite(trial_norm)) continue;
+      if (trial_norm <= (1.0 - options.sufficient_decrease * alpha) * rows_norm ||
+          patch_potential(assembler, dofs, patch, source, a) <=
+              potential + options.sufficient_decrease * alpha * slope) {
+        accepted = true;
+        break;
+      }
+    }
+    if (!accepted) {
+      for (int j = 0; j < unknowns; ++j) a[dofs.node_of_dof[patch.dofs[j]]] = start[j];
+      break;
+    }
+    for (int k = 0; k < rows; ++k) r[patch.rows[k]] = trial_rows[k];
+    norm = r.norm();
+    ++steps;
+  }
+  return steps;
+}
+
+}  // namespace rheomag::magnetostatics
