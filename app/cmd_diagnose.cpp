@@ -25,6 +25,7 @@ struct DiagnoseCliOptions {
   std::string out;
   std::string samples;
   bool json = false;
+  bool quiet = false;
 };
 
 /// The recording, with its sidecar from --meta when given.
@@ -87,11 +88,15 @@ const bool registered = app::register_command([](CLI::App& root) {
                   "Diagnose only samples a:b (half-open indices; 'a:' to the end), e.g. an excerpt "
                   "of a long recording");
   cmd->add_flag("--json", o->json, "Print the diagnosis as one JSON object on stdout");
+  cmd->add_flag("--quiet", o->quiet,
+                "Do not report progress (each stage and candidate fit with its time) on stderr");
   cmd->callback([o]() {
     auto rec = read_input(*o);
     if (!o->samples.empty())
       rec = lumped::excerpt(rec, lumped::parse_sample_range(o->samples, rec.t.size(), "--samples"));
-    const auto d = optimise::diagnose(rec);
+    optimise::DiagnoseOptions options;
+    options.trace = !o->quiet;
+    const auto d = optimise::diagnose(rec, options);
     if (!o->out.empty()) optimise::write_diagnosis_outputs(d, o->out);
     if (o->json)
       std::cout << optimise::diagnosis_json(d).dump(2) << "\n";

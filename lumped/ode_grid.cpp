@@ -126,6 +126,13 @@ class ScaledStepper {
 
 std::vector<std::vector<double>> integrate_on_grid(const OdeSystem& system, std::vector<double> x0,
                                                    const std::vector<double>& times, int substeps) {
+  const std::vector<int> each(times.empty() ? 0 : times.size() - 1, std::max(substeps, 1));
+  return integrate_on_grid(system, std::move(x0), times, each);
+}
+
+std::vector<std::vector<double>> integrate_on_grid(const OdeSystem& system, std::vector<double> x0,
+                                                   const std::vector<double>& times,
+                                                   const std::vector<int>& substeps) {
   const std::size_t n = system.state_size();
   std::vector<std::vector<double>> out;
   out.reserve(times.size());
@@ -138,7 +145,6 @@ std::vector<std::vector<double>> integrate_on_grid(const OdeSystem& system, std:
   const Vec& scale = stepper.scale();
   Vec xi(static_cast<Eigen::Index>(n));
   for (std::size_t k = 0; k < n; ++k) xi[static_cast<Eigen::Index>(k)] = x0.at(k) / scale[k];
-  const int m = std::max(substeps, 1);
   auto record = [&](double t) {
     std::vector<double> x(n);
     for (std::size_t k = 0; k < n; ++k) {
@@ -149,8 +155,12 @@ std::vector<std::vector<double>> integrate_on_grid(const OdeSystem& system, std:
     }
     out.push_back(std::move(x));
   };
+  if (substeps.size() + 1 != times.size())
+    throw InputError("grid integrator: " + std::to_string(substeps.size()) +
+                     " substep counts for " + std::to_string(times.size() - 1) + " intervals");
   record(times.front());
   for (std::size_t i = 1; i < times.size(); ++i) {
+    const int m = std::max(substeps[i - 1], 1);
     const double h = (times[i] - times[i - 1]) / m;
     for (int s = 0; s < m; ++s) stepper.advance(times[i - 1] + s * h, h, xi);
     record(times[i]);

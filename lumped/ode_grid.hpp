@@ -11,10 +11,16 @@
 
 namespace rheomag::lumped {
 
-/// Integrates from `x0` at `times[0]` with `substeps` equal SDIRK2 steps per interval of `times`
-/// (strictly increasing; piecewise-linear inputs are then smooth inside every step) and returns
+/// Integrates from `x0` at `times[0]` with `substeps[k]` equal SDIRK2 steps over the interval
+/// times[k] -> times[k+1] (strictly increasing times; substeps has one entry per interval, each
+/// >= 1; inputs piecewise linear between samples are then smooth inside every step) and returns
 /// the state at every entry of `times`. A step whose Newton iteration fails is split in halves;
 /// throws ConvergenceError when that does not help or a state is not finite.
+std::vector<std::vector<double>> integrate_on_grid(const OdeSystem& system, std::vector<double> x0,
+                                                   const std::vector<double>& times,
+                                                   const std::vector<int>& substeps);
+
+/// The same with `substeps` steps in every interval.
 std::vector<std::vector<double>> integrate_on_grid(const OdeSystem& system, std::vector<double> x0,
                                                    const std::vector<double>& times,
                                                    int substeps = 1);

@@ -322,6 +322,24 @@ RigSpec with_chain_map(const RigSpec& spec, const Recording& drive) {
   return s;
 }
 
+/// Steps per sample interval of the fixed grid: spec.grid_substeps, and grid_edge_substeps where a
+/// drive input changes by more than 5 % of its range within one interval (a current or command
+/// edge, whose transient and ramp a single step would smear).
+std::vector<int> grid_of(const RigSpec& spec, const DriveInputs& in) {
+  const auto& t = *in.t;
+  std::vector<int> steps(t.size() - 1, spec.grid_substeps);
+  for (const auto* column : in.columns) {
+    if (!column) continue;
+    const auto [lo, hi] = std::minmax_element(column->begin(), column->end());
+    const double jump = 0.05 * (*hi - *lo);
+    if (!(jump > 0.0)) continue;
+    for (std::size_t k = 0; k + 1 < t.size(); ++k)
+      if (std::abs((*column)[k + 1] - (*column)[k]) > jump)
+        steps[k] = std::max(spec.grid_substeps, spec.grid_edge_substeps);
+  }
+  return steps;
+}
+
 }  // namespace
 
 Recording simulate_rig(const RigSpec& spec_in, const Recording& drive) {
@@ -357,7 +375,7 @@ Recording simulate_rig(const RigSpec& spec_in, const Recording& drive) {
     opt.max_step = 0.5 * spacing;
   }
   auto states = spec.grid_substeps > 0
-                    ? integrate_on_grid(system, system.initial_state(), drive.t, spec.grid_substeps)
+                    ? integrate_on_grid(system, system.initial_state(), drive.t, grid_of(spec, in))
                     : integrate_stiff(system, system.initial_state(), drive.t, opt);
 
   Recording rec;

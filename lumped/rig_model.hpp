@@ -47,8 +47,11 @@ struct RigSpec {
   std::map<std::string, double> sensor_noise;     ///< column -> standard deviation (SI)
   unsigned noise_seed = 1;
   /// 0: adaptive rosenbrock4 (error-controlled); n > 0: n fixed SDIRK2 steps per sample
-  /// interval (lumped/ode_grid.hpp: cost set by the samples, output smooth in the parameters).
+  /// interval (lumped/ode_grid.hpp: cost set by the samples, output smooth in the parameters),
+  /// grid_edge_substeps in the intervals where a drive input steps (the grid follows the
+  /// recording only, never the parameters).
   int grid_substeps = 0;
+  int grid_edge_substeps = 8;
 };
 
 /// Parses "constant_velocity_pump" | "bypass_cylinder" | "damper" | "coil_bench".
