@@ -177,9 +177,13 @@ std::string evidence_for(Effect e, const Diagnosis& d, const ModelFit& fit) {
         << "pressure can build";
       break;
     case Effect::fluid_inertia:
-      o << "the residual follows the piston acceleration (pressure leads the baseline by "
-        << fmt(-lag_ms) << " ms); an inertance of " << fmt(value("inertance"))
-        << " Pa s^2/m^3 explains it";
+      o << "the residual follows the piston acceleration (";
+      if (lag_ms < 0.0)
+        o << "the output leads the baseline by " << fmt(-lag_ms) << " ms";
+      else
+        o << "the output lags the baseline by " << fmt(lag_ms)
+          << " ms overall, which inertia alone would not do";
+      o << "); an inertance of " << fmt(value("inertance")) << " Pa s^2/m^3 explains it";
       break;
     case Effect::eddy_currents:
     case Effect::mr_response_time: {
@@ -396,8 +400,10 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
         f.ruled_out_by_current.push_back(tried[i].effect);
       } else if (tried[i].fit.sse - best.fit.sse < 0.05 * reduction) {
         f.ambiguous_with.push_back(tried[i].effect);
-        if (f.separating_measurement.empty())
-          f.separating_measurement = separating_measurement(best.effect, tried[i].effect);
+        // One measurement per distinct way of telling a tied candidate apart.
+        const auto how = separating_measurement(best.effect, tried[i].effect);
+        if (f.separating_measurement.find(how) == std::string::npos)
+          f.separating_measurement += (f.separating_measurement.empty() ? "" : "; ") + how;
       }
     d.findings.push_back(std::move(f));
     current = best.fit;

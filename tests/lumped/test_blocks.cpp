@@ -11,6 +11,7 @@
 #include "lumped/rig_model.hpp"
 #include "lumped/signals.hpp"
 #include "lumped/transfer_function.hpp"
+#include "tests/lumped/bypass_rig.hpp"
 
 using namespace rheomag::lumped;
 
@@ -33,16 +34,7 @@ RigSpec coil_bench(DriverMode mode) {
   return s;
 }
 
-RigSpec bypass_rig() {
-  RigSpec s;
-  s.kind = RigKind::bypass_cylinder;
-  s.piston_area = 4.524e-4;
-  s.valve.yield_current = {0.0, 1.0};
-  s.valve.yield_pressure = {0.0, 5.8e6};
-  s.valve.viscous_resistance = 1.5e10;
-  s.valve.regularisation_flow = 1e-9;
-  return s;
-}
+using rheomag::test::bypass_rig;
 
 }  // namespace
 

@@ -11,6 +11,7 @@
 #include "lumped/ode_grid.hpp"
 #include "lumped/rig_model.hpp"
 #include "lumped/signals.hpp"
+#include "tests/lumped/bypass_rig.hpp"
 
 using namespace rheomag::lumped;
 
@@ -46,13 +47,7 @@ double max_error(const SineLag& sys, double h) {
 }
 
 RigSpec compliant_bypass() {
-  RigSpec s;
-  s.kind = RigKind::bypass_cylinder;
-  s.piston_area = 4.524e-4;
-  s.valve.yield_current = {0.0, 1.0};
-  s.valve.yield_pressure = {0.0, 5.8e6};
-  s.valve.viscous_resistance = 1.5e10;
-  s.valve.regularisation_flow = 1e-9;
+  RigSpec s = rheomag::test::bypass_rig();
   s.compressibility = ChamberBlock{5e-5, 1.5e9, 2e-7, 1e5, 1.0};
   s.mr_response_time = 0.01;
   return s;
