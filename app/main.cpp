@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/command.hpp"
+#include "magnetostatics/assembly.hpp"
 #include "mesh/error.hpp"
 
 namespace rheomag::app {
@@ -88,6 +89,9 @@ int main(int argc, char** argv) {
       "for each command."};
   root.require_subcommand(1);
   rheomag::app::prefer_single_threaded_blas();
+  // Element assembly on OpenMP threads only when OMP_NUM_THREADS is set (the library default is
+  // serial; docs/performance.md, "Threads").
+  if (std::getenv("OMP_NUM_THREADS") != nullptr) rheomag::magnetostatics::set_assembly_threads(0);
   rheomag::app::setup_commands(root);
   try {
     root.parse(argc, argv);

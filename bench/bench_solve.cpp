@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "magnetostatics/serial_openmp.hpp"
 #include "magnetostatics/solver.hpp"
 #include "tests/magnetostatics/pot_core.hpp"
 #include "tests/magnetostatics/steel.hpp"
@@ -115,6 +116,7 @@ void BM_Cholesky(benchmark::State& state) {
   MagnetostaticSolver solver(test::pot_core_problem(test::aisi1010(), 400, 2.0, 2),
                              test::pot_core_mesh(core, cells_per_mm(100'000), 2));
   const SparseMatrix tangent = solver.tangent(solver.solve().a);
+  const SerialOpenMp serial;  // as the solver runs CHOLMOD
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholesky;
   cholesky.analyzePattern(tangent);
   cholesky.factorize(tangent);
@@ -155,9 +157,12 @@ BENCHMARK(BM_CurrentSweep21)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-/// Single-threaded OpenBLAS unless OPENBLAS_NUM_THREADS is set, as the rheomag program does
-/// (app/main.cpp): on a shared machine BLAS threads spin and make the solves many times slower.
+/// Single-threaded OpenBLAS unless OPENBLAS_NUM_THREADS is set, and element assembly on OpenMP
+/// threads only when OMP_NUM_THREADS is set, as the rheomag program does (app/main.cpp): on a
+/// shared machine BLAS threads spin and make the solves many times slower, and a second assembly
+/// thread that does not get its core makes the assembly slower instead of faster.
 void prefer_single_threaded_blas() {
+  if (std::getenv("OMP_NUM_THREADS") != nullptr) set_assembly_threads(0);
   if (std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;
   using SetThreads = void (*)(int);
   if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))

@@ -1,6 +1,9 @@
 #include "magnetostatics/assembly.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -10,12 +13,29 @@
 namespace rheomag::magnetostatics {
 namespace {
 
+std::atomic<int> assembly_thread_setting{1};
+
+/// Team size of an assembly over `elements` triangles: serial below 8 chunks.
+int assembly_team(int elements, int chunk) {
+  const int setting = assembly_thread_setting.load(std::memory_order_relaxed);
+  if (elements < 8 * chunk) return 1;
+  return setting > 0 ? setting : omp_get_max_threads();
+}
+
 std::array<mesh::Point, 3> vertices(const mesh::Mesh& mesh, int e) {
   const auto& t = mesh.triangles[e];
   return {mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]]};
 }
 
 }  // namespace
+
+void set_assembly_threads(int threads) {
+  assembly_thread_setting.store(std::max(0, threads), std::memory_order_relaxed);
+}
+
+int assembly_threads() {
+  return assembly_thread_setting.load(std::memory_order_relaxed);
+}
 
 Assembler::Assembler(const Problem& problem, const mesh::Mesh& mesh, const DofMap& dofs)
     : problem_(problem), mesh_(mesh), dofs_(dofs), laws_(build_reluctivities(problem)) {
@@ -187,7 +207,8 @@ void Assembler::assemble(const Eigen::VectorXd& a, Eigen::VectorXd& residual,
   const int elements = static_cast<int>(mesh_.triangles.size());
   double* values = tangent ? tangent->valuePtr() : nullptr;
   const std::ptrdiff_t nonzeros = tangent ? tangent->nonZeros() : 0;
-#pragma omp parallel if (elements >= 8 * kChunkElements)
+  const int team = assembly_team(elements, kChunkElements);
+#pragma omp parallel num_threads(team) if (team > 1)
   {
 #pragma omp for schedule(static)
     for (std::ptrdiff_t k = 0; k < nonzeros; ++k) values[k] = 0.0;
@@ -413,7 +434,8 @@ double Assembler::energy(const Eigen::VectorXd& a) const {
   const int elements = static_cast<int>(mesh_.triangles.size());
   const int chunks = (elements + kChunkElements - 1) / kChunkElements;
   std::vector<double> chunk_energy(chunks, 0.0);
-#pragma omp parallel if (elements >= 8 * kChunkElements)
+  const int team = assembly_team(elements, kChunkElements);
+#pragma omp parallel num_threads(team) if (team > 1)
   {
     ElementQuadrature q;
     double a_local[kMaxElementNodes];

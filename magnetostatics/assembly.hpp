@@ -15,6 +15,14 @@ namespace rheomag::magnetostatics {
 /// Sparse matrix type of the tangent: column-major, only the lower triangle is stored.
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
+/// Sets the number of threads of the element assembly for the whole process: 1 (the default) =
+/// serial, 0 = OpenMP's default team (OMP_NUM_THREADS, else one per core). The results are the
+/// same for any number (see Assembler). Serial by default: on a shared machine a second thread
+/// that does not get its core makes the assembly slower, not faster (docs/performance.md).
+void set_assembly_threads(int threads);
+/// The setting of set_assembly_threads.
+int assembly_threads();
+
 /// A set of free dofs with every triangle and mixed-boundary edge touching them (the patch of a
 /// local correction): the residual rows of `dofs` are complete over `elements` and `edges`.
 struct Patch {
@@ -29,8 +37,9 @@ struct Patch {
 /// are built once in the constructor and reused for every assembly. Assembly runs on the OpenMP
 /// threads (OMP_NUM_THREADS, default one per core): the triangles are cut into fixed chunks of
 /// consecutive triangles, chunks sharing no free dof get one colour, and the chunks of a colour
-/// are assembled in parallel, colour after colour. Every matrix and residual entry thus receives
-/// its contributions in the same order for any number of threads (bitwise the same result).
+/// are assembled in parallel, colour after colour (see set_assembly_threads). Every matrix and
+/// residual entry thus receives its contributions in the same order for any number of threads
+/// (bitwise the same result).
 class Assembler {
  public:
   /// Checks that every triangle's region has a material (InputError otherwise).

@@ -45,7 +45,15 @@ int correct_locally(const Assembler& assembler, const DofMap& dofs, const Eigen:
   for (int it = 0; it < options.local_iterations; ++it) {
     const std::vector<int> seeds =
         concentrated_dofs(r, options.local_fraction, options.local_max_dofs);
-    const Patch patch = assembler.patch(seeds, options.local_layers);
+    // A local step pays when its patch is small against the whole problem: fewer rings when
+    // the patch would exceed local_max_share of the dofs, none when even one ring does.
+    const double limit = options.local_max_share * static_cast<double>(r.size());
+    Patch patch;
+    for (int layers = options.local_layers; layers >= 1; layers /= 2) {
+      patch = assembler.patch(seeds, layers);
+      if (static_cast<double>(patch.dofs.size()) <= limit) break;
+    }
+    if (static_cast<double>(patch.dofs.size()) > limit) break;
     const int unknowns = static_cast<int>(patch.dofs.size());
     const int rows = static_cast<int>(patch.rows.size());
     Eigen::VectorXd internal, trial_internal;
@@ -86,8 +94,12 @@ int correct_locally(const Assembler& assembler, const DofMap& dofs, const Eigen:
       break;
     }
     for (int k = 0; k < rows; ++k) r[patch.rows[k]] = trial_rows[k];
+    const double previous = norm;
     norm = r.norm();
     ++steps;
+    // Another local step only after one that paid: at least halved |R| (a global step is then
+    // the better use of the time).
+    if (norm > 0.5 * previous) break;
   }
   return steps;
 }

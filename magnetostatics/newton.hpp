@@ -27,6 +27,8 @@ struct NewtonOptions {
   double local_fraction = 0.9;  ///< share of |R|^2 that makes the residual "concentrated"
   int local_max_dofs = 500;     ///< at most this many seed dofs
   int local_layers = 4;         ///< rings of elements added around the seed dofs
+  /// Largest patch as a share of all dofs (fewer rings, or no local step, beyond it).
+  double local_max_share = 0.1;
 };
 
 /// What the iteration did.

@@ -118,13 +118,14 @@ void MagnetostaticSolver::prepare_jacobian(const Eigen::VectorXd& a_nodes) {
   }
   Eigen::VectorXd r;
   assembler_->assemble(a_nodes, r, &tangent_);
-  tangent_a_ = a_nodes;
   factor_current_ = false;
-  // A moved by more than kRefactorChange since the factorised tangent: far from the solution the
-  // tangents differ too much (mostly at saturating corners) for a few CG iterations to pay.
-  const bool moved =
-      !has_factor_ || (a_nodes - factored_a_).norm() > kRefactorChange * a_nodes.norm();
-  if (moved || refactor_next_ || linear_) factorize_tangent();
+  // Tangent values more than kRefactorChange away from the factorised ones: far from the
+  // solution the tangents differ too much (mostly at saturating corners) for a few CG iterations
+  // to pay.
+  const Eigen::Map<const Eigen::VectorXd> values(tangent_.valuePtr(), tangent_.nonZeros());
+  const bool changed = !has_factor_ || (values - factored_values_).norm() >
+                                           kRefactorChange * factored_values_.norm();
+  if (changed || refactor_next_ || linear_) factorize_tangent();
 }
 
 void MagnetostaticSolver::factorize_tangent() {
@@ -137,7 +138,7 @@ void MagnetostaticSolver::factorize_tangent() {
                            std::to_string(dofs_.free_count()) + " unknowns)");
   }
   has_factor_ = factor_current_ = true;
-  factored_a_ = tangent_a_;
+  factored_values_ = Eigen::Map<const Eigen::VectorXd>(tangent_.valuePtr(), tangent_.nonZeros());
   refactor_next_ = false;
   factorized_linear_ = linear_;
 }
