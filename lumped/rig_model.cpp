@@ -327,7 +327,12 @@ RigSpec with_chain_map(const RigSpec& spec, const Recording& drive) {
 /// edge, whose transient and ramp a single step would smear).
 std::vector<int> grid_of(const RigSpec& spec, const DriveInputs& in) {
   const auto& t = *in.t;
-  std::vector<int> steps(t.size() - 1, spec.grid_substeps);
+  // Compliance and inertance together make an LC circuit that rings at kHz with oil: one step
+  // per sample would damp that ringing away, grid_edge_substeps everywhere follow it.
+  const int base = spec.compressibility && spec.inertance
+                       ? std::max(spec.grid_substeps, spec.grid_edge_substeps)
+                       : spec.grid_substeps;
+  std::vector<int> steps(t.size() - 1, base);
   for (const auto* column : in.columns) {
     if (!column) continue;
     const auto [lo, hi] = std::minmax_element(column->begin(), column->end());
@@ -335,7 +340,7 @@ std::vector<int> grid_of(const RigSpec& spec, const DriveInputs& in) {
     if (!(jump > 0.0)) continue;
     for (std::size_t k = 0; k + 1 < t.size(); ++k)
       if (std::abs((*column)[k + 1] - (*column)[k]) > jump)
-        steps[k] = std::max(spec.grid_substeps, spec.grid_edge_substeps);
+        steps[k] = std::max(base, spec.grid_edge_substeps);
   }
   return steps;
 }

@@ -49,7 +49,8 @@ struct RigSpec {
   /// 0: adaptive rosenbrock4 (error-controlled); n > 0: n fixed SDIRK2 steps per sample
   /// interval (lumped/ode_grid.hpp: cost set by the samples, output smooth in the parameters),
   /// grid_edge_substeps in the intervals where a drive input steps (the grid follows the
-  /// recording only, never the parameters).
+  /// recording only, never the parameters). A spec with both compressibility and inertance (an
+  /// LC circuit ringing faster than the samples) takes grid_edge_substeps in every interval.
   int grid_substeps = 0;
   int grid_edge_substeps = 8;
 };

@@ -53,6 +53,24 @@ RigSpec compliant_bypass() {
   return s;
 }
 
+/// rms difference of the pressure between one grid step per sample and rosenbrock4, over the
+/// rms pressure, for `s` driven through 40 current steps at 1 kHz.
+double grid_against_adaptive(RigSpec s) {
+  Recording d;
+  d.t = uniform_times(4.0, 1e3);
+  add_signal(d, "displacement=sine:amplitude=0.025,frequency=0.7");
+  add_signal(d, "current=steps:levels=0/1,period=0.1");
+  const auto adaptive = simulate_rig(s, d).column("pressure");
+  s.grid_substeps = 1;
+  const auto grid = simulate_rig(s, d).column("pressure");
+  double err = 0.0, rms = 0.0;
+  for (std::size_t k = 0; k < grid.size(); ++k) {
+    err += (grid[k] - adaptive[k]) * (grid[k] - adaptive[k]);
+    rms += adaptive[k] * adaptive[k];
+  }
+  return std::sqrt(err / rms);
+}
+
 }  // namespace
 
 // SDIRK2 is second order: halving the step divides the maximum error by 2^2 = 4 (measured ratio
@@ -98,19 +116,18 @@ TEST(OdeGrid, ChamberVolumeLawIsConsistent) {
 // stays within 0.5 % rms (of the pressure's rms) of the error-controlled rosenbrock4 (tolerance
 // 1e-6).
 TEST(OdeGrid, RigAgreesWithAdaptiveIntegrator) {
-  Recording d;
-  d.t = uniform_times(4.0, 1e3);
-  add_signal(d, "displacement=sine:amplitude=0.025,frequency=0.7");
-  add_signal(d, "current=steps:levels=0/1,period=0.1");
+  const double diff = grid_against_adaptive(compliant_bypass());
+  std::cout << "rms difference / rms " << diff << "\n";
+  EXPECT_LT(diff, 5e-3);
+}
+
+// Compliance plus inertance (5e5 Pa s^2/m^3) ring at about 1 kHz (omega = 1 / sqrt(L C), C the
+// chamber capacitance at 1 MPa), omega h = 6 at 1 kHz sampling: one step per sample would damp
+// the ringing away, so such a spec takes 8 steps in every interval. Within 3 % rms of rosenbrock4.
+TEST(OdeGrid, RingingChambersTakeEightSteps) {
   RigSpec s = compliant_bypass();
-  const auto adaptive = simulate_rig(s, d).column("pressure");
-  s.grid_substeps = 1;
-  const auto grid = simulate_rig(s, d).column("pressure");
-  double err = 0.0, rms = 0.0;
-  for (std::size_t k = 0; k < grid.size(); ++k) {
-    err += (grid[k] - adaptive[k]) * (grid[k] - adaptive[k]);
-    rms += adaptive[k] * adaptive[k];
-  }
-  std::cout << "rms difference / rms " << std::sqrt(err / rms) << "\n";
-  EXPECT_LT(std::sqrt(err / rms), 5e-3);
+  s.inertance = 5e5;
+  const double diff = grid_against_adaptive(s);
+  std::cout << "rms difference / rms " << diff << "\n";
+  EXPECT_LT(diff, 3e-2);
 }
