@@ -134,13 +134,9 @@ std::vector<std::vector<double>> integrate_on_grid(const OdeSystem& system, std:
                                                    const std::vector<double>& times,
                                                    const std::vector<int>& substeps) {
   const std::size_t n = system.state_size();
+  if (times.empty() || n == 0) return std::vector<std::vector<double>>(times.size());
   std::vector<std::vector<double>> out;
   out.reserve(times.size());
-  if (times.empty()) return out;
-  if (n == 0) {
-    out.assign(times.size(), std::vector<double>{});
-    return out;
-  }
   ScaledStepper stepper(system);
   const Vec& scale = stepper.scale();
   Vec xi(static_cast<Eigen::Index>(n));
