@@ -8,12 +8,12 @@
 #include <string>
 
 #include "app/command.hpp"
+#include "core/error.hpp"
+#include "diagnose/diagnose_report.hpp"
+#include "diagnose/diagnose_run.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording_excerpt.hpp"
 #include "lumped/recording_io.hpp"
-#include "mesh/error.hpp"
-#include "optimise/diagnose_report.hpp"
-#include "optimise/diagnose_run.hpp"
 
 namespace {
 
@@ -30,7 +30,7 @@ struct DiagnoseCliOptions {
 
 /// The recording, with its sidecar from --meta when given.
 lumped::Recording read_input(const DiagnoseCliOptions& o) {
-  if (o.meta.empty()) return lumped::read_recording(o.recording);
+  if (o.meta.empty()) return rheomag::app::load_recording(o.recording);
   auto rec = lumped::read_csv_samples(o.recording);
   rec.meta = lumped::read_sidecar(o.meta);
   auto need = rec.meta.drive;
@@ -42,21 +42,21 @@ lumped::Recording read_input(const DiagnoseCliOptions& o) {
   return rec;
 }
 
-void print_summary(const optimise::Diagnosis& d) {
+void print_summary(const diagnose::Diagnosis& d) {
   std::cout << "baseline FIT " << d.baseline_fit_percent << " %\n";
   for (const auto& w : d.mismatch)
     std::cout << "  mismatch " << w.t_start << "-" << w.t_end << " s: " << 100 * w.share
               << " % of residual (" << w.regime << ")\n";
   if (d.findings.empty()) std::cout << "missing physics: none\n";
   for (const auto& f : d.findings) {
-    std::cout << "missing physics: " << optimise::effect_name(f.effect);
+    std::cout << "missing physics: " << diagnose::effect_name(f.effect);
     for (std::size_t j = 0; j < f.params.size(); ++j)
       std::cout << "  " << f.param_names[j] << " = " << f.params[j] << " +- "
                 << f.standard_errors[j];
     std::cout << "  (FIT " << f.fit_percent << " %)\n    " << f.evidence << "\n";
     if (!f.ambiguous_with.empty()) {
       std::cout << "    equally well explained by:";
-      for (auto a : f.ambiguous_with) std::cout << ' ' << optimise::effect_name(a);
+      for (auto a : f.ambiguous_with) std::cout << ' ' << diagnose::effect_name(a);
       std::cout << "\n    to separate them: " << f.separating_measurement << "\n";
     }
   }
@@ -94,12 +94,15 @@ const bool registered = app::register_command([](CLI::App& root) {
     auto rec = read_input(*o);
     if (!o->samples.empty())
       rec = lumped::excerpt(rec, lumped::parse_sample_range(o->samples, rec.t.size(), "--samples"));
-    optimise::DiagnoseOptions options;
-    options.trace = !o->quiet;
-    const auto d = optimise::diagnose(rec, options);
-    if (!o->out.empty()) optimise::write_diagnosis_outputs(d, o->out);
+    diagnose::DiagnoseOptions options;
+    if (!o->quiet)
+      options.progress = [](const ProgressEvent& e) {
+        std::cerr << "diagnose: " << e.stage << (e.detail.empty() ? "" : " ") << e.detail << "\n";
+      };
+    const auto d = diagnose::diagnose(rec, options);
+    if (!o->out.empty()) diagnose::write_diagnosis_outputs(d, o->out);
     if (o->json)
-      std::cout << optimise::diagnosis_json(d).dump(2) << "\n";
+      std::cout << diagnose::diagnosis_json(d).dump(2) << "\n";
     else
       print_summary(d);
   });

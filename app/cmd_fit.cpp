@@ -15,13 +15,13 @@
 #include <vector>
 
 #include "app/command.hpp"
+#include "core/error.hpp"
 #include "lumped/greybox.hpp"
 #include "lumped/ident_fit.hpp"
 #include "lumped/ident_plot.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording_io.hpp"
 #include "lumped/valve_chain_fit.hpp"
-#include "mesh/error.hpp"
 
 namespace {
 
@@ -66,7 +66,7 @@ Validation read_validation(const FitOptions& o, const Recording& rec, const Samp
   Validation v;
   if (o.validate.empty()) return v;
   if (looks_like_file(o.validate)) {
-    v.other = read_recording(o.validate);
+    v.other = rheomag::app::load_recording(o.validate);
     if (v.other->meta.drive != rec.meta.drive || v.other->meta.output != rec.meta.output)
       throw rheomag::InputError("--validate " + o.validate +
                                 ": its sidecar's drive/output columns differ from " +
@@ -245,7 +245,7 @@ void run_fit(const FitOptions& o) {
   }
   if (!o.plot.empty() && !gnuplot_available())
     throw rheomag::InputError("--plot needs gnuplot on PATH (Debian package gnuplot-nox)");
-  const Recording rec = read_recording(o.recording);
+  const Recording rec = rheomag::app::load_recording(o.recording);
   const std::size_t n = rec.t.size();
   const SampleRange train =
       o.train.empty() ? SampleRange{0, n} : parse_sample_range(o.train, n, "--train");

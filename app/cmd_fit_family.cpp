@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "app/command.hpp"
+#include "core/error.hpp"
 #include "lumped/current_dependent_fit.hpp"
 #include "lumped/recording_io.hpp"
-#include "mesh/error.hpp"
 
 namespace {
 
@@ -51,8 +51,8 @@ void run_fit_family(const FamilyOptions& o) {
         "--model: '" + o.model +
         "' is not a grey-box model (bingham, lugre, bouc-wen, maxwell, dahl)");
   std::vector<Recording> training, prediction;
-  for (const auto& f : o.recordings) training.push_back(read_recording(f));
-  for (const auto& f : o.predict) prediction.push_back(read_recording(f));
+  for (const auto& f : o.recordings) training.push_back(rheomag::app::load_recording(f));
+  for (const auto& f : o.predict) prediction.push_back(rheomag::app::load_recording(f));
   FamilyFitOptions options;
   options.decimation = o.decimation;
   options.greybox.starts = o.starts;

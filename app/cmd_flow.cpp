@@ -7,10 +7,10 @@
 #include <string>
 
 #include "app/command.hpp"
+#include "core/error.hpp"
 #include "fluid/annulus_bingham.hpp"
 #include "fluid/radial_bingham.hpp"
 #include "fluid/slit_bingham.hpp"
-#include "mesh/error.hpp"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/command.hpp"
-#include "magnetostatics/case_file.hpp"
+#include "case/case_file.hpp"
 #include "magnetostatics/domain.hpp"
 #include "mesh/mesher.hpp"
 #include "mesh/quality.hpp"
@@ -45,9 +45,9 @@ nlohmann::json quality_json(const mesh::MeshQuality& q) {
 }
 
 void run(const MeshCommandOptions& o) {
-  magnetostatics::Case c = magnetostatics::load_case(o.case_path);
+  cases::Case c = cases::load_case(o.case_path);
   if (o.order) c.problem.order = *o.order;
-  const magnetostatics::Problem closed = magnetostatics::close_domain(c.problem);
+  const cases::Problem closed = magnetostatics::close_domain(c.problem);
   mesh::MeshOptions options;
   options.order = closed.order;
   options.min_gap_elements = closed.min_gap_elements;

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "app/command.hpp"
-#include "magnetostatics/case_file.hpp"
+#include "case/case_file.hpp"
 #include "optimise/optimise_run.hpp"
 
 namespace {
@@ -28,10 +28,12 @@ nlohmann::json design_json(const rheomag::optimise::DesignReport& d,
   nlohmann::json variables = nlohmann::json::object();
   for (std::size_t i = 0; i < spec.variables.size(); ++i) variables[spec.variables[i].key] = d.x[i];
   nlohmann::json quantities = nlohmann::json::object();
-  for (const auto& [name, value] : d.quantities) quantities[name] = value;
+  for (rheomag::optimise::Quantity q : rheomag::optimise::all_quantities())
+    if (!std::isnan(d.quantities[q]))
+      quantities[rheomag::optimise::quantity_name(q)] = d.quantities[q];
   nlohmann::json constraints = nlohmann::json::array();
   for (const auto& s : d.constraints) {
-    nlohmann::json c = {{"quantity", s.constraint.quantity},
+    nlohmann::json c = {{"quantity", rheomag::optimise::quantity_name(s.constraint.quantity)},
                         {"value", s.value},
                         {"satisfied", s.satisfied},
                         {"active", s.active}};
@@ -46,7 +48,7 @@ nlohmann::json design_json(const rheomag::optimise::DesignReport& d,
 
 int run_optimise(const OptimiseCli& o) {
   using namespace rheomag;
-  const auto c = magnetostatics::load_case(o.case_file);
+  const auto c = cases::load_case(o.case_file);
   optimise::OptimiseOptions options;
   options.out_dir = o.out_dir;
   options.print_level = o.verbose && !o.json ? 5 : 0;
@@ -89,7 +91,7 @@ int run_optimise(const OptimiseCli& o) {
                           {"design", design_json(p.design, r.spec)}});
       nlohmann::json files = nlohmann::json::array();
       for (const auto& f : r.pareto_files) files.push_back(f.string());
-      out["pareto"] = {{"quantity", r.pareto->pareto.quantity},
+      out["pareto"] = {{"quantity", rheomag::optimise::quantity_name(r.pareto->pareto.quantity)},
                        {"sense", r.pareto->pareto.maximise ? "maximise" : "minimise"},
                        {"points", points},
                        {"second_alone", design_json(r.pareto->second_alone, r.spec)},

@@ -5,10 +5,10 @@
 #include <memory>
 
 #include "app/command.hpp"
+#include "core/error.hpp"
 #include "lumped/recording_io.hpp"
 #include "lumped/signals.hpp"
 #include "lumped/simulation_spec.hpp"
-#include "mesh/error.hpp"
 
 namespace {
 

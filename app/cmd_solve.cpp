@@ -8,14 +8,15 @@
 #include <vector>
 
 #include "app/command.hpp"
-#include "magnetostatics/case_file.hpp"
+#include "case/case_file.hpp"
+#include "core/error.hpp"
 #include "magnetostatics/report.hpp"
 #include "magnetostatics/solve_problem.hpp"
-#include "mesh/error.hpp"
 
 namespace {
 
 using namespace rheomag::magnetostatics;
+using namespace rheomag::cases;
 
 struct SolveCommandOptions {
   std::string case_path;

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "app/command.hpp"
-#include "fluid/valve_chain.hpp"
-#include "magnetostatics/case_file.hpp"
-#include "mesh/error.hpp"
+#include "case/case_file.hpp"
+#include "core/error.hpp"
+#include "valve/valve_chain.hpp"
 
 namespace {
 
@@ -27,10 +27,10 @@ struct ValveCli {
   bool json = false;
 };
 
-nlohmann::json segment_json(const rheomag::fluid::SegmentResult& s) {
+nlohmann::json segment_json(const rheomag::valve::SegmentResult& s) {
   const auto& d = s.drop.integrated;
   return {{"name", s.name},
-          {"kind", s.kind},
+          {"kind", std::string(rheomag::valve::kSegmentKindNames.name(s.kind))},
           {"b_average", s.b_average},
           {"dp", d.dp},
           {"dp_yield", d.dp_yield},
@@ -38,16 +38,18 @@ nlohmann::json segment_json(const rheomag::fluid::SegmentResult& s) {
           {"dp_average_b", s.drop.average_b.dp},
           {"plug_fraction", d.plug_fraction},
           {"bingham_number", d.bingham_number},
-          {"reynolds_number", s.kind == "passage" ? nlohmann::json(s.reynolds_number) : nullptr}};
+          {"reynolds_number", s.kind == rheomag::valve::SegmentKind::passage
+                                  ? nlohmann::json(s.reynolds_number)
+                                  : nullptr}};
 }
 
 void run_valve(const ValveCli& o) {
   using namespace rheomag;
-  const auto c = magnetostatics::load_case(o.case_file);
-  fluid::ValveOptions options = fluid::read_valve_options(c);
+  const auto c = cases::load_case(o.case_file);
+  valve::ValveOptions options = valve::read_valve_options(c);
   if (!o.wire.empty()) {
     try {
-      fluid::wire_diameter(o.wire);
+      options.wire_diameter = cases::wire_diameter(o.wire);
     } catch (const InputError& e) {
       throw InputError(std::string("--wire: ") + e.what());
     }
@@ -61,14 +63,14 @@ void run_valve(const ValveCli& o) {
   if (flows.empty())
     throw InputError(o.case_file + ": no flow rate: pass --flow Q[,Q...] (m^3/s) or set " +
                      "[valve] flow in the case");
-  fluid::ValveChain chain(c, options);
+  valve::ValveChain chain(c, options);
   const auto points = chain.evaluate(currents, flows);
   // The coil at the largest current (its secant inductance from the FE solve there).
-  const fluid::ValvePoint* peak = &points.front();
+  const valve::ValvePoint* peak = &points.front();
   for (const auto& p : points)
     if (std::abs(p.current) > std::abs(peak->current)) peak = &p;
   const bool have_wire = !options.wire.empty();
-  fluid::CoilProperties coil;
+  valve::CoilProperties coil;
   if (have_wire) coil = chain.coil(peak->current, peak->inductance);
 
   if (o.json) {

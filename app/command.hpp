@@ -3,6 +3,9 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
+
+#include "lumped/recording.hpp"
 
 namespace rheomag::app {
 
@@ -14,5 +17,8 @@ bool register_command(CommandSetup setup);
 
 /// Calls every registered setup on `root`.
 void setup_commands(CLI::App& root);
+
+/// Reads a recording (CSV + sidecar) and prints the reader's warnings on stderr.
+lumped::Recording load_recording(const std::string& csv_path);
 
 }  // namespace rheomag::app

@@ -9,8 +9,9 @@
 #include <vector>
 
 #include "app/command.hpp"
+#include "core/error.hpp"
+#include "lumped/recording_io.hpp"
 #include "magnetostatics/assembly.hpp"
-#include "mesh/error.hpp"
 
 namespace rheomag::app {
 
@@ -54,6 +55,12 @@ std::string first_sentence(const std::string& text) {
 }
 
 }  // namespace
+
+lumped::Recording load_recording(const std::string& csv_path) {
+  lumped::Recording rec = lumped::read_recording(csv_path);
+  for (const std::string& w : rec.warnings) std::cerr << "rheomag: warning: " << w << "\n";
+  return rec;
+}
 
 void setup_commands(CLI::App& root) {
   for (auto& setup : registry()) setup(root);

@@ -12,10 +12,10 @@
 #include <iostream>
 #include <string>
 
+#include "diagnose/diagnose_run.hpp"
 #include "lumped/recording.hpp"
 #include "lumped/signals.hpp"
 #include "lumped/simulation_spec.hpp"
-#include "optimise/diagnose_run.hpp"
 
 namespace {
 
@@ -43,17 +43,20 @@ double cpu_seconds() {
 void BM_Diagnose(benchmark::State& state) {
   const double samples = static_cast<double>(state.range(0));
   const auto rec = bypass_recording(samples / 1000.0, 1000.0);
-  optimise::DiagnoseOptions options;
-  options.trace = std::getenv("RHEOMAG_DIAGNOSE_TRACE") != nullptr;
+  diagnose::DiagnoseOptions options;
+  if (std::getenv("RHEOMAG_DIAGNOSE_TRACE"))
+    options.progress = [](const rheomag::ProgressEvent& e) {
+      std::cerr << "diagnose: " << e.stage << " " << e.detail << "\n";
+    };
   double cpu = 0.0, fit = 0.0;
   std::string named;
   for (auto _ : state) {
     const double c0 = cpu_seconds();
-    const auto d = optimise::diagnose(rec, options);
+    const auto d = diagnose::diagnose(rec, options);
     cpu += cpu_seconds() - c0;
     fit = d.final_fit_percent;
     named.clear();
-    for (const auto& f : d.findings) named += optimise::effect_name(f.effect) + " ";
+    for (const auto& f : d.findings) named += diagnose::effect_name(f.effect) + " ";
   }
   state.counters["cpu_s"] = cpu / static_cast<double>(state.iterations());
   state.counters["final_fit"] = fit;

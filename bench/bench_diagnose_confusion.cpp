@@ -22,18 +22,18 @@
 #include <thread>
 #include <vector>
 
+#include "diagnose/diagnose_run.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording.hpp"
 #include "lumped/rig_model.hpp"
 #include "lumped/signals.hpp"
-#include "optimise/diagnose_run.hpp"
 
 namespace {
 
 using namespace rheomag;
+using diagnose::Effect;
 using lumped::DriverMode;
 using lumped::RigKind;
-using optimise::Effect;
 
 const std::vector<std::string> kTruths = {
     "none",          "compressibility", "fluid_inertia", "magnetic_hysteresis",
@@ -148,7 +148,7 @@ Draw make_draw(const std::string& truth, int index, unsigned seed) {
     desc << " L=" << fmt(*s.inertance);
   } else if (truth == "magnetic_hysteresis") {
     const double a = log_uniform(rng, 2.0, 10.0), dd = uniform(rng, 0.1, 0.6);
-    s.magnetic_hysteresis = optimise::duhem_field(a, dd);
+    s.magnetic_hysteresis = diagnose::duhem_field(a, dd);
     desc << " a=" << fmt(a) << " d=" << fmt(dd);
   } else if (truth == "eddy_currents") {
     s.eddy_time_constant = log_uniform(rng, 0.01, 0.06);
@@ -204,18 +204,18 @@ Outcome run(const Draw& draw, unsigned seed) {
     rec.meta.coil.inductance.reset();
     rec.csv_path = draw.truth + "_" + std::to_string(draw.index) + ".csv";
     rec.meta.sidecar_path = draw.truth + "_" + std::to_string(draw.index) + ".toml";
-    const auto d = optimise::diagnose(rec);
+    const auto d = diagnose::diagnose(rec);
     if (d.findings.empty()) {
       o.named = "none";
     } else {
       const auto& f = d.findings.front();
-      o.named = optimise::effect_name(f.effect);
+      o.named = diagnose::effect_name(f.effect);
       o.ambiguous = !f.ambiguous_with.empty();
       o.truth_in_ambiguous = o.named == o.truth;
       for (Effect e : f.ambiguous_with)
-        if (optimise::effect_name(e) == o.truth) o.truth_in_ambiguous = true;
+        if (diagnose::effect_name(e) == o.truth) o.truth_in_ambiguous = true;
       for (const auto& g : d.findings)
-        o.all_named += (o.all_named.empty() ? "" : "+") + optimise::effect_name(g.effect);
+        o.all_named += (o.all_named.empty() ? "" : "+") + diagnose::effect_name(g.effect);
     }
   } catch (const std::exception& e) {
     o.named = "error";

@@ -19,6 +19,7 @@ namespace {
 
 using namespace rheomag;
 using namespace rheomag::magnetostatics;
+using namespace rheomag::cases;
 
 /// Cells per millimetre giving about `dofs` P2 unknowns on the pot core (2400 p^2).
 double cells_per_mm(double dofs) {

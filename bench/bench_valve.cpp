@@ -9,12 +9,13 @@
 
 #include <vector>
 
-#include "magnetostatics/case_file.hpp"
+#include "case/case_file.hpp"
 #include "magnetostatics/solve_problem.hpp"
 
 namespace {
 
 using namespace rheomag::magnetostatics;
+using namespace rheomag::cases;
 
 /// The reference valve case, read once.
 const Case& valve_case() {

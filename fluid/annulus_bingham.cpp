@@ -20,9 +20,9 @@
 #include <numbers>
 #include <string>
 
+#include "core/error.hpp"
 #include "fluid/newtonian.hpp"
 #include "fluid/slit_bingham.hpp"
-#include "mesh/error.hpp"
 
 namespace rheomag::fluid {
 

@@ -15,10 +15,10 @@
 #include <numbers>
 #include <string>
 
+#include "core/error.hpp"
 #include "fluid/annulus_bingham.hpp"
 #include "fluid/radial_bingham.hpp"
 #include "fluid/slit_bingham.hpp"
-#include "mesh/error.hpp"
 
 namespace rheomag::fluid {
 

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <vector>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::fluid {
 

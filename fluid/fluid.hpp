@@ -6,9 +6,13 @@
 #include <string>
 #include <string_view>
 
+#include "case/case_sections.hpp"
 #include "fluid/yield_stress.hpp"
 
 namespace rheomag::fluid {
+
+/// [fluid] is a case-file section reserved for this layer (docs/case-format.md).
+inline const bool kFluidSectionRegistered = cases::register_case_section("fluid");
 
 /// An MR fluid: tau = tau_y(B) + K gamma_dot^n (Bingham when n = 1 with K the plastic viscosity).
 struct Fluid {

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::fluid {
 

@@ -14,7 +14,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::fluid {
 

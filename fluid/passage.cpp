@@ -7,9 +7,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/error.hpp"
 #include "fluid/gap.hpp"
 #include "fluid/newtonian.hpp"
-#include "mesh/error.hpp"
 
 namespace rheomag::fluid {
 
@@ -27,7 +27,7 @@ std::string shape_name(PassageShape shape) {
   return "pipe";
 }
 
-std::vector<Passage> read_passages(const magnetostatics::TomlSection& valve) {
+std::vector<Passage> read_passages(const cases::TomlSection& valve) {
   std::vector<Passage> passages;
   for (const auto& t : valve.table_array("passage")) {
     t.allow_only({"name", "shape", "region", "diameter", "inner_radius", "outer_radius", "gap",
@@ -71,7 +71,7 @@ std::vector<Passage> read_passages(const magnetostatics::TomlSection& valve) {
   return passages;
 }
 
-std::vector<MinorLoss> read_losses(const magnetostatics::TomlSection& valve) {
+std::vector<MinorLoss> read_losses(const cases::TomlSection& valve) {
   std::vector<MinorLoss> losses;
   for (const auto& t : valve.table_array("loss")) {
     t.allow_only({"name", "k", "section", "area", "radius"});

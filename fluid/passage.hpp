@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "magnetostatics/toml_section.hpp"
+#include "case/toml_section.hpp"
 
 namespace rheomag::fluid {
 
@@ -44,10 +44,10 @@ struct MinorLoss {
 std::string shape_name(PassageShape shape);
 
 /// Reads the [[valve.passage]] tables of [valve]; InputError names the key and what is expected.
-std::vector<Passage> read_passages(const magnetostatics::TomlSection& valve);
+std::vector<Passage> read_passages(const cases::TomlSection& valve);
 
 /// Reads the [[valve.loss]] tables of [valve].
-std::vector<MinorLoss> read_losses(const magnetostatics::TomlSection& valve);
+std::vector<MinorLoss> read_losses(const cases::TomlSection& valve);
 
 /// Throws InputError unless the passage's dimensions are complete and consistent.
 void validate(const Passage& p);

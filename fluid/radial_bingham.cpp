@@ -13,9 +13,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/error.hpp"
 #include "fluid/newtonian.hpp"
 #include "fluid/slit_bingham.hpp"
-#include "mesh/error.hpp"
 
 namespace rheomag::fluid {
 

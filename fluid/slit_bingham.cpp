@@ -19,8 +19,8 @@
 #include <numbers>
 #include <string>
 
+#include "core/error.hpp"
 #include "fluid/newtonian.hpp"
-#include "mesh/error.hpp"
 
 namespace rheomag::fluid {
 

@@ -19,8 +19,8 @@ using std::isnan;
 #include <string>
 #include <unsupported/Eigen/Polynomials>
 
-#include "magnetostatics/constants.hpp"
-#include "mesh/error.hpp"
+#include "core/constants.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::fluid {
 
@@ -149,13 +149,11 @@ double CarlsonYieldStress::of_field_strength(double h) const {
 }
 
 double CarlsonYieldStress::flux_density(double h) const {
-  using magnetostatics::kMu0;
   const double ha = std::abs(h);
   return 1.91 * std::pow(phi_, 1.133) * (-std::expm1(-10.97 * kMu0 * ha)) + kMu0 * ha;
 }
 
 double CarlsonYieldStress::field_strength(double b) const {
-  using magnetostatics::kMu0;
   const double target = std::abs(b);
   if (target == 0.0) return 0.0;
   // B(H) is strictly increasing with B >= mu0 H, so the root lies in [0, |b|/mu0].

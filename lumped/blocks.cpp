@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/error.hpp"
 #include "lumped/smooth.hpp"
-#include "mesh/error.hpp"
 
 namespace rheomag::lumped {
 

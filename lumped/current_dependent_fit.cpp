@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::lumped {
 

@@ -13,10 +13,10 @@
 #include <numeric>
 #include <random>
 
+#include "core/error.hpp"
 #include "lumped/multistart_fit.hpp"
 #include "lumped/ode.hpp"
 #include "lumped/standard_errors.hpp"
-#include "mesh/error.hpp"
 
 namespace rheomag::lumped {
 

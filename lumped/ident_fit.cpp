@@ -4,13 +4,13 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/closest_key.hpp"
+#include "core/error.hpp"
 #include "lumped/ident_arx.hpp"
 #include "lumped/ident_hw.hpp"
 #include "lumped/ident_narx.hpp"
 #include "lumped/ident_svr.hpp"
 #include "lumped/ident_tf.hpp"
-#include "magnetostatics/toml_section.hpp"
-#include "mesh/error.hpp"
 
 namespace rheomag::lumped {
 
@@ -51,7 +51,7 @@ std::string closest_model_name(const std::string& given, const std::vector<std::
   std::string best;
   std::size_t best_distance = std::string::npos;
   for (const auto& name : names) {
-    const std::size_t d = magnetostatics::edit_distance(family_of(given), family_of(name));
+    const std::size_t d = edit_distance(family_of(given), family_of(name));
     if (d < best_distance) {
       best_distance = d;
       best = name;

@@ -3,7 +3,7 @@
 #include <ceres/ceres.h>
 #include <glog/logging.h>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::lumped {
 

@@ -6,7 +6,7 @@
 #include <unsupported/Eigen/Polynomials>
 #include <vector>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::lumped {
 

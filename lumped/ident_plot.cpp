@@ -9,8 +9,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
 #include "lumped/ident_model.hpp"
-#include "mesh/error.hpp"
 
 extern char** environ;
 
@@ -69,50 +70,44 @@ void write_fit_plot(const std::string& png_path, const std::string& title,
           << seg.measured[k] - seg.model[k] << '\n';
     data_files.push_back(file.string());
   }
-  const std::filesystem::path target(png_path);
-  std::string temp_name(".");  // hidden sibling, renamed into place when gnuplot is done
-  temp_name.append(target.filename().string()).append(".tmp");
-  const std::filesystem::path temp = target.parent_path() / temp_name;
   const auto script_path = scratch.path / "plot.gp";
-  {
-    std::ofstream gp(script_path);
-    gp << "set terminal pngcairo size 1400,900 font 'sans,11'\n"
-       << "set output " << quoted(temp.string()) << "\n"
-       << "set multiplot layout 2,1 title " << quoted(title) << "\n"
-       << "set grid\nset key outside right top\nset xlabel 't [s]'\n"
-       << "set ylabel " << quoted(output_label) << "\n";
-    const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
-    gp << "plot ";
-    for (std::size_t s = 0; s < segments.size(); ++s) {
-      if (s) gp << ", ";
-      gp << quoted(data_files[s]) << " using 1:2 with lines lw 1.5 lc rgb 'black' title "
-         << quoted(s == 0 ? "measured" : "") << ", " << quoted(data_files[s])
-         << " using 1:3 with lines lw 1.2 lc rgb '" << colours[s % 4] << "' title "
-         << quoted("model, " + segments[s].label);
+  // gnuplot draws into the atomic writer's temporary file beside the target.
+  write_file_atomically_with(png_path, [&](const std::filesystem::path& temp) {
+    {
+      std::ofstream gp(script_path);
+      gp << "set terminal pngcairo size 1400,900 font 'sans,11'\n"
+         << "set output " << quoted(temp.string()) << "\n"
+         << "set multiplot layout 2,1 title " << quoted(title) << "\n"
+         << "set grid\nset key outside right top\nset xlabel 't [s]'\n"
+         << "set ylabel " << quoted(output_label) << "\n";
+      const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
+      gp << "plot ";
+      for (std::size_t s = 0; s < segments.size(); ++s) {
+        if (s) gp << ", ";
+        gp << quoted(data_files[s]) << " using 1:2 with lines lw 1.5 lc rgb 'black' title "
+           << quoted(s == 0 ? "measured" : "") << ", " << quoted(data_files[s])
+           << " using 1:3 with lines lw 1.2 lc rgb '" << colours[s % 4] << "' title "
+           << quoted("model, " + segments[s].label);
+      }
+      gp << "\nset ylabel " << quoted("residual (measured - model)") << "\nplot ";
+      for (std::size_t s = 0; s < segments.size(); ++s) {
+        if (s) gp << ", ";
+        gp << quoted(data_files[s]) << " using 1:4 with lines lw 1 lc rgb '" << colours[s % 4]
+           << "' title " << quoted(segments[s].label);
+      }
+      gp << "\nunset multiplot\nset output\n";
     }
-    gp << "\nset ylabel " << quoted("residual (measured - model)") << "\nplot ";
-    for (std::size_t s = 0; s < segments.size(); ++s) {
-      if (s) gp << ", ";
-      gp << quoted(data_files[s]) << " using 1:4 with lines lw 1 lc rgb '" << colours[s % 4]
-         << "' title " << quoted(segments[s].label);
-    }
-    gp << "\nunset multiplot\nset output\n";
-  }
-  const std::string program = "gnuplot";
-  const std::string script = script_path.string();
-  char* argv[] = {const_cast<char*>(program.c_str()), const_cast<char*>(script.c_str()), nullptr};
-  pid_t pid = 0;
-  if (posix_spawnp(&pid, program.c_str(), nullptr, nullptr, argv, environ) != 0)
-    throw InputError("--plot: could not start gnuplot");
-  int status = 0;
-  if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    std::error_code ignored;
-    std::filesystem::remove(temp, ignored);
-    throw InputError("--plot: gnuplot failed writing " + png_path);
-  }
-  std::error_code error;
-  std::filesystem::rename(temp, target, error);
-  if (error) throw InputError("--plot: cannot write " + png_path + ": " + error.message());
+    const std::string program = "gnuplot";
+    const std::string script = script_path.string();
+    char* argv[] = {const_cast<char*>(program.c_str()), const_cast<char*>(script.c_str()), nullptr};
+    pid_t pid = 0;
+    if (posix_spawnp(&pid, program.c_str(), nullptr, nullptr, argv, environ) != 0)
+      throw InputError("--plot: could not start gnuplot");
+    int status = 0;
+    if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+      throw InputError("--plot: gnuplot failed writing " + png_path);
+    return true;
+  });
 }
 
 }  // namespace rheomag::lumped

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::lumped {
 

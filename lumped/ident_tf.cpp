@@ -9,9 +9,9 @@
 #include <unsupported/Eigen/MatrixFunctions>
 #include <unsupported/Eigen/Polynomials>
 
+#include "core/error.hpp"
 #include "lumped/ident_least_squares.hpp"
 #include "lumped/ident_oe.hpp"
-#include "mesh/error.hpp"
 
 namespace rheomag::lumped {
 

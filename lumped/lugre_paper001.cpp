@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/error.hpp"
 #include "lumped/ode.hpp"
 #include "lumped/smooth.hpp"
-#include "mesh/error.hpp"
 
 namespace rheomag::lumped {
 

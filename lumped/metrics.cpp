@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::lumped {
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::lumped {
 

@@ -2,7 +2,7 @@
 
 #include "lumped/recording.hpp"
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::lumped {
 

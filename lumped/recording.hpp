@@ -6,11 +6,24 @@
 #include <string>
 #include <vector>
 
+#include "core/enum_names.hpp"
+
 namespace rheomag::lumped {
+
+/// The test rigs a recording can come from (docs/dynamics.md).
+enum class RigKind { constant_velocity_pump, bypass_cylinder, damper, coil_bench };
+
+/// The rig kinds' names as written in sidecars and specs.
+inline constexpr auto kRigKindNames = enum_names<RigKind>({
+    {RigKind::constant_velocity_pump, "constant_velocity_pump"},
+    {RigKind::bypass_cylinder, "bypass_cylinder"},
+    {RigKind::damper, "damper"},
+    {RigKind::coil_bench, "coil_bench"},
+});
 
 /// The [rig] table of a sidecar (SI units). Absent optional keys stay empty.
 struct RigInfo {
-  std::string kind;  ///< constant_velocity_pump | bypass_cylinder | damper | coil_bench
+  std::optional<RigKind> kind;           ///< the [rig] kind, if the sidecar names one
   std::optional<double> piston_area;     ///< [m^2]
   std::optional<double> chamber_volume;  ///< [m^3]
   std::optional<double> rod_area;        ///< [m^2]
@@ -20,9 +33,9 @@ struct RigInfo {
 
 /// The [valve] table of a sidecar: an FE case or a Bingham static map.
 struct ValveInfo {
-  std::string case_file;                 ///< path resolved against the sidecar's folder, or empty
-  std::vector<double> yield_current;     ///< [A]
-  std::vector<double> yield_pressure;    ///< [Pa]
+  std::string case_file;               ///< path resolved against the sidecar's folder, or empty
+  std::vector<double> yield_current;   ///< [A]
+  std::vector<double> yield_pressure;  ///< [Pa]
   std::optional<double> viscous_resistance;  ///< [Pa s/m^3]
 };
 
@@ -49,6 +62,7 @@ struct Recording {
   std::map<std::string, std::vector<double>> columns;  ///< known columns only, SI
   RecordingMeta meta;
   std::string csv_path;
+  std::vector<std::string> warnings;  ///< what the reader passed over (for the caller to show)
 
   /// The column `name`; throws InputError naming the file if it is absent.
   const std::vector<double>& column(const std::string& name) const;

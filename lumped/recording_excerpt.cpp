@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::lumped {
 

@@ -10,11 +10,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 #include <set>
 #include <sstream>
 
-#include "mesh/error.hpp"
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::lumped {
 
@@ -107,25 +107,6 @@ std::vector<double> number_array(const toml::table& table, const std::string& ke
   return out;
 }
 
-void write_atomically(const std::string& path, const std::string& content) {
-  fs::path target(path);
-  fs::path tmp = target;
-  tmp += ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(path + ": cannot open for writing");
-    out << content;
-    out.flush();
-    if (!out) throw InputError(path + ": write failed");
-  }
-  std::error_code ec;
-  fs::rename(tmp, target, ec);
-  if (ec) {
-    fs::remove(tmp);
-    throw InputError(path + ": cannot rename temporary file into place: " + ec.message());
-  }
-}
-
 std::string format_number(double v) {
   char buffer[64];
   auto [ptr, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
@@ -167,13 +148,14 @@ RecordingMeta read_sidecar(const std::string& toml_path) {
   meta.output = *output;
 
   if (const toml::table* rig = doc["rig"].as_table()) {
-    meta.rig.kind = (*rig)["kind"].value_or(std::string());
-    static const std::set<std::string> kinds = {"constant_velocity_pump", "bypass_cylinder",
-                                                "damper", "coil_bench"};
-    if (!meta.rig.kind.empty() && !kinds.count(meta.rig.kind))
-      throw InputError(toml_path + ": [rig] kind '" + meta.rig.kind +
-                       "' is not one of constant_velocity_pump, bypass_cylinder, damper, "
-                       "coil_bench");
+    const std::string kind = (*rig)["kind"].value_or(std::string());
+    if (!kind.empty()) {
+      meta.rig.kind = kRigKindNames.find(kind);
+      if (!meta.rig.kind)
+        throw InputError(toml_path + ": [rig] kind '" + kind +
+                         "' is not one of constant_velocity_pump, bypass_cylinder, damper, "
+                         "coil_bench");
+    }
     meta.rig.piston_area = optional_number(*rig, "piston_area", toml_path, "rig");
     meta.rig.chamber_volume = optional_number(*rig, "chamber_volume", toml_path, "rig");
     meta.rig.rod_area = optional_number(*rig, "rod_area", toml_path, "rig");
@@ -214,6 +196,7 @@ RecordingMeta read_sidecar(const std::string& toml_path) {
 }
 
 Recording read_csv_samples(const std::string& csv_path) {
+  std::vector<std::string> warnings;
   std::ifstream in(csv_path);
   if (!in) throw InputError(csv_path + ": cannot open recording");
   Recording rec;
@@ -243,8 +226,7 @@ Recording read_csv_samples(const std::string& csv_path) {
       slot[c] = static_cast<int>(kept.size());
       kept.push_back(header[c]);
     } else {
-      std::cerr << "rheomag: warning: " << csv_path << ": ignoring unknown column '" << header[c]
-                << "'\n";
+      warnings.push_back(csv_path + ": ignoring unknown column '" + header[c] + "'");
     }
   }
   if (!seen.count("t")) fail_at(csv_path, line_no, "no 't' column (time in s is required)");
@@ -280,6 +262,7 @@ Recording read_csv_samples(const std::string& csv_path) {
     else
       rec.columns[kept[k]] = std::move(data[k]);
   }
+  rec.warnings = std::move(warnings);
   return rec;
 }
 
@@ -341,7 +324,7 @@ void write_recording(const Recording& rec, const std::string& csv_path) {
                                       {"drive", drive},
                                       {"output", rec.meta.output}});
   toml::table rig;
-  if (!rec.meta.rig.kind.empty()) rig.insert("kind", rec.meta.rig.kind);
+  if (rec.meta.rig.kind) rig.insert("kind", std::string(kRigKindNames.name(*rec.meta.rig.kind)));
   if (rec.meta.rig.piston_area) rig.insert("piston_area", *rec.meta.rig.piston_area);
   if (rec.meta.rig.chamber_volume) rig.insert("chamber_volume", *rec.meta.rig.chamber_volume);
   if (rec.meta.rig.rod_area) rig.insert("rod_area", *rec.meta.rig.rod_area);
@@ -374,8 +357,8 @@ void write_recording(const Recording& rec, const std::string& csv_path) {
        << " (shared/docs/recording-format.md)\n"
        << doc << "\n";
 
-  write_atomically(csv_path, csv.str());
-  write_atomically(sidecar_path_for(csv_path), side.str());
+  write_file_atomically(csv_path, csv.str());
+  write_file_atomically(sidecar_path_for(csv_path), side.str());
 }
 
 }  // namespace rheomag::lumped

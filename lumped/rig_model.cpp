@@ -6,39 +6,21 @@
 #include <cmath>
 #include <random>
 
+#include "core/error.hpp"
 #include "lumped/ode.hpp"
 #include "lumped/ode_grid.hpp"
 #include "lumped/smooth.hpp"
-#include "mesh/error.hpp"
 
 namespace rheomag::lumped {
 
 bool parse_rig_kind(const std::string& name, RigKind& kind) {
-  if (name == "constant_velocity_pump")
-    kind = RigKind::constant_velocity_pump;
-  else if (name == "bypass_cylinder")
-    kind = RigKind::bypass_cylinder;
-  else if (name == "damper")
-    kind = RigKind::damper;
-  else if (name == "coil_bench")
-    kind = RigKind::coil_bench;
-  else
-    return false;
-  return true;
+  const std::optional<RigKind> found = kRigKindNames.find(name);
+  if (found) kind = *found;
+  return found.has_value();
 }
 
 std::string rig_kind_name(RigKind kind) {
-  switch (kind) {
-    case RigKind::constant_velocity_pump:
-      return "constant_velocity_pump";
-    case RigKind::bypass_cylinder:
-      return "bypass_cylinder";
-    case RigKind::damper:
-      return "damper";
-    case RigKind::coil_bench:
-      return "coil_bench";
-  }
-  return "";
+  return std::string(kRigKindNames.name(kind));
 }
 
 std::vector<std::string> rig_drive_columns(const RigSpec& spec) {
@@ -425,7 +407,7 @@ Recording simulate_rig(const RigSpec& spec_in, const Recording& drive) {
   rec.meta.description = spec.description;
   rec.meta.drive = rig_drive_columns(spec);
   rec.meta.output = rig_output_column(spec);
-  rec.meta.rig.kind = rig_kind_name(spec.kind);
+  rec.meta.rig.kind = spec.kind;
   if (spec.kind != RigKind::coil_bench) {
     rec.meta.rig.piston_area = spec.piston_area;
     if (spec.compressibility) rec.meta.rig.chamber_volume = spec.compressibility->oil_volume;

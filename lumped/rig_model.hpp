@@ -14,7 +14,6 @@
 namespace rheomag::lumped {
 
 /// Rig layouts of the papers.
-enum class RigKind { constant_velocity_pump, bypass_cylinder, damper, coil_bench };
 
 /// How the coil is fed.
 enum class DriverMode {

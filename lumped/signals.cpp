@@ -8,8 +8,8 @@
 #include <map>
 #include <optional>
 
+#include "core/error.hpp"
 #include "lumped/recording_io.hpp"
-#include "mesh/error.hpp"
 
 namespace rheomag::lumped {
 

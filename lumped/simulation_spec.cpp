@@ -11,9 +11,9 @@
 #include <set>
 #include <sstream>
 
+#include "core/error.hpp"
 #include "lumped/lugre_paper001.hpp"
 #include "lumped/transfer_function.hpp"
-#include "mesh/error.hpp"
 
 namespace rheomag::lumped {
 
@@ -369,7 +369,7 @@ Recording simulate_spec(const SimulationSpec& spec, const Recording& drive) {
     for (double& v : p) v *= 1e5;  // bar -> Pa
     rec.columns["pressure"] = p;
     rec.meta.output = "pressure";
-    rec.meta.rig.kind = "constant_velocity_pump";
+    rec.meta.rig.kind = RigKind::constant_velocity_pump;
     rec.meta.description = "TF14 of paper 000 (Table 7), current -> pressure";
   } else if (spec.lugre_paper001) {
     std::vector<double> flow = drive.column("velocity");
@@ -379,7 +379,7 @@ Recording simulate_spec(const SimulationSpec& spec, const Recording& drive) {
       rec.columns["displacement"] = drive.column("displacement");
     rec.columns["pressure"] = simulate_lugre_paper001(drive.t, flow, drive.column("current"));
     rec.meta.output = "pressure";
-    rec.meta.rig.kind = "bypass_cylinder";
+    rec.meta.rig.kind = RigKind::bypass_cylinder;
     rec.meta.rig.piston_area = spec.piston_area;
     rec.meta.description = "LuGre valve model of paper 001 (eqs. 8-9, Table 3)";
   } else {
@@ -387,7 +387,7 @@ Recording simulate_spec(const SimulationSpec& spec, const Recording& drive) {
     driven.columns["force"] = std::vector<double>(drive.t.size(), 0.0);
     rec.columns["force"] = simulate_pheno(driven, spec.pheno->setup, spec.pheno->params);
     rec.meta.output = "force";
-    rec.meta.rig.kind = "damper";
+    rec.meta.rig.kind = RigKind::damper;
     rec.meta.description = pheno_name(spec.pheno->setup.kind) + " model";
   }
   rec.meta.drive = spec_drive_columns(spec);

@@ -7,11 +7,16 @@
 #include <string>
 #include <vector>
 
+#include "case/case_sections.hpp"
 #include "lumped/greybox.hpp"
 #include "lumped/recording.hpp"
 #include "lumped/rig_model.hpp"
 
 namespace rheomag::lumped {
+
+/// [lumped] and [identify] are case-file sections reserved for this layer (docs/case-format.md).
+inline const bool kLumpedSectionsRegistered =
+    cases::register_case_section("lumped") && cases::register_case_section("identify");
 
 /// A phenomenological model with given parameters (from [model] of a spec).
 struct PhenoSpec {

@@ -11,10 +11,10 @@
 #include <cmath>
 #include <random>
 
+#include "core/error.hpp"
 #include "lumped/multistart_fit.hpp"
 #include "lumped/ode.hpp"
 #include "lumped/standard_errors.hpp"
-#include "mesh/error.hpp"
 
 namespace rheomag::lumped {
 

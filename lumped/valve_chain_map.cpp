@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "fluid/valve_chain.hpp"
-#include "magnetostatics/case_file.hpp"
-#include "mesh/error.hpp"
+#include "case/case_file.hpp"
+#include "core/error.hpp"
+#include "valve/valve_chain.hpp"
 
 namespace rheomag::lumped {
 
@@ -15,8 +15,8 @@ std::shared_ptr<const ChainMapTable> tabulate_valve_chain(const std::string& cas
                                                           int current_points, int flow_points) {
   if (!(max_current > 0.0) || !(max_flow > 0.0) || current_points < 2 || flow_points < 2)
     throw InputError(case_file + ": the valve map needs a current range > 0 A and a flow > 0");
-  const auto c = magnetostatics::load_case(case_file);
-  fluid::ValveChain chain(c, fluid::read_valve_options(c));
+  const auto c = cases::load_case(case_file);
+  valve::ValveChain chain(c, valve::read_valve_options(c));
   auto table = std::make_shared<ChainMapTable>();
   table->case_file = case_file;
   for (int i = 0; i < current_points; ++i)

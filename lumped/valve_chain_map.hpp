@@ -1,6 +1,6 @@
 #pragma once
 // Static valve map from the fluid chain: the pressure drop of a case's magnetised gaps
-// (fluid::ValveChain, FE field per current) tabulated once on a current x flow grid, split into
+// (valve::ValveChain, FE field per current) tabulated once on a current x flow grid, split into
 // the yield part and the viscous (Poiseuille) part so each carries its own calibration scale, and
 // its inverse Q(dp, I) for rigs with compliant chambers. Templates so Ceres Jets flow through the
 // scales and the states.
@@ -27,7 +27,7 @@ struct ChainMapTable {
   T yield_at(std::size_t k, const T& i) const;
 };
 
-/// Evaluates `case_file` with fluid::ValveChain at `currents` x `flows` once and returns the table
+/// Evaluates `case_file` with valve::ValveChain at `currents` x `flows` once and returns the table
 /// (currents from 0 to max_current, flows log-spaced from 1e-3 to 1.5 times max_flow). Throws
 /// InputError if the case cannot be read or has no valve.
 std::shared_ptr<const ChainMapTable> tabulate_valve_chain(const std::string& case_file,

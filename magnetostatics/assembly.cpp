@@ -8,7 +8,7 @@
 #include <numbers>
 #include <string>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::magnetostatics {
 namespace {
@@ -37,7 +37,7 @@ int assembly_threads() {
   return assembly_thread_setting.load(std::memory_order_relaxed);
 }
 
-Assembler::Assembler(const Problem& problem, const mesh::Mesh& mesh, const DofMap& dofs)
+Assembler::Assembler(const cases::Problem& problem, const mesh::Mesh& mesh, const DofMap& dofs)
     : problem_(problem), mesh_(mesh), dofs_(dofs), laws_(build_reluctivities(problem)) {
   if (mesh.order != 1 && mesh.order != 2) {
     throw InputError("mesh order " + std::to_string(mesh.order) + "; expected 1 or 2");
@@ -66,8 +66,8 @@ Assembler::Assembler(const Problem& problem, const mesh::Mesh& mesh, const DofMa
   }
   for (const mesh::BoundaryEdge& edge : mesh.boundary_edges) {
     if (edge.boundary < 0 || edge.boundary >= static_cast<int>(problem.boundaries.size())) continue;
-    const BoundaryCondition& bc = problem.boundaries[edge.boundary];
-    if (bc.kind == BoundaryKind::mixed) robin_edges_.push_back({edge.nodes, bc.c0, bc.c1});
+    const cases::BoundaryCondition& bc = problem.boundaries[edge.boundary];
+    if (bc.kind == cases::BoundaryKind::mixed) robin_edges_.push_back({edge.nodes, bc.c0, bc.c1});
   }
 
   // Sparsity pattern: lower triangle of the free-dof couplings of every triangle.
@@ -265,8 +265,8 @@ void Assembler::for_robin_points(const RobinEdge& edge, Visit visit) const {
     edge_basis(mesh_.order, g.t, n);
     const double r = p0.r + g.t * (p1.r - p0.r);
     visit(n, g.weight * length *
-                 (problem_.symmetry == Symmetry::axisymmetric ? 2.0 * std::numbers::pi * r
-                                                              : problem_.depth));
+                 (problem_.symmetry == cases::Symmetry::axisymmetric ? 2.0 * std::numbers::pi * r
+                                                                     : problem_.depth));
   }
 }
 
@@ -461,7 +461,7 @@ Eigen::VectorXd Assembler::circuit_source(int c) const {
   double f[kMaxElementNodes];
   for (int e = 0; e < static_cast<int>(mesh_.triangles.size()); ++e) {
     const int region = mesh_.region[e];
-    const RegionData& data = problem_.regions[region];
+    const cases::RegionData& data = problem_.regions[region];
     if (data.circuit != c || data.turns == 0.0 || region_area_[region] <= 0.0) continue;
     quadrature(e, q);
     element_source(q, f);

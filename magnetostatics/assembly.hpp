@@ -4,9 +4,9 @@
 #include <Eigen/Sparse>
 #include <vector>
 
+#include "case/problem.hpp"
 #include "magnetostatics/dof_map.hpp"
 #include "magnetostatics/element_kernel.hpp"
-#include "magnetostatics/problem.hpp"
 #include "magnetostatics/reluctivity.hpp"
 #include "mesh/mesh.hpp"
 
@@ -43,7 +43,7 @@ struct Patch {
 class Assembler {
  public:
   /// Checks that every triangle's region has a material (InputError otherwise).
-  Assembler(const Problem& problem, const mesh::Mesh& mesh, const DofMap& dofs);
+  Assembler(const cases::Problem& problem, const mesh::Mesh& mesh, const DofMap& dofs);
 
   /// Free-dof residual of the internal forces plus mixed (Robin) boundary terms at the nodal
   /// values `a` (all nodes, prescribed ones included); also the lower-triangular tangent when
@@ -102,7 +102,7 @@ class Assembler {
                      SparseMatrix* tangent) const;
   int matrix_offset(int row, int col) const;  // position in pattern_ values, -1 if not stored
 
-  const Problem& problem_;
+  const cases::Problem& problem_;
   const mesh::Mesh& mesh_;
   const DofMap& dofs_;
   std::vector<Reluctivity> laws_;

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "magnetostatics/constants.hpp"
-#include "mesh/error.hpp"
+#include "core/constants.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::magnetostatics {
 namespace {
@@ -16,12 +16,12 @@ namespace {
 
 }  // namespace
 
-BhCurve::BhCurve(const std::vector<BhPoint>& table, const std::string& material) {
+BhCurve::BhCurve(const std::vector<cases::BhPoint>& table, const std::string& material) {
   if (table.size() < 2) {
     fail(material, "has " + std::to_string(table.size()) + " point(s); expected at least 2");
   }
   for (std::size_t k = 0; k < table.size(); ++k) {
-    const BhPoint& p = table[k];
+    const cases::BhPoint& p = table[k];
     if (!std::isfinite(p.b) || !std::isfinite(p.h) || p.b < 0.0 || p.h < 0.0) {
       std::ostringstream msg;
       msg << "point " << k + 1 << " (B = " << p.b << " T, H = " << p.h
@@ -42,7 +42,7 @@ BhCurve::BhCurve(const std::vector<BhPoint>& table, const std::string& material)
     b_.push_back(0.0);
     h_.push_back(0.0);
   }
-  for (const BhPoint& p : table) {
+  for (const cases::BhPoint& p : table) {
     b_.push_back(p.b);
     h_.push_back(p.h);
   }

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "magnetostatics/problem.hpp"
+#include "case/problem.hpp"
 
 namespace rheomag::magnetostatics {
 
@@ -28,7 +28,7 @@ class BhCurve {
   /// Builds the curve; `material` names the material in error messages. A leading (0, 0) point is
   /// optional (added when absent). Throws InputError unless the table has >= 2 points, all
   /// finite, B and H >= 0 and both strictly increasing.
-  BhCurve(const std::vector<BhPoint>& table, const std::string& material);
+  BhCurve(const std::vector<cases::BhPoint>& table, const std::string& material);
 
   /// Field strength H(B) [A/m] for B >= 0 [T].
   double h(double b) const;

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <string>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::magnetostatics {
 
-DofMap build_dof_map(const mesh::Mesh& mesh, const Problem& problem) {
+DofMap build_dof_map(const mesh::Mesh& mesh, const cases::Problem& problem) {
   const std::size_t count = mesh.nodes.size();
   std::vector<bool> fixed(count, false);
   DofMap map;
@@ -21,15 +21,15 @@ DofMap build_dof_map(const mesh::Mesh& mesh, const Problem& problem) {
                        "no boundary condition (" + std::to_string(problem.boundaries.size()) +
                        " defined)");
     }
-    const BoundaryCondition& bc = problem.boundaries[edge.boundary];
-    if (bc.kind != BoundaryKind::prescribed_a) continue;
+    const cases::BoundaryCondition& bc = problem.boundaries[edge.boundary];
+    if (bc.kind != cases::BoundaryKind::prescribed_a) continue;
     for (int node : edge.nodes) {
       if (node < 0) continue;
       fixed[node] = true;
       map.fixed_value[node] = bc.a_value;
     }
   }
-  if (problem.symmetry == Symmetry::axisymmetric) {
+  if (problem.symmetry == cases::Symmetry::axisymmetric) {
     double extent = 0.0;
     for (const mesh::Point& p : mesh.nodes)
       extent = std::max({extent, std::abs(p.r), std::abs(p.z)});

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "magnetostatics/problem.hpp"
+#include "case/problem.hpp"
 #include "mesh/mesh.hpp"
 
 namespace rheomag::magnetostatics {
@@ -21,6 +21,6 @@ struct DofMap {
 /// Prescribes A = 0 on every node on the axis r = 0 (axisymmetric; |r| <= 1e-9 x mesh extent)
 /// and A = value on the nodes of mesh boundary edges whose marker is a `prescribed_a` condition;
 /// the axis wins where both apply. Throws InputError for a marker outside Problem::boundaries.
-DofMap build_dof_map(const mesh::Mesh& mesh, const Problem& problem);
+DofMap build_dof_map(const mesh::Mesh& mesh, const cases::Problem& problem);
 
 }  // namespace rheomag::magnetostatics

@@ -7,17 +7,17 @@
 #include <sstream>
 #include <utility>
 
-#include "magnetostatics/constants.hpp"
-#include "mesh/error.hpp"
+#include "core/constants.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::magnetostatics {
 namespace {
 
-int air_material(Problem& p) {
+int air_material(cases::Problem& p) {
   for (std::size_t m = 0; m < p.materials.size(); ++m) {
     if (p.materials[m].name == "air" && p.materials[m].bh.empty()) return static_cast<int>(m);
   }
-  Material air;
+  cases::Material air;
   air.name = "air";
   air.mu_r = 1.0;
   air.source = "vacuum permeability (air: mu_r - 1 ~ 4e-7)";
@@ -27,9 +27,9 @@ int air_material(Problem& p) {
 
 }  // namespace
 
-Problem close_domain(const Problem& problem) {
-  Problem p = problem;
-  if (p.outer == OuterBoundary::none) return p;
+cases::Problem close_domain(const cases::Problem& problem) {
+  cases::Problem p = problem;
+  if (p.outer == cases::OuterBoundary::none) return p;
   auto& g = p.geometry;
   if (g.points.empty()) throw InputError(g.source + ": the geometry has no points");
   if (!std::isfinite(p.outer_radius_factor) || p.outer_radius_factor <= 1.0) {
@@ -38,7 +38,7 @@ Problem close_domain(const Problem& problem) {
         << "; expected a number > 1";
     throw InputError(msg.str());
   }
-  const bool axisymmetric = p.symmetry == Symmetry::axisymmetric;
+  const bool axisymmetric = p.symmetry == cases::Symmetry::axisymmetric;
   double r_min = g.points[0].r, r_max = r_min, z_min = g.points[0].z, z_max = z_min;
   for (const mesh::Point& q : g.points) {
     r_min = std::min(r_min, q.r), r_max = std::max(r_max, q.r);
@@ -60,11 +60,11 @@ Problem close_domain(const Problem& problem) {
   if (!(bounding > 0.0)) throw InputError(g.source + ": the geometry has zero extent");
   const double radius = p.outer_radius_factor * bounding;
 
-  BoundaryCondition outer;
-  if (p.outer == OuterBoundary::open) {
-    outer = {"open (asymptotic dipole decay)", BoundaryKind::mixed, 0.0, kNu0 / radius, 0.0};
+  cases::BoundaryCondition outer;
+  if (p.outer == cases::OuterBoundary::open) {
+    outer = {"open (asymptotic dipole decay)", cases::BoundaryKind::mixed, 0.0, kNu0 / radius, 0.0};
   } else {
-    outer = {"outer A = 0", BoundaryKind::prescribed_a, 0.0, 0.0, 0.0};
+    outer = {"outer A = 0", cases::BoundaryKind::prescribed_a, 0.0, 0.0, 0.0};
   }
   p.boundaries.push_back(outer);
   const int marker = static_cast<int>(p.boundaries.size()) - 1;
@@ -107,7 +107,7 @@ Problem close_domain(const Problem& problem) {
     air.name = "air";
     g.regions.push_back(air);
     g.default_region = static_cast<int>(g.regions.size()) - 1;
-    RegionData data;
+    cases::RegionData data;
     data.material = air_material(p);
     p.regions.resize(g.regions.size() - 1);
     p.regions.push_back(data);

@@ -1,7 +1,7 @@
 #pragma once
 // Closing the computational domain: the automatic outer boundary and the background air region.
 
-#include "magnetostatics/problem.hpp"
+#include "case/problem.hpp"
 
 namespace rheomag::magnetostatics {
 
@@ -24,6 +24,6 @@ inline constexpr int kOuterArcSegments = 96;
 ///   the problem has a linear material of that name) unless geometry.default_region is already set.
 /// Throws InputError if there is no geometry, a point has r < 0 (axisymmetric) or the factor is
 /// not a finite number > 1.
-Problem close_domain(const Problem& problem);
+cases::Problem close_domain(const cases::Problem& problem);
 
 }  // namespace rheomag::magnetostatics

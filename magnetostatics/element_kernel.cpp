@@ -5,7 +5,7 @@
 
 namespace rheomag::magnetostatics {
 
-void b_operator(Symmetry symmetry, int order, const std::array<mesh::Point, 3>& v, double xi,
+void b_operator(cases::Symmetry symmetry, int order, const std::array<mesh::Point, 3>& v, double xi,
                 double eta, double* n, double* g_r, double* g_z) {
   double d_xi[kMaxElementNodes], d_eta[kMaxElementNodes];
   lagrange_basis(order, xi, eta, n, d_xi, d_eta);
@@ -18,7 +18,7 @@ void b_operator(Symmetry symmetry, int order, const std::array<mesh::Point, 3>& 
   for (int i = 0; i < nodes; ++i) {
     const double dn_dr = (z20 * d_xi[i] - z10 * d_eta[i]) * inv_det;
     const double dn_dz = (-r20 * d_xi[i] + r10 * d_eta[i]) * inv_det;
-    if (symmetry == Symmetry::axisymmetric) {
+    if (symmetry == cases::Symmetry::axisymmetric) {
       g_r[i] = -dn_dz;
       // B_z = dA/dr + A/r; on the axis (A = 0 there) A/r -> dA/dr.
       g_z[i] = r > 0.0 ? dn_dr + n[i] * inv_r : 2.0 * dn_dr;
@@ -60,7 +60,7 @@ const ReferenceElement& reference_element(int order) {
 
 }  // namespace
 
-void element_quadrature(Symmetry symmetry, double depth, int order,
+void element_quadrature(cases::Symmetry symmetry, double depth, int order,
                         const std::array<mesh::Point, 3>& v, ElementQuadrature& q) {
   // Same arithmetic as b_operator, with the reference shape functions tabulated once.
   const ReferenceElement& ref = reference_element(order);
@@ -70,7 +70,7 @@ void element_quadrature(Symmetry symmetry, double depth, int order,
   const double z10 = v[1].z - v[0].z, z20 = v[2].z - v[0].z;
   const double inv_det = 1.0 / (r10 * z20 - r20 * z10);
   const double area = 0.5 * std::abs(r10 * z20 - r20 * z10);
-  const bool axisymmetric = symmetry == Symmetry::axisymmetric;
+  const bool axisymmetric = symmetry == cases::Symmetry::axisymmetric;
   for (int p = 0; p < ref.points; ++p) {
     const double xi = ref.xi[p], eta = ref.eta[p];
     const double r = v[0].r + xi * r10 + eta * r20;

@@ -9,8 +9,8 @@
 
 #include <array>
 
+#include "case/problem.hpp"
 #include "magnetostatics/lagrange.hpp"
-#include "magnetostatics/problem.hpp"
 #include "magnetostatics/reluctivity.hpp"
 #include "mesh/pslg.hpp"
 
@@ -33,11 +33,11 @@ struct ElementQuadrature {
 
 /// B operator of a point given reference coordinates (xi, eta) in a triangle with vertices `v`:
 /// fills n, g_r, g_z (size nodes). At r = 0 (axisymmetric) it uses the limit A/r -> dA/dr.
-void b_operator(Symmetry symmetry, int order, const std::array<mesh::Point, 3>& v, double xi,
+void b_operator(cases::Symmetry symmetry, int order, const std::array<mesh::Point, 3>& v, double xi,
                 double eta, double* n, double* g_r, double* g_z);
 
 /// Shape functions, B operators and weights of a triangle with vertices `v`.
-void element_quadrature(Symmetry symmetry, double depth, int order,
+void element_quadrature(cases::Symmetry symmetry, double depth, int order,
                         const std::array<mesh::Point, 3>& v, ElementQuadrature& q);
 
 /// Flux density (B_r, B_z) [T] at quadrature point `p` for local nodal values `a`.

@@ -5,7 +5,7 @@
 #include <limits>
 #include <sstream>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::magnetostatics {
 namespace {

@@ -3,12 +3,12 @@
 #include <cmath>
 #include <sstream>
 
-#include "magnetostatics/constants.hpp"
-#include "mesh/error.hpp"
+#include "core/constants.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::magnetostatics {
 
-Reluctivity::Reluctivity(const Material& material) {
+Reluctivity::Reluctivity(const cases::Material& material) {
   if (!material.bh.empty()) {
     curve_.emplace(material.bh, material.name);
     return;
@@ -26,10 +26,10 @@ double Reluctivity::energy_density(double b2) const {
   return curve_ ? curve_->energy_density(std::sqrt(b2)) : 0.5 * nu_linear_ * b2;
 }
 
-std::vector<Reluctivity> build_reluctivities(const Problem& problem) {
+std::vector<Reluctivity> build_reluctivities(const cases::Problem& problem) {
   std::vector<Reluctivity> laws;
   laws.reserve(problem.materials.size());
-  for (const Material& m : problem.materials) laws.emplace_back(m);
+  for (const cases::Material& m : problem.materials) laws.emplace_back(m);
   return laws;
 }
 

@@ -4,8 +4,8 @@
 #include <optional>
 #include <vector>
 
+#include "case/problem.hpp"
 #include "magnetostatics/bh_curve.hpp"
-#include "magnetostatics/problem.hpp"
 
 namespace rheomag::magnetostatics {
 
@@ -14,7 +14,7 @@ class Reluctivity {
  public:
   /// Linear (1/(mu0 mu_r)) when `material.bh` is empty, else the B-H curve. Throws InputError
   /// naming the material on a bad table or a non-positive / non-finite mu_r.
-  explicit Reluctivity(const Material& material);
+  explicit Reluctivity(const cases::Material& material);
 
   /// True for a B-H curve (the problem is nonlinear).
   bool nonlinear() const { return curve_.has_value(); }
@@ -31,6 +31,6 @@ class Reluctivity {
 };
 
 /// One law per material of the problem, same order as Problem::materials.
-std::vector<Reluctivity> build_reluctivities(const Problem& problem);
+std::vector<Reluctivity> build_reluctivities(const cases::Problem& problem);
 
 }  // namespace rheomag::magnetostatics

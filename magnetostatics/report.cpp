@@ -74,34 +74,35 @@ nlohmann::json results_json(const MagnetostaticSolver& solver, const Results& re
   const bool has_circuit = !results.circuits.empty();
   const CircuitResult first = has_circuit ? results.circuits.front() : CircuitResult{};
   const double nan = std::nan("");
-  return {
-      {"gaps", gaps},
-      {"circuits", circuits},
-      {"flux_linkage", number(has_circuit ? first.flux_linkage : nan)},
-      {"inductance", number(has_circuit ? first.inductance : nan)},
-      {"incremental_inductance", number(has_circuit ? first.incremental_inductance : nan)},
-      {"energy", number(results.energy)},
-      {"coenergy", number(results.coenergy)},
-      {"newton_iterations", results.newton_iterations},
-      {"residual_history", results.residual_history},
-      {"dofs", results.dofs},
-      {"elements", results.elements},
-      {"nodes", results.nodes},
-      {"order", solver.mesh().order},
-      {"symmetry", solver.problem().symmetry == Symmetry::axisymmetric ? "axisymmetric" : "planar"},
-      {"seconds", number(results.seconds)}};
+  return {{"gaps", gaps},
+          {"circuits", circuits},
+          {"flux_linkage", number(has_circuit ? first.flux_linkage : nan)},
+          {"inductance", number(has_circuit ? first.inductance : nan)},
+          {"incremental_inductance", number(has_circuit ? first.incremental_inductance : nan)},
+          {"energy", number(results.energy)},
+          {"coenergy", number(results.coenergy)},
+          {"newton_iterations", results.newton_iterations},
+          {"residual_history", results.residual_history},
+          {"dofs", results.dofs},
+          {"elements", results.elements},
+          {"nodes", results.nodes},
+          {"order", solver.mesh().order},
+          {"symmetry",
+           solver.problem().symmetry == cases::Symmetry::axisymmetric ? "axisymmetric" : "planar"},
+          {"seconds", number(results.seconds)}};
 }
 
 std::string results_summary(const MagnetostaticSolver& solver, const Results& results) {
   std::ostringstream out;
   char line[512];
   const double residual = results.residual_history.empty() ? 0.0 : results.residual_history.back();
-  std::snprintf(line, sizeof line,
-                "%s magnetostatics, P%d: %d elements, %d dofs, %d Newton iterations "
-                "(final relative residual %.2e), %.3f s\n",
-                solver.problem().symmetry == Symmetry::axisymmetric ? "axisymmetric" : "planar",
-                solver.mesh().order, results.elements, results.dofs, results.newton_iterations,
-                residual, results.seconds);
+  std::snprintf(
+      line, sizeof line,
+      "%s magnetostatics, P%d: %d elements, %d dofs, %d Newton iterations "
+      "(final relative residual %.2e), %.3f s\n",
+      solver.problem().symmetry == cases::Symmetry::axisymmetric ? "axisymmetric" : "planar",
+      solver.mesh().order, results.elements, results.dofs, results.newton_iterations, residual,
+      results.seconds);
   out << line;
   if (!results.gaps.empty()) {
     out << "\nfluid gap [T]          kind     |B| area avg  |Bn| area avg  mid-line |B| avg"

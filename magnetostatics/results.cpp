@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "magnetostatics/constants.hpp"
+#include "core/constants.hpp"
 
 namespace rheomag::magnetostatics {
 namespace {
@@ -199,7 +199,7 @@ bool flux_density_at(const MagnetostaticSolver& solver, const Solution& solution
 
 Results compute_results(const MagnetostaticSolver& solver, const Solution& solution) {
   Results res;
-  const Problem& problem = solver.problem();
+  const cases::Problem& problem = solver.problem();
   element_fields(solver, solution, res);
   const double exterior = solver.assembler().boundary_energy(solution.a);
   res.energy += exterior;
@@ -214,7 +214,7 @@ Results compute_results(const MagnetostaticSolver& solver, const Solution& solut
     CircuitResult circuit;
     circuit.name = problem.circuits[c].name;
     circuit.current = solution.currents[c];
-    for (const RegionData& region : problem.regions) {
+    for (const cases::RegionData& region : problem.regions) {
       if (region.circuit == c) circuit.turns += region.turns;
     }
     circuit.flux_linkage = solution.flux_linkage[c];

@@ -3,12 +3,12 @@
 #include <chrono>
 #include <string>
 
+#include "core/error.hpp"
 #include "magnetostatics/domain.hpp"
-#include "mesh/error.hpp"
 
 namespace rheomag::magnetostatics {
 
-SolveResult solve_problem(const Problem& problem, const SolveOptions& options) {
+SolveResult solve_problem(const cases::Problem& problem, const SolveOptions& options) {
   if (problem.order != 1 && problem.order != 2) {
     throw InputError(problem.geometry.source + ": element order " + std::to_string(problem.order) +
                      "; expected 1 or 2");
@@ -19,7 +19,7 @@ SolveResult solve_problem(const Problem& problem, const SolveOptions& options) {
                      " regions");
   }
   const auto start = std::chrono::steady_clock::now();
-  Problem closed = close_domain(problem);
+  cases::Problem closed = close_domain(problem);
   mesh::MeshOptions mesh_options = options.mesh;
   mesh_options.order = closed.order;
   mesh_options.min_gap_elements = closed.min_gap_elements;

@@ -3,7 +3,7 @@
 
 #include <memory>
 
-#include "magnetostatics/problem.hpp"
+#include "case/problem.hpp"
 #include "magnetostatics/results.hpp"
 #include "magnetostatics/solver.hpp"
 #include "mesh/mesher.hpp"
@@ -22,6 +22,6 @@ struct SolveResult {
 /// close_domain -> mesh::generate_mesh (order Problem::order, Problem::min_gap_elements) ->
 /// MagnetostaticSolver -> solve at the Problem's circuit currents -> compute_results.
 /// Throws InputError for bad input and ConvergenceError if Newton fails.
-SolveResult solve_problem(const Problem& problem, const SolveOptions& options = {});
+SolveResult solve_problem(const cases::Problem& problem, const SolveOptions& options = {});
 
 }  // namespace rheomag::magnetostatics

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/error.hpp"
 #include "magnetostatics/local_correction.hpp"
 #include "magnetostatics/preconditioned_cg.hpp"
 #include "magnetostatics/serial_openmp.hpp"
-#include "mesh/error.hpp"
 
 namespace rheomag::magnetostatics {
 
@@ -59,17 +59,18 @@ class MagnetostaticSolver::System : public NonlinearSystem {
   Eigen::VectorXd remembered_x_, remembered_r_;
 };
 
-MagnetostaticSolver::MagnetostaticSolver(Problem problem, mesh::Mesh mesh, SolveOptions options)
+MagnetostaticSolver::MagnetostaticSolver(cases::Problem problem, mesh::Mesh mesh,
+                                         SolveOptions options)
     : problem_(std::move(problem)), mesh_(std::move(mesh)), options_(options) {
   if (mesh_.region.size() != mesh_.triangles.size()) {
     throw InputError("mesh has " + std::to_string(mesh_.triangles.size()) + " triangles but " +
                      std::to_string(mesh_.region.size()) + " region ids");
   }
-  if (problem_.symmetry == Symmetry::planar &&
+  if (problem_.symmetry == cases::Symmetry::planar &&
       !(problem_.depth > 0.0 && std::isfinite(problem_.depth))) {
     throw InputError("planar depth must be a finite number > 0 m");
   }
-  for (const RegionData& region : problem_.regions) {
+  for (const cases::RegionData& region : problem_.regions) {
     if (region.circuit >= static_cast<int>(problem_.circuits.size())) {
       throw InputError("a region refers to circuit " + std::to_string(region.circuit) + " but " +
                        std::to_string(problem_.circuits.size()) + " circuit(s) are defined");
@@ -78,15 +79,17 @@ MagnetostaticSolver::MagnetostaticSolver(Problem problem, mesh::Mesh mesh, Solve
   dofs_ = build_dof_map(mesh_, problem_);
   const bool robin = std::any_of(
       mesh_.boundary_edges.begin(), mesh_.boundary_edges.end(), [&](const mesh::BoundaryEdge& e) {
-        return e.boundary >= 0 && problem_.boundaries[e.boundary].kind == BoundaryKind::mixed &&
+        return e.boundary >= 0 &&
+               problem_.boundaries[e.boundary].kind == cases::BoundaryKind::mixed &&
                problem_.boundaries[e.boundary].c0 > 0.0;
       });
   if (dofs_.free_count() == static_cast<int>(mesh_.nodes.size()) && !robin) {
-    throw InputError(problem_.geometry.source +
-                     ": A is not determined (no prescribed-A boundary, no mixed boundary with "
-                     "c0 > 0" +
-                     (problem_.symmetry == Symmetry::axisymmetric ? ", no node on the axis" : "") +
-                     "); add one, or use the automatic open outer boundary");
+    throw InputError(
+        problem_.geometry.source +
+        ": A is not determined (no prescribed-A boundary, no mixed boundary with "
+        "c0 > 0" +
+        (problem_.symmetry == cases::Symmetry::axisymmetric ? ", no node on the axis" : "") +
+        "); add one, or use the automatic open outer boundary");
   }
   assembler_ = std::make_unique<Assembler>(problem_, mesh_, dofs_);
   linear_ = !assembler_->nonlinear();
@@ -191,7 +194,7 @@ SparseMatrix MagnetostaticSolver::tangent(const Eigen::VectorXd& a) const {
 
 Solution MagnetostaticSolver::solve() {
   std::vector<double> currents;
-  for (const Circuit& c : problem_.circuits) currents.push_back(c.current);
+  for (const cases::Circuit& c : problem_.circuits) currents.push_back(c.current);
   return solve(currents);
 }
 
@@ -251,7 +254,7 @@ std::vector<SweepPoint> MagnetostaticSolver::sweep(int circuit,
                      std::to_string(problem_.circuits.size()) + " circuit(s) are defined");
   }
   std::vector<double> present;
-  for (const Circuit& c : problem_.circuits) present.push_back(c.current);
+  for (const cases::Circuit& c : problem_.circuits) present.push_back(c.current);
   std::vector<SweepPoint> table;
   Eigen::VectorXd previous;
   for (double current : currents) {

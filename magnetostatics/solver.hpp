@@ -7,10 +7,10 @@
 #include <memory>
 #include <vector>
 
+#include "case/problem.hpp"
 #include "magnetostatics/assembly.hpp"
 #include "magnetostatics/dof_map.hpp"
 #include "magnetostatics/newton.hpp"
-#include "magnetostatics/problem.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/mesher.hpp"
 
@@ -56,7 +56,7 @@ class MagnetostaticSolver {
  public:
   /// Takes the problem (regions, materials, circuits, boundaries) and a mesh of it
   /// (mesh.region indexes problem.regions). Throws InputError for inconsistent data.
-  MagnetostaticSolver(Problem problem, mesh::Mesh mesh, SolveOptions options = {});
+  MagnetostaticSolver(cases::Problem problem, mesh::Mesh mesh, SolveOptions options = {});
   MagnetostaticSolver(const MagnetostaticSolver&) = delete;
   MagnetostaticSolver& operator=(const MagnetostaticSolver&) = delete;
 
@@ -73,7 +73,7 @@ class MagnetostaticSolver {
   /// bitwise what a newly constructed solver of the same problem and mesh would give.
   void discard_factorisation();
 
-  const Problem& problem() const { return problem_; }
+  const cases::Problem& problem() const { return problem_; }
   const mesh::Mesh& mesh() const { return mesh_; }
   const DofMap& dofs() const { return dofs_; }
   const Assembler& assembler() const { return *assembler_; }
@@ -108,7 +108,7 @@ class MagnetostaticSolver {
                                  double functional_tolerance = 0.0);
   Eigen::VectorXd solve_factorized(const Eigen::VectorXd& rhs);
 
-  Problem problem_;
+  cases::Problem problem_;
   mesh::Mesh mesh_;
   SolveOptions options_;
   DofMap dofs_;

@@ -13,8 +13,8 @@
 #include <string>
 #include <unordered_map>
 
+#include "core/error.hpp"
 #include "mesh/elevate.hpp"
-#include "mesh/error.hpp"
 #include "mesh/initial_points.hpp"
 #include "mesh/pslg_check.hpp"
 #include "mesh/region_labels.hpp"

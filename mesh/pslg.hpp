@@ -19,17 +19,17 @@ enum class GapKind { none, annular, radial };
 struct Segment {
   int a = 0;
   int b = 0;
-  int boundary = -1;       ///< index into the problem's boundary conditions, -1 if none
-  double max_length = 0.0; ///< requested maximum element edge length on it [m], 0 = none
+  int boundary = -1;        ///< index into the problem's boundary conditions, -1 if none
+  double max_length = 0.0;  ///< requested maximum element edge length on it [m], 0 = none
 };
 
 /// One region (block) of the domain: the face of the PSLG that contains `seed`.
 struct RegionSeed {
-  Point seed;                ///< a point strictly inside the region
-  std::string name;          ///< region name, reported in outputs
-  double mesh_size = 0.0;    ///< target element edge length [m], 0 = automatic
+  Point seed;              ///< a point strictly inside the region
+  std::string name;        ///< region name, reported in outputs
+  double mesh_size = 0.0;  ///< target element edge length [m], 0 = automatic
   GapKind gap = GapKind::none;
-  bool hole = false;         ///< true: not meshed (FEMM "<No Mesh>")
+  bool hole = false;  ///< true: not meshed (FEMM "<No Mesh>")
 };
 
 /// The whole mesher input.
@@ -38,7 +38,7 @@ struct Pslg {
   std::vector<Segment> segments;
   std::vector<RegionSeed> regions;  ///< region index = position in this list
   int default_region = -1;  ///< region of faces reached by no seed; -1 = such faces are an error
-  std::string source;               ///< file name used in error messages
+  std::string source;       ///< file name used in error messages
 };
 
 }  // namespace rheomag::mesh

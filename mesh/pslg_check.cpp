@@ -12,7 +12,7 @@
 #include <sstream>
 #include <utility>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::mesh {
 

@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 #include "mesh/quality.hpp"
 
 namespace rheomag::mesh::detail {

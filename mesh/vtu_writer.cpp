@@ -20,7 +20,8 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "mesh/error.hpp"
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::mesh {
 
@@ -134,27 +135,15 @@ void write_vtu(const std::string& path, const Mesh& mesh, const VtuFields& field
   for (const std::string& name : region_names) names->InsertNextValue(name);
   grid->GetFieldData()->AddArray(names);
 
-  // Write to PATH.tmp, then rename: PATH is either the old file or the complete new one.
-  const std::filesystem::path target(path);
-  const std::filesystem::path temporary(path + ".tmp");
-  {
-    std::ofstream probe(temporary, std::ios::binary | std::ios::trunc);
-    if (!probe)
-      throw InputError("cannot write '" + path +
-                       "': expected an existing, writable directory for the .vtu file");
-  }
-  vtkNew<vtkXMLUnstructuredGridWriter> writer;
-  writer->SetFileName(temporary.c_str());
-  writer->SetInputData(grid);
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff();
-  const bool written = writer->Write() == 1;
-  std::error_code error;
-  if (written) std::filesystem::rename(temporary, target, error);
-  if (!written || error) {
-    std::filesystem::remove(temporary, error);
-    throw InputError("cannot write '" + path + "': writing the .vtu file failed");
-  }
+  // PATH is either the old file or the complete new one; VTK's status is checked.
+  write_file_atomically_with(path, [&](const std::filesystem::path& temporary) {
+    vtkNew<vtkXMLUnstructuredGridWriter> writer;
+    writer->SetFileName(temporary.c_str());
+    writer->SetInputData(grid);
+    writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff();
+    return writer->Write() == 1 && writer->GetErrorCode() == 0;
+  });
 }
 
 }  // namespace rheomag::mesh

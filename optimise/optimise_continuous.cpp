@@ -4,16 +4,13 @@
 #include <cmath>
 #include <optional>
 
-#include "optimise/optimise_case_edit.hpp"
-#include "optimise/optimise_wire_gauge.hpp"
-
 namespace rheomag::optimise {
 
 namespace {
 constexpr int kRestarts = 2;  // Ipopt restarts after a failed fresh-mesh check
 
 // Evaluates `x` on a fresh mesh (the mesh `rheomag solve` of the design makes) and records it.
-DesignReport fresh_mesh_report(DesignEvaluator& evaluator, const OptimiseSpec& spec,
+DesignReport fresh_mesh_report(OptimiseEvaluator& evaluator, const OptimiseSpec& spec,
                                const std::vector<double>& x, const std::string& purpose,
                                std::vector<HistoryRow>& history) {
   evaluator.remesh_next();
@@ -26,7 +23,7 @@ DesignReport fresh_mesh_report(DesignEvaluator& evaluator, const OptimiseSpec& s
 }
 }  // namespace
 
-ContinuousOptimum optimise_continuous(DesignEvaluator& evaluator, const OptimiseSpec& spec,
+ContinuousOptimum optimise_continuous(OptimiseEvaluator& evaluator, const OptimiseSpec& spec,
                                       const std::vector<double>& start, const Quantities* start_q,
                                       double objective_scale, const IpoptSettings& settings,
                                       std::vector<HistoryRow>& history) {
@@ -53,12 +50,13 @@ ContinuousOptimum optimise_continuous(DesignEvaluator& evaluator, const Optimise
   return out;
 }
 
-DesignReport round_counts(DesignEvaluator& evaluator, const magnetostatics::Case& c,
-                          const OptimiseSpec& spec, const DesignReport& design,
-                          std::vector<HistoryRow>& history) {
+DesignReport round_counts(OptimiseEvaluator& evaluator, const OptimiseSpec& spec,
+                          const DesignReport& design, std::vector<HistoryRow>& history) {
   std::vector<std::size_t> counts;
   for (std::size_t i = 0; i < design.x.size(); ++i)
-    if (is_count_key(c.table, spec.variables[i].key) || spec.variables[i].key == kWireGaugeKey)
+    if ((spec.variables[i].target.target == cases::KeyTarget::template_parameter &&
+         spec.variables[i].target.kind == cases::ParameterKind::count) ||
+        spec.variables[i].target.target == cases::KeyTarget::wire_gauge)
       counts.push_back(i);
   if (counts.empty()) return design;
   evaluator.exact_winding(true);  // candidates as their written cases have them

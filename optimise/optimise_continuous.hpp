@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "magnetostatics/case_file.hpp"
+#include "case/case_file.hpp"
 #include "optimise/optimise_evaluate.hpp"
 #include "optimise/optimise_ipopt.hpp"
 #include "optimise/optimise_problem.hpp"
@@ -25,7 +25,7 @@ struct ContinuousOptimum {
 
 /// Optimises `spec` on `evaluator` from `start` (file units; `start_q`, if given, are its
 /// quantities, so it is not solved again). Evaluations are appended to `history`.
-ContinuousOptimum optimise_continuous(DesignEvaluator& evaluator, const OptimiseSpec& spec,
+ContinuousOptimum optimise_continuous(OptimiseEvaluator& evaluator, const OptimiseSpec& spec,
                                       const std::vector<double>& start, const Quantities* start_q,
                                       double objective_scale, const IpoptSettings& settings,
                                       std::vector<HistoryRow>& history);
@@ -35,8 +35,7 @@ ContinuousOptimum optimise_continuous(DesignEvaluator& evaluator, const Optimise
 /// nearest, all down, all up, each checked on a fresh mesh; the best (feasible first) wins.
 /// Returns `design` unchanged if there is no count. Afterwards the evaluator's last field is the
 /// returned design's.
-DesignReport round_counts(DesignEvaluator& evaluator, const magnetostatics::Case& c,
-                          const OptimiseSpec& spec, const DesignReport& design,
-                          std::vector<HistoryRow>& history);
+DesignReport round_counts(OptimiseEvaluator& evaluator, const OptimiseSpec& spec,
+                          const DesignReport& design, std::vector<HistoryRow>& history);
 
 }  // namespace rheomag::optimise

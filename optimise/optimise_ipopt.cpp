@@ -4,7 +4,7 @@
 #include <coin/IpSolveStatistics.hpp>
 #include <coin/IpTNLP.hpp>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::optimise {
 

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::optimise {
 
@@ -26,11 +26,11 @@ double constraint_scale(const Constraint& c) {
   return scale > 0.0 ? scale : 1.0;
 }
 
-double quantity_value(const Quantities& q, const std::string& name) {
-  auto it = q.find(name);
-  if (it == q.end() || !std::isfinite(it->second))
-    throw InputError("optimise: quantity \"" + name + "\" is not available for this case");
-  return it->second;
+double quantity_value(const Quantities& q, Quantity quantity) {
+  if (!q.has(quantity))
+    throw InputError("optimise: quantity \"" + quantity_name(quantity) +
+                     "\" is not available for this case");
+  return q[quantity];
 }
 
 ScaledProgram::ScaledProgram(const OptimiseSpec& spec, EvaluateDesign evaluate,
@@ -164,15 +164,14 @@ std::string history_csv(const OptimiseSpec& spec, const std::vector<HistoryRow>&
   std::ostringstream out;
   out << "evaluation,purpose";
   for (const auto& v : spec.variables) out << "," << v.key;
-  for (const auto& [name, unit] : quantity_units()) out << "," << name << " [" << unit << "]";
+  for (Quantity q : all_quantities())
+    out << "," << quantity_name(q) << " [" << quantity_unit(q) << "]";
   out << ",error\n";
   for (std::size_t k = 0; k < rows.size(); ++k) {
     out << k + 1 << "," << rows[k].purpose;
     for (double x : rows[k].x) out << "," << number_text(x);
-    for (const auto& [name, unit] : quantity_units()) {
-      auto it = rows[k].q.find(name);
-      out << "," << (it == rows[k].q.end() ? std::string() : number_text(it->second));
-    }
+    for (Quantity q : all_quantities())
+      out << "," << (std::isnan(rows[k].q[q]) ? std::string() : number_text(rows[k].q[q]));
     std::string error = rows[k].error;
     for (char& ch : error)
       if (ch == ',' || ch == '\n' || ch == '"') ch = ' ';

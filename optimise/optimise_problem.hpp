@@ -29,7 +29,7 @@ struct HistoryRow {
 double constraint_scale(const Constraint& c);
 
 /// Value of a quantity; InputError if the design does not provide it (or it is not finite).
-double quantity_value(const Quantities& q, const std::string& name);
+double quantity_value(const Quantities& q, Quantity quantity);
 
 /// The program Ipopt sees for one spec (see file comment).
 class ScaledProgram {

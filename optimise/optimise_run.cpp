@@ -6,11 +6,10 @@
 #include <memory>
 #include <sstream>
 
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
 #include "magnetostatics/report.hpp"
-#include "mesh/error.hpp"
-#include "optimise/optimise_case_edit.hpp"
 #include "optimise/optimise_continuous.hpp"
-#include "optimise/sweep_results_file.hpp"
 
 namespace rheomag::optimise {
 
@@ -19,7 +18,7 @@ namespace {
 std::string bound_text(const Constraint& c) {
   std::string text;
   if (std::isfinite(c.lower)) text += number_text(c.lower) + " <= ";
-  text += c.quantity;
+  text += quantity_name(c.quantity);
   if (std::isfinite(c.upper)) text += " <= " + number_text(c.upper);
   return text;
 }
@@ -49,7 +48,7 @@ std::string choice_text(const std::vector<std::pair<std::string, std::string>>& 
 
 }  // namespace
 
-OptimiseResult run_optimisation(const magnetostatics::Case& c, const OptimiseOptions& options) {
+OptimiseResult run_optimisation(const cases::Case& c, const OptimiseOptions& options) {
   const auto start_time = std::chrono::steady_clock::now();
   OptimiseResult result;
   result.spec = read_optimise_spec(c);
@@ -59,7 +58,7 @@ OptimiseResult run_optimisation(const magnetostatics::Case& c, const OptimiseOpt
   for (const auto& v : spec.variables) x0.push_back(v.initial);
 
   // The case as written: the initial design, and the normalisers of a weighted sum.
-  auto evaluator = std::make_unique<DesignEvaluator>(c, spec);
+  auto evaluator = std::make_unique<OptimiseEvaluator>(c, spec);
   Quantities q0;
   try {
     q0 = evaluator->evaluate(x0);
@@ -83,28 +82,30 @@ OptimiseResult run_optimisation(const magnetostatics::Case& c, const OptimiseOpt
   // Each combination of the discrete choices: the continuous optimum (warm-started from the
   // previous combination's), its counts rounded. The best combination is kept.
   int solves_done = 0, meshes_done = 0;
-  std::unique_ptr<DesignEvaluator> best_evaluator;
+  std::unique_ptr<OptimiseEvaluator> best_evaluator;
   DesignReport best_continuous;
   std::vector<double> start = x0;
   for (const auto& choice : combinations(spec.choices)) {
-    std::unique_ptr<DesignEvaluator> e;
-    magnetostatics::Case cc = c;
+    std::unique_ptr<OptimiseEvaluator> e;
+    cases::Case cc = c;
     const Quantities* start_q = nullptr;
     if (choice.empty()) {
       e = std::move(evaluator);
       start_q = &q0;
     } else {
-      toml::table table = c.table;
-      for (const auto& [key, value] : choice) table = with_text(table, key, value);
-      cc = case_from_table(table, c.source.string());
-      e = std::make_unique<DesignEvaluator>(cc, spec);
+      std::vector<cases::CaseEdit> edits;
+      for (const auto& [key, value] : choice)
+        for (const DiscreteChoice& d : spec.choices)
+          if (d.key == key) edits.push_back({d.target, value});
+      cc = cases::with(c, edits);
+      e = std::make_unique<OptimiseEvaluator>(cc, spec);
     }
     const int before = e->fe_solves();
     const ContinuousOptimum continuous =
         optimise_continuous(*e, spec, start, start_q, objective_scale, settings, history);
     CombinationResult combination;
     combination.choice = choice;
-    combination.optimal = round_counts(*e, cc, spec, continuous.report, history);
+    combination.optimal = round_counts(*e, spec, continuous.report, history);
     combination.status = continuous.status;
     combination.converged = continuous.converged;
     combination.iterations = continuous.iterations;
@@ -154,15 +155,16 @@ OptimiseResult run_optimisation(const magnetostatics::Case& c, const OptimiseOpt
   std::string header = "# Optimal design of " + c.source.filename().string() +
                        " by rheomag optimise (" + result.status + ")\n";
   if (!chosen.choice.empty()) header += "# Chosen: " + choice_text(chosen.choice) + "\n";
-  write_file_atomically(result.case_file,
-                        header + toml_text(best_evaluator->case_at(result.optimal.x).table) + "\n");
+  write_file_atomically(
+      result.case_file,
+      header + cases::case_file_text(best_evaluator->case_at(result.optimal.x)) + "\n");
   const auto& field = best_evaluator->last_field();
   magnetostatics::write_results_vtu(result.vtu_file.string(), *field.solver, field.solution,
                                     field.results);
 
   // The epsilon-constraint front of the chosen combination, each level a continuous optimum.
   if (spec.pareto) {
-    DesignEvaluator& e = *best_evaluator;
+    OptimiseEvaluator& e = *best_evaluator;
     const OptimiseFrom optimise = [&](const OptimiseSpec& level, const std::vector<double>& from,
                                       double scale) {
       return optimise_continuous(e, level, from, nullptr, scale, settings, history).report;
@@ -203,11 +205,11 @@ std::string format_summary(const OptimiseResult& r) {
   }
   std::snprintf(line, sizeof line, "\n%-28s %14s %14s\n", "quantity", "initial", "optimal");
   out << line;
-  for (const auto& [name, unit] : quantity_units()) {
-    auto a = r.initial.quantities.find(name), b = r.optimal.quantities.find(name);
-    if (a == r.initial.quantities.end() || b == r.optimal.quantities.end()) continue;
-    const std::string label = name + " [" + unit + "]";
-    std::snprintf(line, sizeof line, "%-28s %14.6g %14.6g\n", label.c_str(), a->second, b->second);
+  for (Quantity q : all_quantities()) {
+    const double a = r.initial.quantities[q], b = r.optimal.quantities[q];
+    if (std::isnan(a) || std::isnan(b)) continue;
+    const std::string label = quantity_name(q) + " [" + std::string(quantity_unit(q)) + "]";
+    std::snprintf(line, sizeof line, "%-28s %14.6g %14.6g\n", label.c_str(), a, b);
     out << line;
   }
   if (!r.spec.constraints.empty()) out << "\nconstraints (optimal design):\n";
@@ -225,15 +227,14 @@ std::string format_summary(const OptimiseResult& r) {
     for (const auto& c : r.conflicts) out << "  " << c << "\n";
   }
   if (r.pareto) {
-    const auto& q = r.pareto->pareto.quantity;
+    const std::string q = quantity_name(r.pareto->pareto.quantity);
     out << "\nPareto front (" << r.spec.objective << " with " << q << " limited):\n";
     std::snprintf(line, sizeof line, "  %14s %14s %14s %9s %7s\n", ("eps " + q).c_str(),
                   r.spec.objective.c_str(), q.c_str(), "feasible", "solves");
     out << line;
     for (const auto& p : r.pareto->points) {
-      auto it = p.design.quantities.find(q);
       std::snprintf(line, sizeof line, "  %14.6g %14.6g %14.6g %9s %7d\n", p.epsilon,
-                    p.design.objective, it == p.design.quantities.end() ? NAN : it->second,
+                    p.design.objective, p.design.quantities[r.pareto->pareto.quantity],
                     p.design.feasible ? "yes" : "no", p.fe_solves);
       out << line;
     }

@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "magnetostatics/case_file.hpp"
+#include "case/case_file.hpp"
 #include "optimise/optimise_evaluate.hpp"
 #include "optimise/optimise_report.hpp"
 #include "optimise/optimise_spec.hpp"
@@ -56,7 +56,7 @@ struct OptimiseResult {
 /// <name>_optimal.toml, <name>_history.csv, <name>_optimal.vtu (and with [optimise.pareto]
 /// pareto.csv, pareto.png) into options.out_dir. InputError for bad input (including an initial
 /// design that cannot be evaluated).
-OptimiseResult run_optimisation(const magnetostatics::Case& c, const OptimiseOptions& options);
+OptimiseResult run_optimisation(const cases::Case& c, const OptimiseOptions& options);
 
 /// The initial-vs-optimal table (quantities, constraint activity, status; the combinations and
 /// the Pareto front when present) as text.

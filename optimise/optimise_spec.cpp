@@ -3,37 +3,21 @@
 #include <algorithm>
 #include <cmath>
 
-#include "magnetostatics/material_library.hpp"
-#include "magnetostatics/toml_section.hpp"
-#include "mesh/error.hpp"
-#include "optimise/optimise_case_edit.hpp"
-#include "optimise/optimise_wire_gauge.hpp"
+#include "case/material_library.hpp"
+#include "case/toml_section.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::optimise {
 
-const std::vector<std::pair<std::string, std::string>>& quantity_units() {
-  static const std::vector<std::pair<std::string, std::string>> units = {
-      {"dp_on", "Pa"},        {"dp_off", "Pa"},
-      {"dynamic_range", "-"}, {"b_gap", "T"},
-      {"peak_steel_b", "T"},  {"inductance", "H"},
-      {"resistance", "Ohm"},  {"time_constant", "s"},
-      {"power", "W"},         {"current_density", "A/m^2"},
-      {"copper_fill", "-"},   {"outer_radius", "m"},
-      {"length", "m"},        {"min_gap", "m"},
-      {"min_wall", "m"},      {"temperature_rise", "K"},
-      {"rise_time", "s"}};
-  return units;
-}
-
-void check_quantity_name(const std::string& name, const std::string& where) {
+Quantity parse_quantity(const std::string& name, const std::string& where) {
+  if (auto q = kQuantityNames.find(name)) return *q;
   std::vector<std::string_view> known;
   std::string list;
-  for (const auto& [q, unit] : quantity_units()) {
-    if (q == name) return;
-    known.push_back(q);
-    list += (list.empty() ? "" : ", ") + q;
+  for (Quantity q : all_quantities()) {
+    known.push_back(kQuantityNames.name(q));
+    list += (list.empty() ? "" : ", ") + quantity_name(q);
   }
-  const std::string close = magnetostatics::closest_key(name, known);
+  const std::string close = closest_key(name, known);
   throw InputError(where + ": unknown quantity \"" + name + "\"" +
                    (close.empty() ? "" : " (did you mean \"" + close + "\"?)") +
                    "; known: " + list);
@@ -42,18 +26,17 @@ void check_quantity_name(const std::string& name, const std::string& where) {
 double objective_value(const OptimiseSpec& spec, const Quantities& q) {
   double sum = 0.0;
   for (const auto& term : spec.terms) {
-    auto it = q.find(term.quantity);
-    if (it == q.end() || !std::isfinite(it->second))
-      throw InputError("optimise: quantity \"" + term.quantity +
+    if (!q.has(term.quantity))
+      throw InputError("optimise: quantity \"" + quantity_name(term.quantity) +
                        "\" is not available for this case");
-    sum += term.weight * it->second / term.scale;
+    sum += term.weight * q[term.quantity] / term.scale;
   }
   return sum;
 }
 
-std::vector<std::string> used_quantities(const OptimiseSpec& spec) {
-  std::vector<std::string> out;
-  auto add = [&](const std::string& q) {
+std::vector<Quantity> used_quantities(const OptimiseSpec& spec) {
+  std::vector<Quantity> out;
+  auto add = [&](Quantity q) {
     if (std::find(out.begin(), out.end(), q) == out.end()) out.push_back(q);
   };
   for (const auto& t : spec.terms) add(t.quantity);
@@ -62,14 +45,19 @@ std::vector<std::string> used_quantities(const OptimiseSpec& spec) {
   return out;
 }
 
-namespace {
-
-void check_quantity(const magnetostatics::TomlSection& section, std::string_view key,
-                    const std::string& name) {
-  check_quantity_name(name, section.where(key));
+bool uses(const OptimiseSpec& spec, Quantity q) {
+  const auto used = used_quantities(spec);
+  return std::find(used.begin(), used.end(), q) != used.end();
 }
 
-bool read_sense(const magnetostatics::TomlSection& section) {
+namespace {
+
+Quantity read_quantity(const cases::TomlSection& section, std::string_view key,
+                       const std::string& name) {
+  return parse_quantity(name, section.where(key));
+}
+
+bool read_sense(const cases::TomlSection& section) {
   const std::string sense = section.string("sense").value_or("maximise");
   if (sense == "maximise" || sense == "maximize") return true;
   if (sense == "minimise" || sense == "minimize") return false;
@@ -78,37 +66,36 @@ bool read_sense(const magnetostatics::TomlSection& section) {
 }
 
 // objective = "dp_on" or objective = { dp_on = 1.0, power = -0.5 } (weighted sum).
-void read_objective(const magnetostatics::TomlSection& section, OptimiseSpec& spec) {
+void read_objective(const cases::TomlSection& section, OptimiseSpec& spec) {
   const toml::node* node = section.node("objective");
   if (node && node->is_table()) {
     for (const auto& [name, weight] : *node->as_table()) {
       ObjectiveTerm term;
-      term.quantity = std::string(name.str());
-      check_quantity(section, "objective", term.quantity);
+      term.quantity = read_quantity(section, "objective", std::string(name.str()));
       const auto w = weight.value<double>();
       if (!w || !std::isfinite(*w) || *w == 0.0)
-        section.fail("objective", "weight of \"" + term.quantity + "\" must be a non-zero number");
+        section.fail("objective",
+                     "weight of \"" + std::string(name.str()) + "\" must be a non-zero number");
       term.weight = *w;
       term.scale = 0.0;  // set to |value at the start| by the run
       spec.terms.push_back(term);
     }
     if (spec.terms.empty()) section.fail("objective", "empty weighted sum");
-    spec.objective = spec.terms.size() == 1 ? spec.terms[0].quantity : "weighted_sum";
+    spec.objective =
+        spec.terms.size() == 1 ? quantity_name(spec.terms[0].quantity) : "weighted_sum";
     if (spec.terms.size() == 1) spec.terms[0].scale = 1.0, spec.terms[0].weight = 1.0;
     return;
   }
   spec.objective = section.string("objective").value_or("dp_on");
-  check_quantity(section, "objective", spec.objective);
-  spec.terms = {ObjectiveTerm{spec.objective, 1.0, 1.0}};
+  spec.terms = {ObjectiveTerm{read_quantity(section, "objective", spec.objective), 1.0, 1.0}};
 }
 
-void read_pareto(const magnetostatics::TomlSection& optimise, OptimiseSpec& spec) {
+void read_pareto(const cases::TomlSection& optimise, OptimiseSpec& spec) {
   auto section = optimise.table("pareto");
   if (!section) return;
   section->allow_only({"quantity", "sense", "points"});
   ParetoSpec pareto;
-  pareto.quantity = section->required_string("quantity");
-  check_quantity(*section, "quantity", pareto.quantity);
+  pareto.quantity = read_quantity(*section, "quantity", section->required_string("quantity"));
   if (!section->has("sense")) section->fail("sense", "required: \"maximise\" or \"minimise\"");
   pareto.maximise = read_sense(*section);
   pareto.points = static_cast<int>(section->integer_or("points", 5));
@@ -120,8 +107,7 @@ void read_pareto(const magnetostatics::TomlSection& optimise, OptimiseSpec& spec
 }
 
 // enumerate = { "geometry.core_material" = ["AISI 1010", "AISI 1018"], fluid = [...] }
-void read_choices(const magnetostatics::Case& c, const magnetostatics::TomlSection& section,
-                  OptimiseSpec& spec) {
+void read_choices(const cases::Case& c, const cases::TomlSection& section, OptimiseSpec& spec) {
   const toml::node* node = section.node("enumerate");
   if (!node) return;
   if (!node->is_table())
@@ -138,19 +124,20 @@ void read_choices(const magnetostatics::Case& c, const magnetostatics::TomlSecti
       if (!text) section.fail("enumerate", "\"" + choice.key + "\": expected strings");
       choice.values.push_back(*text);
     }
-    const bool known = choice.key == "fluid" || c.table.at_path(choice.key).is_string() ||
-                       (choice.key.rfind("geometry.", 0) == 0 &&
-                        choice.key.find("_material") != std::string::npos);
-    if (!known)
+    try {
+      choice.target = cases::resolve_case_key(c, choice.key, section.where("enumerate"));
+    } catch (const InputError&) {
+      choice.target.type = cases::KeyType::number;  // reported just below
+    }
+    if (choice.target.type != cases::KeyType::text)
       section.fail("enumerate", "\"" + choice.key +
                                     "\" is not a string key of the case (e.g. "
                                     "geometry.core_material, or fluid)");
     const bool material = choice.key == "fluid" || choice.key.find("material") != std::string::npos;
     for (const auto& v : choice.values) {  // each candidate must make a valid case
       try {
-        if (material)
-          magnetostatics::MaterialLibrary::standard().get(v, section.where("enumerate"));
-        case_from_table(with_text(c.table, choice.key, v), c.source.string());
+        if (material) cases::MaterialLibrary::standard().get(v, section.where("enumerate"));
+        cases::with(c, {{choice.target, v}});
       } catch (const InputError& e) {
         section.fail("enumerate", "\"" + choice.key + "\" = \"" + v + "\": " + e.what());
       }
@@ -163,9 +150,9 @@ void read_choices(const magnetostatics::Case& c, const magnetostatics::TomlSecti
 
 }  // namespace
 
-OptimiseSpec read_optimise_spec(const magnetostatics::Case& c) {
+OptimiseSpec read_optimise_spec(const cases::Case& c) {
   const std::string file = c.source.string();
-  const magnetostatics::TomlSection top(c.table, "", file);
+  const cases::TomlSection top(c.table, "", file);
   auto section = top.table("optimise");
   if (!section)
     throw InputError(file + ": the case has no [optimise] table (docs/optimisation.md)");
@@ -196,9 +183,9 @@ OptimiseSpec read_optimise_spec(const magnetostatics::Case& c) {
     variable.key = v.required_string("key");
     if (variable.key.rfind("optimise.", 0) == 0 || variable.key.rfind("optimise", 0) == 0)
       v.fail("key", "a design variable cannot be part of [optimise]");
-    const bool gauge = variable.key == kWireGaugeKey;
-    variable.initial = gauge ? wire_gauge_start(c.table, v.where("key"))
-                             : numeric_case_value(c.table, variable.key, v.where("key"));
+    const bool gauge = variable.key == cases::kWireGaugeKey;
+    variable.target = cases::resolve_case_key(c, variable.key, v.where("key"), "design variable");
+    variable.initial = cases::numeric_case_value(c, variable.target, v.where("key"));
     const auto lower = v.number("lower"), upper = v.number("upper");
     if (!lower || !upper) v.fail(lower ? "upper" : "lower", "required (same unit as the key)");
     variable.lower = *lower;
@@ -222,15 +209,14 @@ OptimiseSpec read_optimise_spec(const magnetostatics::Case& c) {
   for (const auto& v : spec.variables)
     if (v.key == "geometry.turns")
       for (const auto& w : spec.variables)
-        if (w.key == kWireGaugeKey)
+        if (w.key == cases::kWireGaugeKey)
           section->fail("variable",
                         "geometry.turns and wire_gauge together: with wire_gauge the "
                         "turns follow from the window, the wire and fill_factor");
   for (const auto& k : section->table_array("constraint")) {
     k.allow_only({"quantity", "min", "max"});
     Constraint constraint;
-    constraint.quantity = k.required_string("quantity");
-    check_quantity(k, "quantity", constraint.quantity);
+    constraint.quantity = read_quantity(k, "quantity", k.required_string("quantity"));
     constraint.lower = k.number("min").value_or(-INFINITY);
     constraint.upper = k.number("max").value_or(INFINITY);
     if (std::isinf(constraint.lower) && std::isinf(constraint.upper))
@@ -241,10 +227,9 @@ OptimiseSpec read_optimise_spec(const magnetostatics::Case& c) {
   }
   read_pareto(*section, spec);
   read_choices(c, *section, spec);
-  for (const auto& q : used_quantities(spec))
-    if (q == "rise_time" && !(spec.supply_voltage > 0.0))
-      section->fail("supply_voltage",
-                    "rise_time needs the driver's voltage step: set supply_voltage [V] > 0");
+  if (uses(spec, Quantity::rise_time) && !(spec.supply_voltage > 0.0))
+    section->fail("supply_voltage",
+                  "rise_time needs the driver's voltage step: set supply_voltage [V] > 0");
   return spec;
 }
 

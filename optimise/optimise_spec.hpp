@@ -9,30 +9,34 @@
 #include <utility>
 #include <vector>
 
-#include "magnetostatics/case_file.hpp"
+#include "case/case_file.hpp"
+#include "case/case_key.hpp"
+#include "case/case_sections.hpp"
+#include "optimise/quantities.hpp"
 
 namespace rheomag::optimise {
 
-/// One design variable: a numeric case key (dotted path) varied between bounds (file units).
+/// [optimise] is a section of case files read by this layer.
+inline const bool kOptimiseSectionRegistered = cases::register_case_section("optimise");
+
+/// One design variable: a numeric case key varied between bounds (file units).
 struct DesignVariable {
-  std::string key;  ///< e.g. "geometry.neck_radius"
+  std::string key;        ///< as written, e.g. "geometry.neck_radius"
+  cases::CaseKey target;  ///< the key resolved against the case
   double lower = 0.0, upper = 0.0;
   double initial = 0.0;  ///< the case's value
 };
 
 /// One inequality constraint lower <= quantity <= upper (SI units; +-inf when absent).
 struct Constraint {
-  std::string quantity;
+  Quantity quantity = Quantity::dp_on;
   double lower = -INFINITY, upper = INFINITY;
   std::string where;  ///< "file:line: optimise.constraint[i]" for reports
 };
 
-/// Quantity name (see quantity_units()) -> value in SI units.
-using Quantities = std::map<std::string, double>;
-
 /// One term of the objective: weight x quantity / scale.
 struct ObjectiveTerm {
-  std::string quantity;
+  Quantity quantity = Quantity::dp_on;
   double weight = 1.0;
   double scale = 1.0;  ///< normaliser; weighted sums: |quantity at the start design|
 };
@@ -40,7 +44,7 @@ struct ObjectiveTerm {
 /// The epsilon-constraint sweep of [optimise.pareto]: the objective is optimised while
 /// `quantity` (the second objective) is constrained at `points` levels between its extremes.
 struct ParetoSpec {
-  std::string quantity;
+  Quantity quantity = Quantity::dp_on;
   bool maximise = false;  ///< the second objective's own sense
   int points = 5;         ///< epsilon levels, end points included
 };
@@ -48,7 +52,8 @@ struct ParetoSpec {
 /// Discrete choices enumerated around the continuous optimisation: a string case key
 /// (dotted; "fluid" sets [case] fluid and geometry.fluid_material) and its candidates.
 struct DiscreteChoice {
-  std::string key;
+  std::string key;        ///< as written
+  cases::CaseKey target;  ///< resolved against the case
   std::vector<std::string> values;
 };
 
@@ -56,7 +61,7 @@ struct DiscreteChoice {
 struct OptimiseSpec {
   std::vector<DesignVariable> variables;
   std::vector<Constraint> constraints;
-  std::string objective = "dp_on";   ///< a quantity name, or "weighted_sum"
+  std::string objective = "dp_on";   ///< the objective's name: a quantity's, or "weighted_sum"
   std::vector<ObjectiveTerm> terms;  ///< objective = sum of terms (one term: the quantity itself)
   bool maximise = true;
   double current = 1.0;             ///< on-state coil current [A]
@@ -76,19 +81,18 @@ struct OptimiseSpec {
 double objective_value(const OptimiseSpec& spec, const Quantities& q);
 
 /// Every quantity the spec's objective and constraints use (and the Pareto quantity).
-std::vector<std::string> used_quantities(const OptimiseSpec& spec);
+std::vector<Quantity> used_quantities(const OptimiseSpec& spec);
 
-/// The quantities a design is evaluated for (names usable as objective and in constraints),
-/// with their SI units.
-const std::vector<std::pair<std::string, std::string>>& quantity_units();
+/// True when the spec uses quantity `q`.
+bool uses(const OptimiseSpec& spec, Quantity q);
 
-/// InputError naming `name` and listing the valid names (`where` prefixes the message) if
-/// `name` is not a quantity.
-void check_quantity_name(const std::string& name, const std::string& where);
+/// The quantity named `name`; InputError naming it, with the closest name and the valid names
+/// (`where` prefixes the message), if it is not one.
+Quantity parse_quantity(const std::string& name, const std::string& where);
 
 /// Reads and checks the [optimise] table of a case: unknown design keys (with the closest key),
 /// reversed bounds, initial values outside the bounds, non-positive bounds of lengths and
 /// counts, unknown quantities (with the closest name) -> InputError naming file, line and key.
-OptimiseSpec read_optimise_spec(const magnetostatics::Case& c);
+OptimiseSpec read_optimise_spec(const cases::Case& c);
 
 }  // namespace rheomag::optimise

@@ -5,23 +5,28 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
 #include "optimise/optimise_problem.hpp"
-#include "optimise/sweep_results_file.hpp"
 
 namespace rheomag::optimise {
 
 namespace {
-// SI unit of a quantity ("-" for a weighted sum).
+// SI unit of the quantity named `name` ("-" for a weighted sum).
 std::string unit_of(const std::string& name) {
-  for (const auto& [q, unit] : quantity_units())
-    if (q == name) return unit;
-  return "-";
+  const auto q = kQuantityNames.find(name);
+  return q ? std::string(quantity_unit(*q)) : "-";
+}
+
+// A CSV cell: empty for a quantity the design does not give.
+std::string cell(double v) {
+  return std::isnan(v) ? std::string() : number_text(v);
 }
 }  // namespace
 
 OptimiseSpec second_objective_spec(const OptimiseSpec& spec) {
   OptimiseSpec second = spec;
-  second.objective = spec.pareto->quantity;
+  second.objective = quantity_name(spec.pareto->quantity);
   second.terms = {ObjectiveTerm{spec.pareto->quantity, 1.0, 1.0}};
   second.maximise = spec.pareto->maximise;
   second.pareto.reset();
@@ -33,7 +38,7 @@ ParetoFront pareto_front(const OptimiseSpec& spec, const DesignReport& objective
   ParetoFront front;
   front.pareto = *spec.pareto;
   front.objective_alone = objective_alone;
-  const std::string& name = front.pareto.quantity;
+  const Quantity name = front.pareto.quantity;
   const double first_level = quantity_value(objective_alone.quantities, name);
   const double scale = std::abs(first_level) > 0.0 ? std::abs(first_level) : 1.0;
   front.second_alone = optimise(second_objective_spec(spec), objective_alone.x, scale);
@@ -69,23 +74,20 @@ ParetoFront pareto_front(const OptimiseSpec& spec, const DesignReport& objective
 
 std::string pareto_csv(const OptimiseSpec& spec, const ParetoFront& front) {
   std::ostringstream out;
-  const std::string& second = front.pareto.quantity;
+  const std::string second = quantity_name(front.pareto.quantity);
   out << "epsilon " << second << ",objective " << spec.objective << "," << second
       << ",feasible,fe_solves";
   for (const auto& v : spec.variables) out << "," << v.key;
-  for (const auto& [name, unit] : quantity_units()) out << "," << name << " [" << unit << "]";
+  for (Quantity q : all_quantities())
+    out << "," << quantity_name(q) << " [" << quantity_unit(q) << "]";
   out << "\n";
   for (const auto& p : front.points) {
     const auto& q = p.design.quantities;
-    auto it = q.find(second);
     out << number_text(p.epsilon) << "," << number_text(p.design.objective) << ","
-        << (it == q.end() ? std::string() : number_text(it->second)) << ","
-        << (p.design.feasible ? 1 : 0) << "," << p.fe_solves;
+        << cell(q[front.pareto.quantity]) << "," << (p.design.feasible ? 1 : 0) << ","
+        << p.fe_solves;
     for (double x : p.design.x) out << "," << number_text(x);
-    for (const auto& [name, unit] : quantity_units()) {
-      auto v = q.find(name);
-      out << "," << (v == q.end() ? std::string() : number_text(v->second));
-    }
+    for (Quantity k : all_quantities()) out << "," << cell(q[k]);
     out << "\n";
   }
   return out.str();
@@ -99,30 +101,31 @@ std::vector<std::filesystem::path> write_pareto(const std::filesystem::path& dir
   write_file_atomically(csv, pareto_csv(spec, front));
   written.push_back(csv);
   if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) return written;
-  // gnuplot writes to a temporary name, renamed when it succeeded (atomic like the CSV).
-  const std::string pid = std::to_string(::getpid());
+  // gnuplot writes the picture to the atomic writer's temporary file.
   const auto png = dir / "pareto.png";
-  const auto png_tmp = dir / ("pareto.png.tmp-" + pid);
-  const auto script = dir / ("pareto.gp.tmp-" + pid);
-  std::ostringstream gp;
-  gp << "set terminal pngcairo size 800,560 noenhanced\n"
-     << "set output '" << png_tmp.string() << "'\n"
-     << "set datafile separator ','\n"
-     << "set key off\nset grid\n"
-     << "set title 'Pareto front (epsilon-constraint): " << spec.objective << " vs "
-     << front.pareto.quantity << "'\n"
-     << "set xlabel '" << front.pareto.quantity << " [" << unit_of(front.pareto.quantity) << "]'\n"
-     << "set ylabel '" << spec.objective << " [" << unit_of(spec.objective) << "]'\n"
-     << "plot '" << csv.string() << "' every ::1 using 3:2 with linespoints pt 7 ps 1.2 lw 2\n";
-  write_file_atomically(script, gp.str());
-  const std::string command = "gnuplot '" + script.string() + "' > /dev/null 2>&1";
-  const bool ok = std::system(command.c_str()) == 0;
-  std::filesystem::remove(script);
-  if (ok && std::filesystem::exists(png_tmp)) {
-    std::filesystem::rename(png_tmp, png);
+  const auto script = dir / ("pareto.gp.tmp-" + std::to_string(::getpid()));
+  const std::string second = quantity_name(front.pareto.quantity);
+  try {
+    write_file_atomically_with(png, [&](const std::filesystem::path& png_tmp) {
+      std::ostringstream gp;
+      gp << "set terminal pngcairo size 800,560 noenhanced\n"
+         << "set output '" << png_tmp.string() << "'\n"
+         << "set datafile separator ','\n"
+         << "set key off\nset grid\n"
+         << "set title 'Pareto front (epsilon-constraint): " << spec.objective << " vs " << second
+         << "'\n"
+         << "set xlabel '" << second << " [" << unit_of(second) << "]'\n"
+         << "set ylabel '" << spec.objective << " [" << unit_of(spec.objective) << "]'\n"
+         << "plot '" << csv.string() << "' every ::1 using 3:2 with linespoints pt 7 ps 1.2 lw 2\n";
+      write_file_atomically(script, gp.str());
+      const std::string command = "gnuplot '" + script.string() + "' > /dev/null 2>&1";
+      const bool ok = std::system(command.c_str()) == 0;
+      std::filesystem::remove(script);
+      return ok;
+    });
     written.push_back(png);
-  } else {
-    std::filesystem::remove(png_tmp);
+  } catch (const InputError&) {
+    // No picture (gnuplot failed); the CSV is the result.
   }
   return written;
 }

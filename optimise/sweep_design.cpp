@@ -48,7 +48,7 @@ Design DesignGenerator::design(long long id) const {
       d.values[a] = axis.levels[k];
     } else {
       const double value = axis.lower + x * (axis.upper - axis.lower);
-      if (axis.key.type == KeyType::integer) {
+      if (axis.key.type == cases::KeyType::integer) {
         d.values[a] = static_cast<long long>(std::llround(value));
       } else {
         d.values[a] = value;

@@ -10,7 +10,7 @@ namespace rheomag::optimise {
 /// One design: its id and one value per axis (same order as SweepSpec::axes).
 struct Design {
   long long id = 0;
-  std::vector<KeyValue> values;
+  std::vector<cases::KeyValue> values;
 };
 
 /// Generates designs deterministically. Factorial: id is the mixed-radix number of the level

@@ -1,75 +1,17 @@
 #include "optimise/sweep_evaluate.hpp"
 
 #include <cstdio>
-#include <sstream>
 
-#include "magnetostatics/domain.hpp"
+#include "core/error.hpp"
 #include "magnetostatics/report.hpp"
-#include "magnetostatics/results.hpp"
-#include "mesh/error.hpp"
-#include "mesh/mesher.hpp"
 
 namespace rheomag::optimise {
 
-namespace {
-
-void put(std::string& s, double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%a,", v);  // exact: equal strings <=> equal doubles
-  s += buffer;
-}
-
-/// True for the key of a circuit's current ("circuit.N.current").
-bool is_current_key(const ResolvedKey& key) {
-  return key.path.size() == 3 && key.path[0] == "circuit" && key.path[2] == "current";
-}
-
-/// The text of the base case with the design's values set, its currents too if `currents`.
-std::string case_text(const SweepSpec& spec, const Design& design, bool currents) {
-  toml::table table = spec.base.table;
-  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
-    if (currents || !is_current_key(spec.axes[a].key))
-      override_key(table, spec.axes[a].key, design.values[a]);
-  }
-  std::ostringstream text;
-  text << table;
-  return text.str();
-}
-
-}  // namespace
-
-std::string design_case_text(const SweepSpec& spec, const Design& design) {
-  return case_text(spec, design, true);
-}
-
-std::string geometry_signature(const magnetostatics::Problem& closed,
-                               const mesh::MeshOptions& options) {
-  const mesh::Pslg& g = closed.geometry;
-  std::string s = "order " + std::to_string(closed.order) + " gap " +
-                  std::to_string(closed.min_gap_elements) + " default " +
-                  std::to_string(g.default_region) + " ";
-  put(s, options.min_angle);
-  put(s, options.default_size);
-  put(s, options.grading);
-  s += std::to_string(options.max_elements) + "\npoints ";
-  for (const mesh::Point& p : g.points) {
-    put(s, p.r);
-    put(s, p.z);
-  }
-  s += "\nsegments ";
-  for (const mesh::Segment& seg : g.segments) {
-    s += std::to_string(seg.a) + "," + std::to_string(seg.b) + "," + std::to_string(seg.boundary) +
-         ",";
-    put(s, seg.max_length);
-  }
-  s += "\nregions ";
-  for (const mesh::RegionSeed& r : g.regions) {
-    put(s, r.seed.r);
-    put(s, r.seed.z);
-    put(s, r.mesh_size);
-    s += std::to_string(static_cast<int>(r.gap)) + (r.hole ? "h" : "m") + r.name + "\n";
-  }
-  return s;
+std::vector<cases::CaseEdit> design_edits(const SweepSpec& spec, const Design& design) {
+  std::vector<cases::CaseEdit> edits;
+  for (std::size_t a = 0; a < spec.axes.size(); ++a)
+    edits.push_back({spec.axes[a].key, design.values[a]});
+  return edits;
 }
 
 std::filesystem::path design_vtu_path(const std::filesystem::path& vtu_dir, long long id) {
@@ -80,7 +22,10 @@ std::filesystem::path design_vtu_path(const std::filesystem::path& vtu_dir, long
 
 SweepEvaluator::SweepEvaluator(const SweepSpec& spec, const RowLayout& layout,
                                std::filesystem::path vtu_dir)
-    : spec_(&spec), layout_(&layout), vtu_dir_(std::move(vtu_dir)) {}
+    : spec_(&spec),
+      layout_(&layout),
+      vtu_dir_(std::move(vtu_dir)),
+      evaluator_(MeshPolicy::cached) {}
 
 std::string SweepEvaluator::row(const Design& design) {
   try {
@@ -95,46 +40,24 @@ std::string SweepEvaluator::row(const Design& design) {
 }
 
 std::string SweepEvaluator::solve_row(const Design& design) {
-  using namespace magnetostatics;
-  // Every design is validated exactly as a case file.
-  const Case design_case = parse_case(design_case_text(*spec_, design), spec_->base_case.string());
+  // Every design is validated exactly as a case file would be.
+  const cases::Case design_case = cases::with(spec_->base, design_edits(*spec_, design));
   std::vector<double> currents;
-  for (const Circuit& circuit : design_case.problem.circuits) currents.push_back(circuit.current);
-  // Same text without the currents: same problem and mesh, only the currents differ.
-  const std::string solver_key = case_text(*spec_, design, false);
-  if (solver_ && solver_key == solver_key_) {
-    solver_->discard_factorisation();
-    ++solvers_reused_;
-  } else {
-    solver_.reset();
-    solver_key_.clear();
-    Problem closed = close_domain(design_case.problem);
-    mesh::MeshOptions mesh_options = options_.mesh;
-    mesh_options.order = closed.order;
-    mesh_options.min_gap_elements = closed.min_gap_elements;
-    const std::string signature = geometry_signature(closed, mesh_options);
-    std::shared_ptr<const mesh::Mesh> mesh;
-    for (const auto& [key, cached] : meshes_) {
-      if (key == signature) mesh = cached;
-    }
-    if (mesh) {
-      ++reused_;
-    } else {
-      mesh = std::make_shared<const mesh::Mesh>(mesh::generate_mesh(closed.geometry, mesh_options));
-      ++built_;
-      meshes_.emplace_back(signature, mesh);
-      if (meshes_.size() > kMeshCacheSize) meshes_.pop_front();
-    }
-    solver_ = std::make_unique<MagnetostaticSolver>(std::move(closed), *mesh, options_);
-    solver_key_ = solver_key;
-  }
-  MagnetostaticSolver& solver = *solver_;
-  const Solution solution = solver.solve(currents);
-  const Results results = compute_results(solver, solution);
-  const SolvedDesign solved{design_case, solver, solution, results};
+  for (const cases::Circuit& circuit : design_case.problem.circuits)
+    currents.push_back(circuit.current);
+  // The same values apart from the currents: same problem and mesh, only the currents differ.
+  std::vector<cases::KeyValue> values;
+  for (std::size_t a = 0; a < spec_->axes.size(); ++a)
+    if (spec_->axes[a].key.target != cases::KeyTarget::circuit_current)
+      values.push_back(design.values[a]);
+  const bool same_problem = evaluator_.last().solver && values == solver_values_;
+  if (!same_problem) solver_values_ = values;
+  const EvaluatedField& field = evaluator_.solve(design_case, currents, same_problem);
+  const SolvedDesign solved{design_case, *field.solver, field.solution, field.results};
   std::string line = layout_->ok_row(design, solved);
   if (!vtu_dir_.empty()) {
-    write_results_vtu(design_vtu_path(vtu_dir_, design.id).string(), solver, solution, results);
+    magnetostatics::write_results_vtu(design_vtu_path(vtu_dir_, design.id).string(), *field.solver,
+                                      field.solution, field.results);
   }
   return line;
 }

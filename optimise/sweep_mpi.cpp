@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 #include "optimise/sweep_evaluate.hpp"
 #include "optimise/sweep_progress.hpp"
 #include "optimise/sweep_threads.hpp"

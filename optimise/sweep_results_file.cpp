@@ -1,5 +1,7 @@
 #include "optimise/sweep_results_file.hpp"
 
+#include "core/atomic_file.hpp"
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -9,7 +11,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::optimise {
 
@@ -85,25 +87,6 @@ RowsById read_finished_rows(const std::filesystem::path& path, const std::string
     if (!rows.emplace(id, line).second) repaired = true;
   }
   return rows;
-}
-
-void write_file_atomically(const std::filesystem::path& path, const std::string& content) {
-  const std::filesystem::path temporary =
-      path.string() + ".tmp-" + std::to_string(static_cast<long>(::getpid()));
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw InputError(system_error("cannot create", temporary));
-  bool ok = write_all(fd, content) && ::fsync(fd) == 0;
-  int saved = errno;
-  ::close(fd);
-  if (ok && std::rename(temporary.c_str(), path.c_str()) != 0) {
-    ok = false;
-    saved = errno;
-  }
-  if (!ok) {
-    std::remove(temporary.c_str());
-    errno = saved;
-    throw InputError(system_error("cannot write", path));
-  }
 }
 
 void write_sorted(const std::filesystem::path& path, const std::string& header,

@@ -25,9 +25,6 @@ using RowPrefix = std::function<std::string(long long id)>;
 RowsById read_finished_rows(const std::filesystem::path& path, const std::string& header,
                             const RowPrefix& prefix, bool& repaired);
 
-/// Writes `content` to `path` atomically (PATH.tmp-<pid>, fsync, rename); InputError on failure.
-void write_file_atomically(const std::filesystem::path& path, const std::string& content);
-
 /// Header plus rows in id order, written atomically.
 void write_sorted(const std::filesystem::path& path, const std::string& header,
                   const RowsById& rows);

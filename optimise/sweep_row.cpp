@@ -64,7 +64,7 @@ std::string RowLayout::header() const {
 
 std::string RowLayout::prefix(const Design& design) const {
   std::string line = std::to_string(design.id) + ",";
-  for (const KeyValue& v : design.values) line += csv_field(format_value(v)) + ",";
+  for (const cases::KeyValue& v : design.values) line += csv_field(cases::format_value(v)) + ",";
   return line;
 }
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "magnetostatics/case_file.hpp"
+#include "case/case_file.hpp"
 #include "magnetostatics/results.hpp"
 #include "magnetostatics/solver.hpp"
 #include "optimise/sweep_design.hpp"
@@ -14,7 +14,7 @@ namespace rheomag::optimise {
 
 /// A solved design, as offered to output columns.
 struct SolvedDesign {
-  const magnetostatics::Case& design_case;
+  const cases::Case& design_case;
   const magnetostatics::MagnetostaticSolver& solver;
   const magnetostatics::Solution& solution;
   const magnetostatics::Results& results;

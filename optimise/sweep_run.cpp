@@ -6,8 +6,8 @@
 #include <optional>
 #include <thread>
 
+#include "core/error.hpp"
 #include "magnetostatics/domain.hpp"
-#include "mesh/error.hpp"
 #include "mesh/mesher.hpp"
 #include "optimise/sweep_evaluate.hpp"
 #include "optimise/sweep_progress.hpp"
@@ -102,7 +102,7 @@ double row_bytes_estimate(const RowLayout& layout) {
 }
 
 double vtu_bytes_estimate(const SweepSpec& spec) {
-  const magnetostatics::Problem closed = magnetostatics::close_domain(spec.base.problem);
+  const cases::Problem closed = magnetostatics::close_domain(spec.base.problem);
   mesh::MeshOptions options;
   options.order = closed.order;
   options.min_gap_elements = closed.min_gap_elements;
@@ -113,7 +113,7 @@ double vtu_bytes_estimate(const SweepSpec& spec) {
 
 long long mesh_sharing_block(const SweepSpec& spec) {
   if (spec.method != SweepMethod::factorial) return 1;
-  auto keeps_geometry = [](const ResolvedKey& key) {
+  auto keeps_geometry = [](const cases::CaseKey& key) {
     const std::string& top = key.path.front();
     const std::string& last = key.path.back();
     for (const char* section : {"circuit", "valve", "fluid", "damper", "lumped", "material"}) {

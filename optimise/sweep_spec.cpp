@@ -4,48 +4,48 @@
 #include <limits>
 #include <set>
 
-#include "magnetostatics/toml_section.hpp"
-#include "mesh/error.hpp"
+#include "case/toml_section.hpp"
+#include "core/error.hpp"
 
 namespace rheomag::optimise {
 
 namespace {
 
-using magnetostatics::format_number;
-using magnetostatics::TomlSection;
+using cases::format_number;
+using cases::TomlSection;
 
 /// A number of the axis converted to the key's type (integers are rounded to the nearest).
-KeyValue numeric_level(const TomlSection& axis, const ResolvedKey& key, double value) {
-  if (key.type == KeyType::integer) {
+cases::KeyValue numeric_level(const TomlSection& axis, const cases::CaseKey& key, double value) {
+  if (key.type == cases::KeyType::integer) {
     const double rounded = std::round(value);
     if (std::fabs(rounded) > 9.0e15) axis.fail("key", "integer level out of range");
     return static_cast<long long>(rounded);
   }
-  if (key.type == KeyType::number) return value;
+  if (key.type == cases::KeyType::number) return value;
   axis.fail("key", "'" + key.written + "' holds a " +
-                       (key.type == KeyType::text ? std::string("string") : "boolean") +
+                       (key.type == cases::KeyType::text ? std::string("string") : "boolean") +
                        " in the base case; give its levels with 'values'");
 }
 
 /// One element of an axis's `values` list, checked against the key's type.
-KeyValue list_level(const TomlSection& axis, const ResolvedKey& key, const toml::node& node,
-                    std::size_t index) {
+cases::KeyValue list_level(const TomlSection& axis, const cases::CaseKey& key,
+                           const toml::node& node, std::size_t index) {
   const std::string what = "values[" + std::to_string(index) + "]";
   switch (key.type) {
-    case KeyType::integer:
+    case cases::KeyType::integer:
       if (auto v = node.value_exact<int64_t>()) return static_cast<long long>(*v);
       if (auto v = node.value_exact<double>(); v && std::isfinite(*v) && std::trunc(*v) == *v) {
         return static_cast<long long>(*v);
       }
       axis.fail("values", what + ": '" + key.written +
                               "' is an integer in the base case; expected an integer");
-    case KeyType::number:
+    case cases::KeyType::number:
       if (auto v = node.value<double>(); v && std::isfinite(*v) && !node.is_boolean()) return *v;
       axis.fail("values", what + ": expected a finite number for '" + key.written + "'");
-    case KeyType::boolean:
+    case cases::KeyType::boolean:
       if (auto v = node.value_exact<bool>()) return *v;
       axis.fail("values", what + ": expected true or false for '" + key.written + "'");
-    case KeyType::text:
+    case cases::KeyType::text:
       if (auto v = node.value_exact<std::string>()) return *v;
       axis.fail("values",
                 what + ": '" + key.written + "' is a string in the base case; expected a string");
@@ -53,10 +53,10 @@ KeyValue list_level(const TomlSection& axis, const ResolvedKey& key, const toml:
   axis.fail("values", what + ": unsupported value");
 }
 
-std::vector<KeyValue> list_levels(const TomlSection& axis, const ResolvedKey& key) {
+std::vector<cases::KeyValue> list_levels(const TomlSection& axis, const cases::CaseKey& key) {
   const toml::array* list = axis.node("values")->as_array();
   if (!list || list->empty()) axis.fail("values", "expected a non-empty list");
-  std::vector<KeyValue> levels;
+  std::vector<cases::KeyValue> levels;
   for (std::size_t i = 0; i < list->size(); ++i) {
     levels.push_back(list_level(axis, key, *list->get(i), i));
   }
@@ -65,7 +65,7 @@ std::vector<KeyValue> list_levels(const TomlSection& axis, const ResolvedKey& ke
 
 /// start/stop with count (evenly spaced, both ends included) or step (start, start + step, ...
 /// up to stop within 1e-9 of a step).
-std::vector<KeyValue> range_levels(const TomlSection& axis, const ResolvedKey& key) {
+std::vector<cases::KeyValue> range_levels(const TomlSection& axis, const cases::CaseKey& key) {
   if (!axis.has("start") || !axis.has("stop")) {
     axis.fail("start",
               "a range needs 'start' and 'stop' (and 'count' or 'step'), or give 'values'");
@@ -94,7 +94,7 @@ std::vector<KeyValue> range_levels(const TomlSection& axis, const ResolvedKey& k
     count = static_cast<long long>(std::floor(intervals + 1e-9)) + 1;
   }
   if (count > kMaxDesigns) axis.fail("count", "too many levels");
-  std::vector<KeyValue> levels;
+  std::vector<cases::KeyValue> levels;
   for (long long i = 0; i < count; ++i) {
     // The last level of a counted range is `stop` exactly (no rounding drift).
     const double value = (axis.has("count") && i == count - 1) ? stop : start + step * double(i);
@@ -106,7 +106,8 @@ std::vector<KeyValue> range_levels(const TomlSection& axis, const ResolvedKey& k
 SweepAxis parse_axis(const TomlSection& axis, const SweepSpec& spec) {
   axis.allow_only({"key", "values", "start", "stop", "count", "step", "min", "max"});
   SweepAxis result;
-  result.key = resolve_key(spec.base.table, axis.required_string("key"), axis.where("key"));
+  result.key = cases::resolve_case_key(spec.base, axis.required_string("key"), axis.where("key"),
+                                       "sweep key");
   const bool lhs = spec.method == SweepMethod::latin_hypercube;
   const bool has_range =
       axis.has("start") || axis.has("stop") || axis.has("count") || axis.has("step");
@@ -123,7 +124,7 @@ SweepAxis parse_axis(const TomlSection& axis, const SweepSpec& spec) {
     result.levels = range_levels(axis, result.key);
   } else {
     if (!lhs) axis.fail("min", "bounds 'min'/'max' are for method = \"latin_hypercube\"");
-    if (result.key.type != KeyType::integer && result.key.type != KeyType::number) {
+    if (result.key.type != cases::KeyType::integer && result.key.type != cases::KeyType::number) {
       axis.fail("min", "bounds need a numeric key; '" + result.key.written + "' is not");
     }
     if (!axis.has("min") || !axis.has("max")) axis.fail("min", "give both 'min' and 'max'");
@@ -138,7 +139,7 @@ SweepAxis parse_axis(const TomlSection& axis, const SweepSpec& spec) {
 
 SweepSpec parse_sweep(std::string_view text, const std::filesystem::path& source) {
   const std::string file = source.string();
-  const toml::table root = magnetostatics::parse_toml(text, file);
+  const toml::table root = cases::parse_toml(text, file);
   const TomlSection top(root, "", file);
   top.allow_only({"sweep", "axis", "output"});
   SweepSpec spec;
@@ -151,7 +152,7 @@ SweepSpec parse_sweep(std::string_view text, const std::filesystem::path& source
   if (!std::filesystem::is_regular_file(spec.base_case)) {
     sweep->fail("base", "base case '" + spec.base_case.string() + "' is not a readable file");
   }
-  spec.base = magnetostatics::load_case(spec.base_case);
+  spec.base = cases::load_case(spec.base_case);
   if (spec.base.table.empty()) {
     sweep->fail("base", "the base case must be a TOML case file (its keys are what is swept)");
   }
@@ -205,7 +206,7 @@ SweepSpec parse_sweep(std::string_view text, const std::filesystem::path& source
 }
 
 SweepSpec read_sweep(const std::filesystem::path& path) {
-  return parse_sweep(magnetostatics::read_input_file(path.string()), path);
+  return parse_sweep(cases::read_input_file(path.string()), path);
 }
 
 long long design_count(const SweepSpec& spec) {

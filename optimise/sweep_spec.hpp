@@ -9,8 +9,8 @@
 #include <string_view>
 #include <vector>
 
-#include "magnetostatics/case_file.hpp"
-#include "optimise/sweep_key.hpp"
+#include "case/case_file.hpp"
+#include "case/case_key.hpp"
 
 namespace rheomag::optimise {
 
@@ -22,9 +22,9 @@ enum class SweepMethod {
 
 /// One swept key: its levels (a list or a range) or, for a Latin hypercube, its bounds.
 struct SweepAxis {
-  ResolvedKey key;
-  std::vector<KeyValue> levels;  ///< factorial levels; for a Latin hypercube: categories
-  double lower = 0.0;            ///< Latin hypercube bounds (when `levels` is empty)
+  cases::CaseKey key;
+  std::vector<cases::KeyValue> levels;  ///< factorial levels; for a Latin hypercube: categories
+  double lower = 0.0;                   ///< Latin hypercube bounds (when `levels` is empty)
   double upper = 0.0;
 };
 
@@ -32,7 +32,7 @@ struct SweepAxis {
 struct SweepSpec {
   std::filesystem::path source;     ///< the sweep file
   std::filesystem::path base_case;  ///< resolved against the sweep file's directory
-  magnetostatics::Case base;        ///< the base case as read (base.table: its TOML table)
+  cases::Case base;                 ///< the base case as read (base.table: its TOML table)
   SweepMethod method = SweepMethod::factorial;
   long long samples = 0;   ///< Latin hypercube sample count
   std::uint64_t seed = 1;  ///< Latin hypercube seed (std::mt19937_64)

@@ -1,7 +1,7 @@
 #include "optimise/sweep_valve_columns.hpp"
 
-#include "fluid/solved_valve.hpp"
-#include "fluid/valve_chain.hpp"
+#include "valve/solved_valve.hpp"
+#include "valve/valve_chain.hpp"
 
 namespace rheomag::optimise {
 
@@ -19,7 +19,7 @@ double first_inductance(const SolvedDesign& solved) {
 
 std::vector<ColumnGroup> valve_columns(const SweepSpec& spec) {
   if (!spec.base.table.contains("valve")) return {};
-  const fluid::ValveOptions base = fluid::read_valve_options(spec.base);
+  const valve::ValveOptions base = valve::read_valve_options(spec.base);
   const bool pressure = !base.flows.empty();
   const bool coil = !base.wire.empty();
   if (!pressure && !coil) return {};
@@ -33,19 +33,19 @@ std::vector<ColumnGroup> valve_columns(const SweepSpec& spec) {
   }
   group.evaluate = [pressure, coil](const SolvedDesign& solved) {
     // The design's own field solve (no second mesh or solve).
-    const magnetostatics::Case& c = solved.design_case;
-    const fluid::ValveOptions options = fluid::read_valve_options(c);
+    const cases::Case& c = solved.design_case;
+    const valve::ValveOptions options = valve::read_valve_options(c);
     std::vector<double> values;
     if (pressure) {
-      const fluid::SolvedValve valve(solved.solver, solved.solution, solved.results,
-                                     fluid::case_fluid(c), options);
-      const fluid::ValvePoint point = valve.point(options.flows.front());
+      const valve::SolvedValve valve(solved.solver, solved.solution, solved.results,
+                                     valve::case_fluid(c), options);
+      const valve::ValvePoint point = valve.point(options.flows.front());
       values.insert(values.end(),
                     {point.dp_total, point.dp_yield, point.dp_viscous, point.dp_total_average_b});
     }
     if (coil) {
-      const fluid::CoilProperties properties =
-          fluid::coil_properties(fluid::coil_spec(solved.solver, options), first_current(solved),
+      const valve::CoilProperties properties =
+          valve::coil_properties(valve::coil_spec(solved.solver, options), first_current(solved),
                                  first_inductance(solved));
       values.insert(values.end(),
                     {properties.resistance, properties.time_constant, properties.power});

@@ -1,6 +1,6 @@
 #pragma once
 // The valve chain's columns in a sweep: pressure drop at each design's current and flow, and the
-// coil's resistance, time constant L/R and power (fluid::SolvedValve, docs/fluid.md).
+// coil's resistance, time constant L/R and power (valve::SolvedValve, docs/fluid.md).
 
 #include <vector>
 
@@ -15,7 +15,7 @@ namespace rheomag::optimise {
 /// - with [valve] wire: coil_resistance_Ohm, coil_time_constant_s (secant L / R) and
 ///   coil_power_W (I^2 R) at that current.
 /// Empty (no columns) when the base case has neither. Evaluated from the design's own field
-/// solve (fluid::SolvedValve): no extra mesh or FE solve per design.
+/// solve (valve::SolvedValve): no extra mesh or FE solve per design.
 std::vector<ColumnGroup> valve_columns(const SweepSpec& spec);
 
 }  // namespace rheomag::optimise

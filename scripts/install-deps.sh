@@ -1,7 +1,7 @@
 #!/bin/bash
 # Installs the Debian 12 packages rheomag builds against (idempotent; needs root or sudo).
 set -euo pipefail
-pkgs=(build-essential cmake pkg-config git ca-certificates
+pkgs=(build-essential cmake pkg-config git ca-certificates clang-format
   libeigen3-dev libsuitesparse-dev libcgal-dev libvtk9-dev
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
   libboost-dev libopenblas0-pthread coinor-libipopt-dev libceres-dev libsvm-dev gnuplot-nox)

@@ -7,10 +7,10 @@
 #include <numbers>
 #include <vector>
 
+#include "core/error.hpp"
 #include "fluid/annulus_bingham.hpp"
 #include "fluid/newtonian.hpp"
 #include "fluid/slit_bingham.hpp"
-#include "mesh/error.hpp"
 
 using namespace rheomag::fluid;
 

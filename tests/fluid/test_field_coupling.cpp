@@ -6,10 +6,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/error.hpp"
 #include "fluid/annulus_bingham.hpp"
 #include "fluid/field_coupling.hpp"
 #include "fluid/radial_bingham.hpp"
-#include "mesh/error.hpp"
 
 using namespace rheomag::fluid;
 

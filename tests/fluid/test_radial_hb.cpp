@@ -7,11 +7,11 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/error.hpp"
 #include "fluid/herschel_bulkley.hpp"
 #include "fluid/newtonian.hpp"
 #include "fluid/radial_bingham.hpp"
 #include "fluid/slit_bingham.hpp"
-#include "mesh/error.hpp"
 
 using namespace rheomag::fluid;
 

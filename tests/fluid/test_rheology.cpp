@@ -7,10 +7,10 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/constants.hpp"
+#include "core/error.hpp"
 #include "fluid/fluid.hpp"
 #include "fluid/yield_stress.hpp"
-#include "magnetostatics/constants.hpp"
-#include "mesh/error.hpp"
 
 using namespace rheomag::fluid;
 
@@ -79,7 +79,7 @@ TEST(CarlsonYieldStress, FormulasAndInverse) {
   const double h = 100e3;
   EXPECT_NEAR(model.of_field_strength(h),
               271700.0 * std::pow(0.32, 1.5239) * std::tanh(6.33e-3 * 100.0), 1e-9);
-  const double mu0 = rheomag::magnetostatics::kMu0;
+  const double mu0 = rheomag::kMu0;
   EXPECT_NEAR(model.flux_density(h),
               1.91 * std::pow(0.32, 1.133) * (1 - std::exp(-10.97 * mu0 * h)) + mu0 * h, 1e-14);
   for (double hh : {1e3, 5e4, 3e5}) {

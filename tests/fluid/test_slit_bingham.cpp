@@ -5,9 +5,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/error.hpp"
 #include "fluid/newtonian.hpp"
 #include "fluid/slit_bingham.hpp"
-#include "mesh/error.hpp"
 
 using namespace rheomag::fluid;
 

@@ -7,9 +7,9 @@
 #include <random>
 #include <string>
 
+#include "core/error.hpp"
 #include "lumped/ident_arx.hpp"
 #include "lumped/ident_fit.hpp"
-#include "mesh/error.hpp"
 
 using namespace rheomag::lumped;
 

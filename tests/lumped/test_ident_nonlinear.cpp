@@ -6,12 +6,12 @@
 #include <cmath>
 #include <random>
 
+#include "core/error.hpp"
 #include "lumped/ident_arx.hpp"
 #include "lumped/ident_fit.hpp"
 #include "lumped/ident_hw.hpp"
 #include "lumped/ident_narx.hpp"
 #include "lumped/ident_svr.hpp"
-#include "mesh/error.hpp"
 
 using namespace rheomag::lumped;
 

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <random>
 
+#include "core/error.hpp"
 #include "lumped/ident_fit.hpp"
 #include "lumped/ident_tf.hpp"
-#include "mesh/error.hpp"
 
 using namespace rheomag::lumped;
 

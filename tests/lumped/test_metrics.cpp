@@ -4,8 +4,8 @@
 
 #include <vector>
 
+#include "core/error.hpp"
 #include "lumped/metrics.hpp"
-#include "mesh/error.hpp"
 
 using namespace rheomag::lumped;
 

@@ -10,10 +10,10 @@
 #include <fstream>
 #include <string>
 
+#include "core/error.hpp"
 #include "lumped/recording_io.hpp"
 #include "lumped/signals.hpp"
 #include "lumped/simulation_spec.hpp"
-#include "mesh/error.hpp"
 
 using namespace rheomag::lumped;
 namespace fs = std::filesystem;
@@ -52,7 +52,7 @@ TEST(Simulate, CliRoundTrip) {
   EXPECT_EQ(rec.t.size(), 1500u);
   EXPECT_EQ(rec.meta.output, "pressure");
   EXPECT_EQ(rec.meta.drive, (std::vector<std::string>{"velocity", "current"}));
-  EXPECT_EQ(rec.meta.rig.kind, "bypass_cylinder");
+  EXPECT_EQ(rec.meta.rig.kind, lumped::RigKind::bypass_cylinder);
   EXPECT_NEAR(*rec.meta.rig.piston_area, 4.524e-4, 1e-7);  // paper 001: 452.4 mm^2
 
   Recording drive;

@@ -8,12 +8,12 @@
 #include <cmath>
 #include <string>
 
-#include "fluid/valve_chain.hpp"
+#include "case/case_file.hpp"
+#include "core/error.hpp"
 #include "lumped/signals.hpp"
 #include "lumped/simulation_spec.hpp"
 #include "lumped/valve_chain_fit.hpp"
-#include "magnetostatics/case_file.hpp"
-#include "mesh/error.hpp"
+#include "valve/valve_chain.hpp"
 
 using namespace rheomag::lumped;
 
@@ -32,8 +32,8 @@ std::string source(const std::string& rel) {
 TEST(ValveChain, MapMatchesTheChainAndInverts) {
   const std::string case_file = source("cases/annular_valve.toml");
   const auto table = tabulate_valve_chain(case_file, 1.0, 2e-5, 3, 6);
-  const auto c = rheomag::magnetostatics::load_case(case_file);
-  rheomag::fluid::ValveChain chain(c, rheomag::fluid::read_valve_options(c));
+  const auto c = rheomag::cases::load_case(case_file);
+  rheomag::valve::ValveChain chain(c, rheomag::valve::read_valve_options(c));
   const auto points = chain.evaluate({0.5}, {table->flow[3]});
   const double eps = 1e-12;  // sign regularisation far below the grid flows
   const double dp = chain_pressure_drop(*table, table->flow[3], 0.5, 1.0, 1.0, eps);

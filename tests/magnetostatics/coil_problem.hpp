@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "magnetostatics/problem.hpp"
+#include "case/problem.hpp"
 
 namespace rheomag::test {
 
@@ -22,13 +22,12 @@ struct Rectangle {
 /// Problem with the given rectangles (they must not overlap; shared edges are merged by the
 /// mesher's PSLG check only if identical, so give disjoint rectangles), one circuit at
 /// `current`, materials, and an automatic outer boundary.
-inline magnetostatics::Problem rectangles_problem(const std::vector<Rectangle>& rectangles,
-                                                  std::vector<magnetostatics::Material> materials,
-                                                  double current,
-                                                  magnetostatics::OuterBoundary outer, int order) {
+inline cases::Problem rectangles_problem(const std::vector<Rectangle>& rectangles,
+                                         std::vector<cases::Material> materials, double current,
+                                         cases::OuterBoundary outer, int order) {
   using namespace magnetostatics;
-  Problem p;
-  p.symmetry = Symmetry::axisymmetric;
+  cases::Problem p;
+  p.symmetry = cases::Symmetry::axisymmetric;
   p.order = order;
   p.outer = outer;
   p.materials = std::move(materials);

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "magnetostatics/problem.hpp"
+#include "case/problem.hpp"
 #include "tests/magnetostatics/structured_mesh.hpp"
 
 namespace rheomag::test {
@@ -23,13 +23,13 @@ struct PotCore {
 };
 
 /// The problem: iron `iron` (linear or B-H), one circuit with `turns` turns at `current`.
-inline magnetostatics::Problem pot_core_problem(const magnetostatics::Material& iron, double turns,
-                                                double current, int order) {
+inline cases::Problem pot_core_problem(const cases::Material& iron, double turns, double current,
+                                       int order) {
   using namespace magnetostatics;
-  Problem p;
-  p.symmetry = Symmetry::axisymmetric;
+  cases::Problem p;
+  p.symmetry = cases::Symmetry::axisymmetric;
   p.order = order;
-  p.outer = OuterBoundary::none;
+  p.outer = cases::OuterBoundary::none;
   p.geometry.source = "pot core (test)";
   p.geometry.regions = {{{10e-3, 12e-3}, "iron"},
                         {{2e-3, 0.0}, "gap", 0.0, mesh::GapKind::radial},
@@ -38,7 +38,7 @@ inline magnetostatics::Problem pot_core_problem(const magnetostatics::Material& 
   p.materials = {iron, {"air", 1.0, {}, 0.0, "vacuum"}, {"copper", 1.0, {}, 5.8e7, "nonmagnetic"}};
   p.regions = {{0, -1, 0.0}, {1, -1, 0.0}, {2, 0, turns}, {1, -1, 0.0}};
   p.circuits = {{"coil", current}};
-  p.boundaries = {{"outside A = 0", BoundaryKind::prescribed_a, 0.0, 0.0, 0.0}};
+  p.boundaries = {{"outside A = 0", cases::BoundaryKind::prescribed_a, 0.0, 0.0, 0.0}};
   return p;
 }
 

@@ -1,14 +1,14 @@
 #pragma once
 // Test helper: the AISI 1010 material of the bundled materials library (cases/materials).
 
-#include "magnetostatics/material_library.hpp"
-#include "magnetostatics/problem.hpp"
+#include "case/material_library.hpp"
+#include "case/problem.hpp"
 
 namespace rheomag::test {
 
 /// AISI 1010 steel with its B-H table (DoSA-2D curve, see cases/materials/aisi1010.toml).
-inline magnetostatics::Material aisi1010() {
-  return magnetostatics::MaterialLibrary::standard().get("AISI 1010", "test").magnetic;
+inline cases::Material aisi1010() {
+  return cases::MaterialLibrary::standard().get("AISI 1010", "test").magnetic;
 }
 
 }  // namespace rheomag::test

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "magnetostatics/constants.hpp"
+#include "core/constants.hpp"
 #include "magnetostatics/solve_problem.hpp"
 #include "tests/magnetostatics/coil_problem.hpp"
 #include "tests/magnetostatics/coil_reference.hpp"
@@ -16,7 +16,7 @@ namespace {
 
 constexpr double kA1 = 10e-3, kA2 = 20e-3, kLength = 20e-3, kTurns = 100;
 
-Problem coil(OuterBoundary outer, int order, double size) {
+cases::Problem coil(cases::OuterBoundary outer, int order, double size) {
   return test::rectangles_problem(
       {{kA1, kA2, -0.5 * kLength, 0.5 * kLength, "coil", 0, kTurns, size}},
       {{"copper", 1.0, {}, 5.8e7, "nonmagnetic"}}, 1.0, outer, order);
@@ -41,8 +41,8 @@ TEST(AirCore, OpenBoundaryInductanceWithinHalfPercent) {
   // (5 x bounding radius) must be visibly worse (its error ~ (R_b / R0)^3 ~ 1 %).
   const double reference = test::thick_coil_inductance(kA1, kA2, kLength, kTurns, 250.0);
   for (int order : {2, 1}) {
-    const SolveResult open = solve_problem(coil(OuterBoundary::open, order, 1e-3));
-    const SolveResult closed = solve_problem(coil(OuterBoundary::dirichlet, order, 1e-3));
+    const SolveResult open = solve_problem(coil(cases::OuterBoundary::open, order, 1e-3));
+    const SolveResult closed = solve_problem(coil(cases::OuterBoundary::dirichlet, order, 1e-3));
     const double l_open = open.results.circuits.at(0).inductance;
     const double l_closed = closed.results.circuits.at(0).inductance;
     std::printf(
@@ -71,11 +71,11 @@ TEST(AirCore, PlanarTwoWireLineWithOpenBoundary) {
   constexpr double pi = std::numbers::pi;
   const double radius = 1e-3, distance = 10e-3, depth = 2.0;
   const int sides = 128;
-  Problem p;
-  p.symmetry = Symmetry::planar;
+  cases::Problem p;
+  p.symmetry = cases::Symmetry::planar;
   p.depth = depth;
   p.order = 2;
-  p.outer = OuterBoundary::open;
+  p.outer = cases::OuterBoundary::open;
   p.geometry.source = "two-wire line (test)";
   p.materials = {{"copper", 1.0, {}, 5.8e7, "nonmagnetic"}};
   p.circuits = {{"line", 3.0}};

@@ -8,9 +8,9 @@
 #include <limits>
 #include <string>
 
+#include "core/constants.hpp"
+#include "core/error.hpp"
 #include "magnetostatics/bh_curve.hpp"
-#include "magnetostatics/constants.hpp"
-#include "mesh/error.hpp"
 #include "tests/magnetostatics/steel.hpp"
 
 namespace rheomag::magnetostatics {
@@ -21,7 +21,7 @@ TEST(BhCurve, ReproducesTheTablePoints) {
   const auto table = test::aisi1010().bh;
   ASSERT_GE(table.size(), 30u);
   const BhCurve curve(table, "AISI 1010");
-  for (const BhPoint& p : table) EXPECT_NEAR(curve.h(p.b), p.h, 1e-9 * (1.0 + p.h));
+  for (const cases::BhPoint& p : table) EXPECT_NEAR(curve.h(p.b), p.h, 1e-9 * (1.0 + p.h));
 }
 
 TEST(BhCurve, IsStrictlyMonotoneWithConsistentDerivatives) {
@@ -66,7 +66,7 @@ TEST(BhCurve, ExtrapolatesTowardsVacuumPermeability) {
   // (1e-9 relative at x = 40 tau); the magnetisation B/mu0 - H stays near iron's saturation.
   const auto table = test::aisi1010().bh;
   const BhCurve curve(table, "AISI 1010");
-  const BhPoint last = table.back();
+  const cases::BhPoint last = table.back();
   const double tau = last.b - table[table.size() - 2].b;
   EXPECT_NEAR(curve.dh_db(last.b + 1e-9), curve.dh_db(last.b - 1e-9), 1e-6 * curve.dh_db(last.b));
   EXPECT_NEAR(curve.dh_db(last.b + 40 * tau), kNu0, 1e-9 * kNu0);
@@ -92,7 +92,7 @@ TEST(BhCurve, TwoPointTableIsLinear) {
   EXPECT_NEAR(curve.energy_density(0.5), 125.0, 1e-9);
 }
 
-void expect_input_error(const std::vector<BhPoint>& table, const std::string& fragment) {
+void expect_input_error(const std::vector<cases::BhPoint>& table, const std::string& fragment) {
   try {
     BhCurve curve(table, "Steel-X");
     FAIL() << "no InputError for " << fragment;

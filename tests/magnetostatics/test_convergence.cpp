@@ -12,8 +12,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/constants.hpp"
 #include "magnetostatics/assembly.hpp"
-#include "magnetostatics/constants.hpp"
 #include "magnetostatics/dof_map.hpp"
 #include "magnetostatics/element_kernel.hpp"
 #include "tests/magnetostatics/structured_mesh.hpp"
@@ -36,21 +36,21 @@ double source(double r, double z) {
   return kNu0 * std::sin(kPi * z) * (8 * r + kPi * kPi * (r - r * r * r));
 }
 
-Problem unit_square_problem(int order) {
-  Problem p;
-  p.symmetry = Symmetry::axisymmetric;
+cases::Problem unit_square_problem(int order) {
+  cases::Problem p;
+  p.symmetry = cases::Symmetry::axisymmetric;
   p.order = order;
   p.geometry.regions.push_back({{0.5, 0.5}, "air"});
   p.regions.push_back({0, -1, 0.0});
   p.materials.push_back({"air", 1.0, {}, 0.0, "vacuum"});
-  p.boundaries.push_back({"zero", BoundaryKind::prescribed_a, 0.0, 0.0, 0.0});
-  p.outer = OuterBoundary::none;
+  p.boundaries.push_back({"zero", cases::BoundaryKind::prescribed_a, 0.0, 0.0, 0.0});
+  p.outer = cases::OuterBoundary::none;
   return p;
 }
 
 /// L2 errors of A and of B over the meridian plane for an n x n mesh.
 std::array<double, 2> errors(int order, int n) {
-  const Problem problem = unit_square_problem(order);
+  const cases::Problem problem = unit_square_problem(order);
   const auto grid = test::uniform(0.0, 1.0, n);
   const mesh::Mesh mesh =
       test::structured_mesh(grid, grid, order, [](double, double) { return 0; }, {-1, 0, 0, 0});

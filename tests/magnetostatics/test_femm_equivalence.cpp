@@ -11,10 +11,11 @@
 #include <array>
 #include <string>
 
-#include "magnetostatics/case_file.hpp"
+#include "case/case_file.hpp"
 #include "magnetostatics/solve_problem.hpp"
 
 using namespace rheomag::magnetostatics;
+using namespace rheomag::cases;
 
 TEST(FemmEquivalence, FemFileAndTomlCaseAgree) {
   const std::string data = RHEOMAG_TEST_DATA;

@@ -6,11 +6,11 @@
 #include <numbers>
 #include <string>
 
+#include "core/constants.hpp"
+#include "core/error.hpp"
 #include "magnetostatics/bh_curve.hpp"
-#include "magnetostatics/constants.hpp"
 #include "magnetostatics/results.hpp"
 #include "magnetostatics/solver.hpp"
-#include "mesh/error.hpp"
 #include "tests/magnetostatics/pot_core.hpp"
 #include "tests/magnetostatics/steel.hpp"
 
@@ -32,7 +32,8 @@ TEST(IronCircuit, HighPermeabilityGapFieldIsMu0NIOverG) {
   // exp(-pi d / g) ~ 4e-4 at d = 2.5 g) and with mu_r = 1e5 the iron drop is ~ l_iron/(mu_r g)
   // ~ 1e-3. Tolerance 0.5 % at the gap centre; the gap-area average (edges included) within 5 %.
   const test::PotCore core;
-  const Problem problem = test::pot_core_problem({"iron", 1e5, {}, 0.0, "ideal"}, 400, 2.0, 2);
+  const cases::Problem problem =
+      test::pot_core_problem({"iron", 1e5, {}, 0.0, "ideal"}, 400, 2.0, 2);
   MagnetostaticSolver solver(problem, test::pot_core_mesh(core, 2.0, 2));
   const Solution s = solver.solve();
   const double expected = kMu0 * 800.0 / core.gap;
@@ -85,9 +86,9 @@ TEST(IronCircuit, NonlinearIronMatchesMagneticCircuitAndNewtonIsQuadratic) {
   // whose residual is above the round-off floor (1e-10) is >= 1.8 (measured values printed;
   // earlier steps are pre-asymptotic where |B| crosses B-H table intervals).
   const test::PotCore core;
-  const Material steel = test::aisi1010();
+  const cases::Material steel = test::aisi1010();
   const BhCurve curve(steel.bh, steel.name);
-  const Problem problem = test::pot_core_problem(steel, 400, 2.0, 2);
+  const cases::Problem problem = test::pot_core_problem(steel, 400, 2.0, 2);
   MagnetostaticSolver solver(problem, test::pot_core_mesh(core, 2.0, 2));
   const Solution s = solver.solve();
   const double estimate = circuit_estimate(core, curve, 800.0);
@@ -120,7 +121,7 @@ TEST(IronCircuit, SaturatedIronLimitsTheGapField) {
   // between the unsaturated result at N I = 800 A and the leakage-free circuit estimate (an
   // upper bound: leakage flux adds to the post's saturation). Newton must still converge.
   const test::PotCore core;
-  const Material steel = test::aisi1010();
+  const cases::Material steel = test::aisi1010();
   const BhCurve curve(steel.bh, steel.name);
   MagnetostaticSolver solver(test::pot_core_problem(steel, 400, 6.0, 2),
                              test::pot_core_mesh(core, 2.0, 2));
@@ -160,7 +161,7 @@ TEST(IronCircuit, DiscardedFactorisationSolvesLikeAFreshSolver) {
   // good preconditioner, so a solver that keeps it takes CG steps and ends in different last
   // bits: the last check shows the comparison can fail.
   const test::PotCore core;
-  const Problem problem = test::pot_core_problem(test::aisi1010(), 400, 2.0, 2);
+  const cases::Problem problem = test::pot_core_problem(test::aisi1010(), 400, 2.0, 2);
   const mesh::Mesh mesh = test::pot_core_mesh(core, 1.0, 2);
   MagnetostaticSolver reused(problem, mesh);
   const Solution start = reused.solve({0.05});

@@ -19,10 +19,10 @@ namespace {
 /// Pot core at 2 A, P2, 2 cells/mm; with a mixed (Robin) outer boundary when `robin`, so that
 /// the boundary terms are checked too (c0 = 1/(mu0 R) with R = 20 mm, c1 = 1e-3).
 MagnetostaticSolver pot_core_solver(bool robin, SolveOptions options = {}) {
-  Problem problem = test::pot_core_problem(test::aisi1010(), 400, 2.0, 2);
+  cases::Problem problem = test::pot_core_problem(test::aisi1010(), 400, 2.0, 2);
   if (robin) {
     problem.boundaries = {
-        {"outside, mixed", BoundaryKind::mixed, 0.0, 1.0 / (4e-7 * M_PI * 0.02), 1e-3}};
+        {"outside, mixed", cases::BoundaryKind::mixed, 0.0, 1.0 / (4e-7 * M_PI * 0.02), 1e-3}};
   }
   const test::PotCore core;
   return MagnetostaticSolver(problem, test::pot_core_mesh(core, 2.0, 2), options);

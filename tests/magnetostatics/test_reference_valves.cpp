@@ -14,10 +14,17 @@
 #include <cmath>
 #include <string>
 
-#include "magnetostatics/case_file.hpp"
+#include "case/case_file.hpp"
+#include "case/case_sections.hpp"
 #include "magnetostatics/solve_problem.hpp"
 
+// The bundled cases carry sections of later layers ([valve], [optimise]); in the program those
+// layers register them, and this test, which links only the layers below, registers them itself.
+const bool kLaterSectionsRegistered = rheomag::cases::register_case_section("valve") &&
+                                      rheomag::cases::register_case_section("optimise");
+
 using namespace rheomag::magnetostatics;
+using namespace rheomag::cases;
 
 namespace {
 

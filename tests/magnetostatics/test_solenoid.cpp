@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "magnetostatics/constants.hpp"
+#include "core/constants.hpp"
 #include "magnetostatics/results.hpp"
 #include "magnetostatics/solve_problem.hpp"
 #include "magnetostatics/solver.hpp"
@@ -23,10 +23,10 @@ TEST(Solenoid, InfinitelyLongSolenoidByNaturalBoundaries) {
   const double length = 10e-3, turns = 50, current = 1.0;
   const double expected = kMu0 * turns * current / length;
   for (int order : {1, 2}) {
-    Problem p;
-    p.symmetry = Symmetry::axisymmetric;
+    cases::Problem p;
+    p.symmetry = cases::Symmetry::axisymmetric;
     p.order = order;
-    p.outer = OuterBoundary::none;
+    p.outer = cases::OuterBoundary::none;
     p.geometry.regions = {{{5e-3, 5e-3}, "air"}, {{11e-3, 5e-3}, "coil"}};
     p.materials = {{"air", 1.0, {}, 0.0, "vacuum"}};
     p.regions = {{0, -1, 0.0}, {0, 0, turns}};
@@ -57,9 +57,9 @@ TEST(Solenoid, FiniteLongSolenoidInOpenSpace) {
   // which for l / D = 18 is mu0 N I / l (1 - 0.18 %). Tolerances: 0.5 % against mu0 N I / l
   // (issue 2), 0.1 % against B0. Real path: open boundary, CGAL mesh, P2.
   const double a1 = 10e-3, a2 = 11e-3, length = 0.4, turns = 400, current = 2.0;
-  const Problem p = test::rectangles_problem(
+  const cases::Problem p = test::rectangles_problem(
       {{a1, a2, -0.5 * length, 0.5 * length, "coil", 0, turns, 1e-3}},
-      {{"copper", 1.0, {}, 5.8e7, "nonmagnetic"}}, current, OuterBoundary::open, 2);
+      {{"copper", 1.0, {}, 5.8e7, "nonmagnetic"}}, current, cases::OuterBoundary::open, 2);
   const SolveResult result = solve_problem(p);
   std::array<double, 2> centre{};
   ASSERT_TRUE(flux_density_at(*result.solver, result.solution, {1e-3, 0.0}, -1, centre));
@@ -82,16 +82,16 @@ TEST(Solenoid, PlanarCurrentSlabFieldAndInductance) {
   const double a = 4e-3, b = 6e-3, width = 10e-3, height = 5e-3, depth = 0.2;
   const double turns = 30, current = 1.5;
   for (int order : {2, 1}) {
-    Problem p;
-    p.symmetry = Symmetry::planar;
+    cases::Problem p;
+    p.symmetry = cases::Symmetry::planar;
     p.depth = depth;
     p.order = order;
-    p.outer = OuterBoundary::none;
+    p.outer = cases::OuterBoundary::none;
     p.geometry.regions = {{{2e-3, 2e-3}, "air"}, {{5e-3, 2e-3}, "coil"}};
     p.materials = {{"air", 1.0, {}, 0.0, "vacuum"}};
     p.regions = {{0, -1, 0.0}, {0, 0, turns}};
     p.circuits = {{"coil", current}};
-    p.boundaries = {{"A = 0", BoundaryKind::prescribed_a, 0.0, 0.0, 0.0}};
+    p.boundaries = {{"A = 0", cases::BoundaryKind::prescribed_a, 0.0, 0.0, 0.0}};
     const auto x = test::join(test::join(test::uniform(0, a, 8), test::uniform(a, b, 8)),
                               test::uniform(b, width, 8));
     const mesh::Mesh m = test::structured_mesh(

@@ -7,19 +7,19 @@
 #include <limits>
 #include <string>
 
-#include "magnetostatics/constants.hpp"
+#include "core/constants.hpp"
+#include "core/error.hpp"
 #include "magnetostatics/domain.hpp"
 #include "magnetostatics/solver.hpp"
-#include "mesh/error.hpp"
 #include "tests/magnetostatics/structured_mesh.hpp"
 
 namespace rheomag::magnetostatics {
 namespace {
 
-Problem square(Symmetry symmetry) {
-  Problem p;
+cases::Problem square(cases::Symmetry symmetry) {
+  cases::Problem p;
   p.symmetry = symmetry;
-  p.outer = OuterBoundary::none;
+  p.outer = cases::OuterBoundary::none;
   p.geometry.source = "square.toml";
   p.geometry.regions = {{{0.5, 0.5}, "coil"}};
   p.materials = {{"air", 1.0, {}, 0.0, "vacuum"}};
@@ -45,36 +45,38 @@ void expect_input_error(const std::function<void()>& action, const std::string& 
 
 TEST(SolverInput, UndeterminedPotentialIsAnInputError) {
   // Planar, no boundary condition: A only defined up to a constant.
-  expect_input_error([] { MagnetostaticSolver s(square(Symmetry::planar), square_mesh(0.0)); },
-                     "A is not determined");
+  expect_input_error(
+      [] { MagnetostaticSolver s(square(cases::Symmetry::planar), square_mesh(0.0)); },
+      "A is not determined");
   // Axisymmetric off the axis with natural boundaries only: A = C/r is free.
   expect_input_error(
-      [] { MagnetostaticSolver s(square(Symmetry::axisymmetric), square_mesh(1.0)); },
+      [] { MagnetostaticSolver s(square(cases::Symmetry::axisymmetric), square_mesh(1.0)); },
       "no node on the axis");
 }
 
 TEST(SolverInput, RegionWithoutMaterialIsNamed) {
-  Problem p = square(Symmetry::axisymmetric);
+  cases::Problem p = square(cases::Symmetry::axisymmetric);
   p.regions[0].material = -1;
   expect_input_error([&] { MagnetostaticSolver s(p, square_mesh(0.0)); },
                      "region 'coil' has no material");
 }
 
 TEST(SolverInput, BadCurrentsAndMarkers) {
-  MagnetostaticSolver solver(square(Symmetry::axisymmetric), square_mesh(0.0));
+  MagnetostaticSolver solver(square(cases::Symmetry::axisymmetric), square_mesh(0.0));
   expect_input_error([&] { solver.solve({1.0, 2.0}); }, "2 current(s) given for 1 circuit(s)");
   expect_input_error([&] { solver.solve({std::numeric_limits<double>::quiet_NaN()}); },
                      "not a finite number");
   expect_input_error(
       [] {
-        MagnetostaticSolver s(square(Symmetry::axisymmetric), square_mesh(0.0, {-1, 3, -1, -1}));
+        MagnetostaticSolver s(square(cases::Symmetry::axisymmetric),
+                              square_mesh(0.0, {-1, 3, -1, -1}));
       },
       "boundary marker 3");
 }
 
 TEST(SolverInput, DomainClosingChecksItsInput) {
-  Problem p = square(Symmetry::axisymmetric);
-  p.outer = OuterBoundary::open;
+  cases::Problem p = square(cases::Symmetry::axisymmetric);
+  p.outer = cases::OuterBoundary::open;
   p.geometry.points = {{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}};
   p.outer_radius_factor = 1.0;
   expect_input_error([&] { close_domain(p); }, "outer_radius_factor");
@@ -88,14 +90,14 @@ TEST(SolverInput, DomainClosingChecksItsInput) {
 TEST(SolverInput, DomainClosingAddsArcAxisAndAir) {
   // The open boundary: a 96-chord semicircle of radius 5 x bounding radius marked with
   // c0 = nu0 / R0, axis segments joining the points on r = 0, and a background "air" region.
-  Problem p = square(Symmetry::axisymmetric);
-  p.outer = OuterBoundary::open;
+  cases::Problem p = square(cases::Symmetry::axisymmetric);
+  p.outer = cases::OuterBoundary::open;
   p.geometry.points = {{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}};
   p.geometry.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-  const Problem closed = close_domain(p);
+  const cases::Problem closed = close_domain(p);
   const double radius = 5.0 * std::hypot(1.0, 0.5);
   ASSERT_EQ(closed.boundaries.size(), 1u);
-  EXPECT_EQ(closed.boundaries[0].kind, BoundaryKind::mixed);
+  EXPECT_EQ(closed.boundaries[0].kind, cases::BoundaryKind::mixed);
   EXPECT_NEAR(closed.boundaries[0].c0, kNu0 / radius, 1e-9);
   EXPECT_EQ(closed.geometry.points.size(), 4u + kOuterArcSegments + 1);
   // 4 square sides + 96 chords + 2 axis segments (below and above the square).

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 #include "mesh/mesher.hpp"
 #include "pslg_fixtures.hpp"
 

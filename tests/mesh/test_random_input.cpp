@@ -10,7 +10,7 @@
 #include <random>
 #include <string>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 #include "mesh/mesher.hpp"
 #include "pslg_fixtures.hpp"
 

@@ -16,7 +16,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 #include "mesh/mesher.hpp"
 #include "mesh/vtu_writer.hpp"
 #include "pslg_fixtures.hpp"

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "magnetostatics/case_file.hpp"
-#include "mesh/error.hpp"
+#include "case/case_file.hpp"
+#include "core/error.hpp"
 #include "optimise/optimise_evaluate.hpp"
 #include "optimise/optimise_run.hpp"
 #include "optimise/optimise_spec.hpp"
@@ -77,8 +77,8 @@ max = 0.043
 )";
 
 /// The coarse case with `optimise` appended.
-inline magnetostatics::Case make_case(const std::string& optimise) {
-  return magnetostatics::parse_case(kBase + optimise, "coarse_annular.toml");
+inline cases::Case make_case(const std::string& optimise) {
+  return cases::parse_case(kBase + optimise, "coarse_annular.toml");
 }
 
 /// The InputError message of reading the [optimise] table `optimise` (appended to the coarse
@@ -86,7 +86,7 @@ inline magnetostatics::Case make_case(const std::string& optimise) {
 inline std::string input_error(const std::string& optimise) {
   try {
     const auto c = make_case(optimise);
-    optimise::DesignEvaluator evaluator(c, optimise::read_optimise_spec(c));
+    optimise::OptimiseEvaluator evaluator(c, optimise::read_optimise_spec(c));
   } catch (const InputError& e) {
     return e.what();
   }
@@ -106,7 +106,7 @@ struct TempDir {
 };
 
 /// run_optimisation of `c` writing into `dir`.
-inline optimise::OptimiseResult run(const magnetostatics::Case& c, const TempDir& dir) {
+inline optimise::OptimiseResult run(const cases::Case& c, const TempDir& dir) {
   optimise::OptimiseOptions options;
   options.out_dir = dir.path;
   return optimise::run_optimisation(c, options);
@@ -123,19 +123,21 @@ struct MagneticCircuitValve {
   double gain() const { return 2.0 * c * k * mu0 * current / (h * h); }
   /// Quantities of design x = (pole length L [m], turns N).
   optimise::Quantities quantities(const std::vector<double>& x) const {
-    return {{"dp_on", gain() * x[0] * x[1]},
-            {"length", 2.0 * x[0] + a * x[1]},
-            {"time_constant", b * x[1]}};
+    optimise::Quantities q;
+    q[optimise::Quantity::dp_on] = gain() * x[0] * x[1];
+    q[optimise::Quantity::length] = 2.0 * x[0] + a * x[1];
+    q[optimise::Quantity::time_constant] = b * x[1];
+    return q;
   }
   /// Spec: maximise dp_on over L in [1, 20] mm, N in [50, 800], length <= l_max.
   optimise::OptimiseSpec spec() const {
     optimise::OptimiseSpec s;
-    s.variables = {{"pole_length", 1e-3, 20e-3, 5e-3}, {"turns", 50.0, 800.0, 200.0}};
+    s.variables = {{"pole_length", {}, 1e-3, 20e-3, 5e-3}, {"turns", {}, 50.0, 800.0, 200.0}};
     optimise::Constraint envelope;
-    envelope.quantity = "length";
+    envelope.quantity = optimise::Quantity::length;
     envelope.upper = l_max;
     s.constraints = {envelope};
-    s.terms = {{"dp_on", 1.0, 1.0}};
+    s.terms = {{optimise::Quantity::dp_on, 1.0, 1.0}};
     s.tolerance = 1e-9;
     s.max_iterations = 200;
     return s;

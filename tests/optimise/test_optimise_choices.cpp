@@ -9,8 +9,8 @@
 #include <sstream>
 #include <string>
 
-#include "magnetostatics/case_file.hpp"
-#include "mesh/error.hpp"
+#include "case/case_file.hpp"
+#include "core/error.hpp"
 #include "optimise/optimise_evaluate.hpp"
 #include "optimise/optimise_run.hpp"
 #include "optimise/optimise_spec.hpp"
@@ -59,13 +59,13 @@ TEST(OptimiseChoices, EnumerationPicksTheBestFeasibleCombination) {
   EXPECT_DOUBLE_EQ(r.optimal.objective, best.optimal.objective);
   EXPECT_NE(optimise::format_summary(r).find("<- best"), std::string::npos);
 
-  const auto reloaded = magnetostatics::load_case(r.case_file);
+  const auto reloaded = cases::load_case(r.case_file);
   EXPECT_EQ(reloaded.table["case"]["fluid"].value_or(std::string()), "MRF-140CG");
   EXPECT_EQ(reloaded.table["geometry"]["fluid_material"].value_or(std::string()), "MRF-140CG");
   auto spec = optimise::read_optimise_spec(reloaded);
   spec.choices.clear();
-  optimise::DesignEvaluator check(reloaded, spec);
-  const double dp = check.evaluate(r.optimal.x).at("dp_on");
+  optimise::OptimiseEvaluator check(reloaded, spec);
+  const double dp = check.evaluate(r.optimal.x)[optimise::Quantity::dp_on];
   EXPECT_NEAR(dp, r.optimal.objective, 1e-9 * dp);
 }
 
@@ -83,7 +83,7 @@ TEST(OptimiseChoices, WeightedSumAndParetoAreReadAndChecked) {
                 "lower = 8.0\nupper = 12.0\n"));
   ASSERT_EQ(spec.terms.size(), 2u);
   EXPECT_EQ(spec.objective, "weighted_sum");
-  EXPECT_EQ(spec.terms[1].quantity, "power");
+  EXPECT_EQ(spec.terms[1].quantity, optimise::Quantity::power);
   EXPECT_EQ(spec.terms[1].weight, -0.5);
   ASSERT_TRUE(spec.pareto);
   EXPECT_EQ(spec.pareto->points, 4);
@@ -111,9 +111,9 @@ TEST(OptimiseChoices, WeightedSumAndParetoAreReadAndChecked) {
 TEST(OptimiseChoices, ShippedCasesAreValid) {
   for (const char* name : {"optimise_annular.toml", "optimise_meandering.toml",
                            "optimise_annular_pareto.toml", "optimise_annular_rise.toml"}) {
-    const auto c = magnetostatics::load_case(fs::path(RHEOMAG_SOURCE_DIR) / "cases" / name);
+    const auto c = cases::load_case(fs::path(RHEOMAG_SOURCE_DIR) / "cases" / name);
     const auto spec = optimise::read_optimise_spec(c);
-    EXPECT_NO_THROW(optimise::DesignEvaluator(c, spec)) << name;
+    EXPECT_NO_THROW(optimise::OptimiseEvaluator(c, spec)) << name;
     EXPECT_GE(spec.variables.size(), 4u) << name;
     EXPECT_EQ(spec.objective, "dp_on") << name;
   }
@@ -143,13 +143,13 @@ upper = 12.5
   const auto& points = r.pareto->points;
   ASSERT_EQ(points.size(), 3u);
   for (std::size_t k = 0; k < points.size(); ++k) {
-    const double tau = points[k].design.quantities.at("time_constant");
+    const double tau = points[k].design.quantities[optimise::Quantity::time_constant];
     EXPECT_LE(tau, points[k].epsilon * (1.0 + optimise::kFeasibilityTolerance)) << k;
     if (k > 0) {
       EXPECT_LE(points[k].design.objective, points[k - 1].design.objective) << k;
     }
   }
-  const double tau_min = r.pareto->second_alone.quantities.at("time_constant");
+  const double tau_min = r.pareto->second_alone.quantities[optimise::Quantity::time_constant];
   EXPECT_NEAR(points.back().epsilon, tau_min, 1e-12);
   ASSERT_FALSE(r.pareto_files.empty());
   std::ifstream csv(r.pareto_files[0]);

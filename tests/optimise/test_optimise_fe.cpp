@@ -14,8 +14,8 @@
 #include <fstream>
 #include <string>
 
-#include "magnetostatics/case_file.hpp"
-#include "mesh/error.hpp"
+#include "case/case_file.hpp"
+#include "core/error.hpp"
 #include "optimise/optimise_evaluate.hpp"
 #include "optimise/optimise_run.hpp"
 #include "optimise/optimise_spec.hpp"
@@ -36,12 +36,12 @@ using optimise_fixture::TempDir;
 // agree to well under 2 %, and all designs share one mesh (no re-meshing noise).
 TEST(OptimiseFe, GradientIsConsistentAcrossStepSizesOnTheMorphedMesh) {
   const auto c = make_case(kTwoVariables);
-  optimise::DesignEvaluator evaluator(c, optimise::read_optimise_spec(c));
+  optimise::OptimiseEvaluator evaluator(c, optimise::read_optimise_spec(c));
   const double r0 = 10.5, p0 = 5.0;
   std::vector<double> slopes;
   for (double h : {0.2, 0.05, 0.0125}) {
-    const double up = evaluator.evaluate({r0 + h, p0}).at("dp_on");
-    const double down = evaluator.evaluate({r0 - h, p0}).at("dp_on");
+    const double up = evaluator.evaluate({r0 + h, p0})[optimise::Quantity::dp_on];
+    const double down = evaluator.evaluate({r0 - h, p0})[optimise::Quantity::dp_on];
     slopes.push_back((up - down) / (2.0 * h));
   }
   EXPECT_EQ(evaluator.meshes(), 1);
@@ -63,20 +63,22 @@ TEST(OptimiseFe, WrittenOptimumRespectsEveryConstraint) {
   ASSERT_TRUE(fs::exists(r.history_file));
   ASSERT_TRUE(fs::exists(r.vtu_file));
 
-  const auto reloaded = magnetostatics::load_case(r.case_file);
+  const auto reloaded = cases::load_case(r.case_file);
   const auto reloaded_spec = optimise::read_optimise_spec(reloaded);
-  optimise::DesignEvaluator check(reloaded, reloaded_spec);
+  optimise::OptimiseEvaluator check(reloaded, reloaded_spec);
   std::vector<double> x;
   for (const auto& v : reloaded_spec.variables) x.push_back(v.initial);
   for (std::size_t i = 0; i < x.size(); ++i) EXPECT_DOUBLE_EQ(x[i], r.optimal.x[i]);
   const auto q = check.evaluate(x);
   for (const auto& k : reloaded_spec.constraints) {
-    const double value = q.at(k.quantity);
+    const double value = q[k.quantity];
     if (std::isfinite(k.upper)) {
-      EXPECT_LE(value, k.upper * (1.0 + optimise::kFeasibilityTolerance)) << k.quantity;
+      EXPECT_LE(value, k.upper * (1.0 + optimise::kFeasibilityTolerance))
+          << optimise::quantity_name(k.quantity);
     }
     if (std::isfinite(k.lower)) {
-      EXPECT_GE(value, k.lower * (1.0 - optimise::kFeasibilityTolerance)) << k.quantity;
+      EXPECT_GE(value, k.lower * (1.0 - optimise::kFeasibilityTolerance))
+          << optimise::quantity_name(k.quantity);
     }
   }
 }
@@ -93,7 +95,7 @@ TEST(OptimiseFe, OptimumBeatsTheBestOfADenseGridAtFewerSolves) {
   ASSERT_TRUE(r.optimal.feasible) << optimise::format_summary(r);
 
   const auto s = optimise::read_optimise_spec(c);
-  optimise::DesignEvaluator grid(c, s);
+  optimise::OptimiseEvaluator grid(c, s);
   double best = -INFINITY;
   const int n = 9;
   for (int i = 0; i < n; ++i)
@@ -104,7 +106,8 @@ TEST(OptimiseFe, OptimumBeatsTheBestOfADenseGridAtFewerSolves) {
           s.variables[1].lower + (s.variables[1].upper - s.variables[1].lower) * j / (n - 1);
       grid.remesh_next();
       const auto q = grid.evaluate({x0, x1});
-      if (optimise::report_design(s, {x0, x1}, q).feasible) best = std::max(best, q.at("dp_on"));
+      if (optimise::report_design(s, {x0, x1}, q).feasible)
+        best = std::max(best, q[optimise::Quantity::dp_on]);
     }
   ASSERT_TRUE(std::isfinite(best));
   EXPECT_GE(r.optimal.objective, best * (1.0 - 0.005)) << r.optimal.objective << " vs " << best;
@@ -128,9 +131,9 @@ upper = 700
   ASSERT_TRUE(r.optimal.feasible) << optimise::format_summary(r);
   const double turns = r.optimal.x[2];
   EXPECT_EQ(turns, std::round(turns));
-  const auto reloaded = magnetostatics::load_case(r.case_file);
+  const auto reloaded = cases::load_case(r.case_file);
   EXPECT_EQ(reloaded.table["geometry"]["turns"].value<double>().value_or(-1.0), turns);
-  EXPECT_LE(r.optimal.quantities.at("time_constant"),
+  EXPECT_LE(r.optimal.quantities[optimise::Quantity::time_constant],
             0.05 * (1.0 + optimise::kFeasibilityTolerance));
 }
 
@@ -168,7 +171,7 @@ TEST(OptimiseFe, BadInputIsAnInputErrorNamingTheKey) {
   // Not a case key: the closest key is suggested.
   EXPECT_NE(input_error(head + "[[optimise.variable]]\nkey = \"geometry.neck_radios\"\n"
                                "lower = 8.0\nupper = 12.0\n")
-                .find("did you mean \"geometry.neck_radius\""),
+                .find("did you mean 'geometry.neck_radius'"),
             std::string::npos);
   // A dimension bound that is not physical.
   EXPECT_NE(input_error(head + "[[optimise.variable]]\nkey = \"geometry.pole_length\"\n"

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <string>
 
-#include "magnetostatics/case_file.hpp"
-#include "magnetostatics/wire_gauge.hpp"
+#include "case/case_file.hpp"
+#include "case/wire_gauge.hpp"
 #include "optimise/optimise_evaluate.hpp"
 #include "optimise/optimise_wire_gauge.hpp"
 #include "optimise_fixture.hpp"
@@ -17,18 +17,18 @@ namespace {
 using namespace rheomag;
 using optimise_fixture::TempDir;
 
-// The relaxed formula passes through the ASTM B258 table (magnetostatics::awg_diameter) at whole
+// The relaxed formula passes through the ASTM B258 table (cases::awg_diameter) at whole
 // gauges (1e-12 relative: the same formula) and awg_number inverts it.
 TEST(OptimiseGauge, RelaxedAwgFormulaMatchesTheWholeGauges) {
   for (int n : {0, 10, 18, 24, 30, 40}) {
-    const double d = magnetostatics::awg_diameter(n);
+    const double d = cases::awg_diameter(n);
     EXPECT_NEAR(optimise::awg_diameter_relaxed(n), d, 1e-12 * d) << n;
     EXPECT_NEAR(optimise::awg_number(d), n, 1e-9) << n;
   }
   EXPECT_EQ(optimise::wire_text(24.0), "AWG 24");
   EXPECT_EQ(optimise::wire_text(-1.0), "AWG 00");
-  EXPECT_NEAR(magnetostatics::wire_diameter(optimise::wire_text(22.5)),
-              optimise::awg_diameter_relaxed(22.5), 1e-9 * optimise::awg_diameter_relaxed(22.5));
+  EXPECT_NEAR(cases::wire_diameter(optimise::wire_text(22.5)), optimise::awg_diameter_relaxed(22.5),
+              1e-9 * optimise::awg_diameter_relaxed(22.5));
 }
 
 // Coil wound at copper fill 0.55 (turns = floor(fill A / (pi d^2 / 4))): at fixed current a
@@ -41,7 +41,7 @@ TEST(OptimiseGauge, RoundedGaugeIsTheBestFeasibleWholeGauge) {
   std::string base = optimise_fixture::kBase;
   base.replace(base.find("turns = 600\n"), 12, "wire = \"AWG 24\"\nfill_factor = 0.55\n");
   base.replace(base.find("[valve]\nwire = \"AWG 24\"\n"), 24, "");
-  const auto c = magnetostatics::parse_case(base + R"(
+  const auto c = cases::parse_case(base + R"(
 [optimise]
 objective = "dp_on"
 flow = 6.91e-6
@@ -54,23 +54,25 @@ upper = 30
 quantity = "power"
 max = 2.0
 )",
-                                            "coarse_wound.toml");
+                                   "coarse_wound.toml");
   const TempDir dir("gauge");
   const auto r = optimise_fixture::run(c, dir);
   ASSERT_TRUE(r.optimal.feasible) << optimise::format_summary(r);
   const double n = r.optimal.x[0];
   EXPECT_EQ(n, std::round(n));
   EXPECT_NE(n, 24.0);
-  const auto reloaded = magnetostatics::load_case(r.case_file);
+  const auto reloaded = cases::load_case(r.case_file);
   EXPECT_EQ(reloaded.table["geometry"]["wire"].value_or(std::string()),
             "AWG " + std::to_string(static_cast<int>(n)));
   auto spec = optimise::read_optimise_spec(reloaded);
-  optimise::DesignEvaluator check(reloaded, spec);
+  optimise::OptimiseEvaluator check(reloaded, spec);
   check.exact_winding(true);
-  EXPECT_LE(check.evaluate({n}).at("power"), 2.0 * (1.0 + optimise::kFeasibilityTolerance));
-  EXPECT_GT(check.evaluate({n + 1.0}).at("power"), 2.0 * (1.0 + optimise::kFeasibilityTolerance));
+  EXPECT_LE(check.evaluate({n})[optimise::Quantity::power],
+            2.0 * (1.0 + optimise::kFeasibilityTolerance));
+  EXPECT_GT(check.evaluate({n + 1.0})[optimise::Quantity::power],
+            2.0 * (1.0 + optimise::kFeasibilityTolerance));
   std::printf("gauge optimum AWG %g: dp_on %.6g Pa, power %.4g W, %d FE solves\n", n,
-              r.optimal.objective, r.optimal.quantities.at("power"), r.fe_solves);
+              r.optimal.objective, r.optimal.quantities[optimise::Quantity::power], r.fe_solves);
 }
 
 }  // namespace

@@ -9,7 +9,7 @@
 #include <numbers>
 #include <string>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 #include "optimise/optimise_evaluate.hpp"
 #include "optimise/optimise_spec.hpp"
 #include "optimise_fixture.hpp"
@@ -28,9 +28,9 @@ std::string optimise_table(const std::string& extra) {
 // pole_length 3, 5 mm at 7 (exact: template dimensions).
 TEST(OptimiseQuantities, MinimumWallIsTheThinnestSteelWall) {
   const auto c = make_case(optimise_table(""));
-  optimise::DesignEvaluator e(c, optimise::read_optimise_spec(c));
-  EXPECT_DOUBLE_EQ(e.evaluate({3.0}).at("min_wall"), 3e-3);
-  EXPECT_DOUBLE_EQ(e.evaluate({7.0}).at("min_wall"), 5e-3);
+  optimise::OptimiseEvaluator e(c, optimise::read_optimise_spec(c));
+  EXPECT_DOUBLE_EQ(e.evaluate({3.0})[optimise::Quantity::min_wall], 3e-3);
+  EXPECT_DOUBLE_EQ(e.evaluate({7.0})[optimise::Quantity::min_wall], 5e-3);
 }
 
 // temperature_rise = P / (h A), A = 2 pi r_c l_c the coil's outer cylinder: r_c = gap_radius -
@@ -39,15 +39,15 @@ TEST(OptimiseQuantities, MinimumWallIsTheThinnestSteelWall) {
 // (the mesh has nodes on the coil's corners).
 TEST(OptimiseQuantities, TemperatureRiseIsPowerOverSurfaceConductance) {
   const auto c = make_case(optimise_table(""));
-  optimise::DesignEvaluator e(c, optimise::read_optimise_spec(c));
+  optimise::OptimiseEvaluator e(c, optimise::read_optimise_spec(c));
   const auto q = e.evaluate({5.0});
   const double area = 2.0 * std::numbers::pi * 18.5e-3 * 32e-3;
-  EXPECT_NEAR(q.at("temperature_rise"), q.at("power") / (10.0 * area),
-              1e-9 * q.at("temperature_rise"));
+  EXPECT_NEAR(q[optimise::Quantity::temperature_rise], q[optimise::Quantity::power] / (10.0 * area),
+              1e-9 * q[optimise::Quantity::temperature_rise]);
   const auto c2 = make_case(optimise_table("thermal_resistance = 4.0\n"));
-  optimise::DesignEvaluator e2(c2, optimise::read_optimise_spec(c2));
+  optimise::OptimiseEvaluator e2(c2, optimise::read_optimise_spec(c2));
   const auto q2 = e2.evaluate({5.0});
-  EXPECT_NEAR(q2.at("temperature_rise"), 4.0 * q2.at("power"), 1e-12);
+  EXPECT_NEAR(q2[optimise::Quantity::temperature_rise], 4.0 * q2[optimise::Quantity::power], 1e-12);
 }
 
 // 90 % rise time after a voltage step V on R and lambda(i). Reference: for a linear inductor
@@ -57,17 +57,17 @@ TEST(OptimiseQuantities, TemperatureRiseIsPowerOverSurfaceConductance) {
 // so the rise time must be shorter than ln(10) L(0.05 A) / R.
 TEST(OptimiseQuantities, RiseTimeMatchesTheLinearRlLimitAndShortensWithSaturation) {
   const auto probe = make_case(optimise_table("current = 0.05\n"));
-  optimise::DesignEvaluator p(probe, optimise::read_optimise_spec(probe));
+  optimise::OptimiseEvaluator p(probe, optimise::read_optimise_spec(probe));
   const auto q0 = p.evaluate({5.0});
-  const double r = q0.at("resistance"), l = q0.at("inductance");
+  const double r = q0[optimise::Quantity::resistance], l = q0[optimise::Quantity::inductance];
   auto rise = [&](double final_current) {
     const auto c = make_case(
         optimise_table("current = 0.05\nsupply_voltage = " + std::to_string(final_current * r) +
                        "\n[[optimise.constraint]]\nquantity = \"rise_time\"\nmax = 1.0\n"));
-    optimise::DesignEvaluator e(c, optimise::read_optimise_spec(c));
+    optimise::OptimiseEvaluator e(c, optimise::read_optimise_spec(c));
     const auto q = e.evaluate({5.0});
     EXPECT_EQ(e.fe_solves(), 5);  // the operating point + 4 lambda(i) samples
-    return q.at("rise_time");
+    return q[optimise::Quantity::rise_time];
   };
   const double linear = std::log(10.0) * l / r;
   const double small = rise(0.05), saturated = rise(3.0);

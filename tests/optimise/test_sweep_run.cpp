@@ -3,19 +3,40 @@
 
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 #include <algorithm>
 
-#include "fluid/valve_chain.hpp"
-#include "magnetostatics/case_file.hpp"
+#include "case/case_file.hpp"
+#include "core/error.hpp"
 #include "magnetostatics/solve_problem.hpp"
-#include "mesh/error.hpp"
 #include "optimise/sweep_evaluate.hpp"
 #include "optimise/sweep_run.hpp"
 #include "optimise/sweep_valve_columns.hpp"
 #include "sweep_fixture.hpp"
+#include "valve/valve_chain.hpp"
 
 namespace rheomag::optimise {
 namespace {
+
+// The design's case the independent way: its values written into the base case's TOML text and
+// that text read as a case file (the sweep itself edits the typed case; both must agree).
+cases::Case design_case_via_text(const SweepSpec& spec, const Design& design,
+                                 const std::string& source) {
+  toml::table table = spec.base.table;
+  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
+    toml::node* node = &table;
+    const auto& path = spec.axes[a].key.path;
+    for (std::size_t i = 0; i + 1 < path.size(); ++i)
+      node = node->is_table() ? node->as_table()->get(path[i])
+                              : node->as_array()->get(std::stoul(path[i]));
+    std::visit([&](const auto& v) { node->as_table()->insert_or_assign(path.back(), v); },
+               design.values[a]);
+  }
+  std::ostringstream text;
+  text << table;
+  return cases::parse_case(text.str(), source);
+}
 
 using namespace testing;
 
@@ -104,8 +125,7 @@ TEST(SweepRun, ReusedMeshGivesTheNumbersOfADirectSolve) {
   const std::size_t b_avg = column(lines[0], "gap_top.b_avg_T");
   const std::size_t inductance = column(lines[0], "coil.inductance_H");
   for (long long id = 0; id < 3; ++id) {
-    const auto direct_case = magnetostatics::parse_case(design_case_text(spec, designs.design(id)),
-                                                        tiny_valve().string());
+    const auto direct_case = design_case_via_text(spec, designs.design(id), tiny_valve().string());
     const auto direct = magnetostatics::solve_problem(direct_case.problem);
     const auto cells = split(lines[static_cast<std::size_t>(id) + 1]);
     EXPECT_EQ(cells[b_avg], csv_number(direct.results.gaps.at(0).b.average));
@@ -197,7 +217,7 @@ TEST(SweepRun, VtuPerDesign) {
 }
 
 TEST(SweepRun, ValveColumnsEqualADirectValveChainAndGrowWithCurrent) {
-  // Reference: fluid::ValveChain on the same design case (docs/fluid.md); the sweep must pass
+  // Reference: valve::ValveChain on the same design case (docs/fluid.md); the sweep must pass
   // its pressure drop and coil numbers through unchanged. Physics check: the yield part of the
   // pressure drop grows with the current (tau_y grows with B below saturation).
   const auto dir = scratch_dir("valve");
@@ -217,10 +237,9 @@ TEST(SweepRun, ValveColumnsEqualADirectValveChainAndGrowWithCurrent) {
   const SweepSpec spec = parse_sweep(text, dir / "sweep.toml");
   const DesignGenerator designs(spec);
   for (long long id = 0; id < 2; ++id) {
-    const auto design_case =
-        magnetostatics::parse_case(design_case_text(spec, designs.design(id)), base.string());
-    const auto options = fluid::read_valve_options(design_case);
-    fluid::ValveChain chain(design_case, options);
+    const auto design_case = design_case_via_text(spec, designs.design(id), base.string());
+    const auto options = valve::read_valve_options(design_case);
+    valve::ValveChain chain(design_case, options);
     const double current = design_case.problem.circuits.at(0).current;
     const auto point = chain.evaluate({current}, options.flows).at(0);
     const auto cells = split(lines[static_cast<std::size_t>(id) + 1]);

@@ -5,7 +5,7 @@
 
 #include <set>
 
-#include "mesh/error.hpp"
+#include "core/error.hpp"
 #include "optimise/sweep_design.hpp"
 #include "optimise/sweep_run.hpp"
 #include "optimise/sweep_spec.hpp"
@@ -49,9 +49,9 @@ TEST(SweepSpec, RangeWithStepStopsAtStop) {
                                "step = 0.2\n[[axis]]\nkey = \"geometry.turns\"\nstart = 100\n"
                                "stop = 599\nstep = 200\n");
   EXPECT_EQ(spec.axes[0].levels.size(), 3u);
-  EXPECT_EQ(spec.axes[0].key.type, KeyType::number);
+  EXPECT_EQ(spec.axes[0].key.type, cases::KeyType::number);
   ASSERT_EQ(spec.axes[1].levels.size(), 3u);
-  EXPECT_EQ(spec.axes[1].key.type, KeyType::integer);
+  EXPECT_EQ(spec.axes[1].key.type, cases::KeyType::integer);
   EXPECT_EQ(std::get<long long>(spec.axes[1].levels[2]), 500);
   EXPECT_EQ(design_count(spec), 9);
 }

@@ -1,0 +1,355 @@
+// Keys are resolved on the case's document (arrays of tables by index) with the template's
+// parameter table as a fallback; edits change the typed input and the document together.
+
+#include "case/case_key.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+
+#include "case/toml_section.hpp"
+#include "case/wire_gauge.hpp"
+#include "core/error.hpp"
+
+namespace rheomag::cases {
+namespace {
+
+bool is_index(const std::string& s) {
+  return !s.empty() &&
+         std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c); });
+}
+
+/// Splits "a.b[2].c" into {"a", "b", "2", "c"}.
+std::vector<std::string> split_key(const std::string& key) {
+  std::vector<std::string> parts(1);
+  for (char c : key) {
+    if (c == '.' || c == '[')
+      parts.emplace_back();
+    else if (c != ']')
+      parts.back() += c;
+  }
+  return parts;
+}
+
+void collect_keys(const toml::node& node, const std::string& prefix,
+                  std::vector<std::string>& out) {
+  if (const toml::table* t = node.as_table()) {
+    for (const auto& [k, v] : *t)
+      collect_keys(v, prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str()),
+                   out);
+  } else if (const toml::array* a = node.as_array()) {
+    if (a->empty() || !a->is_array_of_tables()) {
+      out.push_back(prefix);  // an array of values is one value (not editable item by item)
+      return;
+    }
+    for (std::size_t i = 0; i < a->size(); ++i)
+      collect_keys(*a->get(i), prefix + "." + std::to_string(i), out);
+  } else {
+    out.push_back(prefix);
+  }
+}
+
+/// The template parameter named by a "geometry.<key>" path, nullptr if none.
+const TemplateParameter* template_parameter(const Case& c, const std::vector<std::string>& path) {
+  if (!c.input.valve || path.size() != 2 || path[0] != "geometry") return nullptr;
+  for (const TemplateParameter& p : c.input.valve->parameters)
+    if (p.key == path[1]) return &p;
+  return nullptr;
+}
+
+[[noreturn]] void unknown_key(const Case& base, const std::string& key, const std::string& where,
+                              const std::string& label, const std::string& why) {
+  const std::string suggestion = closest_key(key, value_keys(base));
+  std::string message = where + ": " + label + " '" + key + "' " + why;
+  if (!suggestion.empty()) message += "; did you mean '" + suggestion + "'?";
+  throw InputError(message);
+}
+
+/// The document node at a canonical path (nullptr if absent).
+const toml::node* node_at(const toml::table& table, const std::vector<std::string>& path) {
+  const toml::node* node = &table;
+  for (const std::string& part : path) {
+    if (!node) return nullptr;
+    if (const toml::table* t = node->as_table())
+      node = t->get(part);
+    else if (const toml::array* a = node->as_array(); a && is_index(part))
+      node = a->get(std::stoul(part));
+    else
+      return nullptr;
+  }
+  return node;
+}
+
+/// The table holding the last component of `path` (tables created along the way if absent).
+toml::table& parent_table(toml::table& root, const std::vector<std::string>& path) {
+  toml::node* node = &root;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    if (toml::table* t = node->as_table()) {
+      toml::node* next = t->get(path[i]);
+      if (!next) next = &t->insert_or_assign(path[i], toml::table{}).first->second;
+      node = next;
+    } else {
+      node = node->as_array()->get(std::stoul(path[i]));
+    }
+  }
+  return *node->as_table();
+}
+
+void set_document_value(toml::table& root, const std::vector<std::string>& path,
+                        const KeyValue& value) {
+  toml::table& parent = parent_table(root, path);
+  std::visit([&](const auto& v) { parent.insert_or_assign(path.back(), v); }, value);
+}
+
+double as_number(const KeyValue& value, const std::string& written) {
+  if (const double* d = std::get_if<double>(&value)) return *d;
+  if (const long long* i = std::get_if<long long>(&value)) return static_cast<double>(*i);
+  throw InputError("key '" + written + "': expected a number, got " + format_value(value));
+}
+
+const std::string& as_text(const KeyValue& value, const std::string& written) {
+  if (const std::string* s = std::get_if<std::string>(&value)) return *s;
+  throw InputError("key '" + written + "': expected a name, got " + format_value(value));
+}
+
+KeyType type_of(const toml::node& node) {
+  if (node.is_integer()) return KeyType::integer;
+  if (node.is_floating_point()) return KeyType::number;
+  if (node.is_boolean()) return KeyType::boolean;
+  return KeyType::text;
+}
+
+}  // namespace
+
+std::vector<std::string> value_keys(const Case& c) {
+  std::vector<std::string> keys;
+  collect_keys(c.table, "", keys);
+  if (c.input.valve)
+    for (const TemplateParameter& p : c.input.valve->parameters)
+      keys.push_back("geometry." + p.key);
+  // Arrays holding one table may be addressed without the index: offer that form as well.
+  std::vector<std::string> short_forms;
+  for (const std::string& k : keys) {
+    std::string shortened;
+    const toml::node* node = &c.table;
+    for (const std::string& p : split_key(k)) {
+      const toml::array* a = node ? node->as_array() : nullptr;
+      if (a && a->size() == 1 && is_index(p)) {
+        node = a->get(0);
+        continue;
+      }
+      node = node && node->as_table() ? node->as_table()->get(p)
+             : (a && is_index(p))     ? a->get(std::stoul(p))
+                                      : nullptr;
+      if (!shortened.empty()) shortened += '.';
+      shortened += p;
+    }
+    if (shortened != k) short_forms.push_back(shortened);
+  }
+  keys.insert(keys.end(), short_forms.begin(), short_forms.end());
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  return keys;
+}
+
+CaseKey resolve_case_key(const Case& base, const std::string& key, const std::string& where,
+                         const std::string& label) {
+  CaseKey resolved;
+  resolved.written = key;
+  if (key == kWireGaugeKey) {
+    if (base.input.winding.fill_factor <= 0.0)
+      throw InputError(where + ": \"" + key +
+                       "\" as a design variable needs the coil wound from its wire: "
+                       "[geometry] wire = \"AWG 24\" and fill_factor = 0.55 instead of turns "
+                       "(docs/case-format.md)");
+    resolved.path = {"geometry", "wire"};
+    resolved.target = KeyTarget::wire_gauge;
+    return resolved;
+  }
+  if (key == "fluid") {
+    resolved.path = {"case", "fluid"};
+    resolved.type = KeyType::text;
+    resolved.target = KeyTarget::fluid;
+    return resolved;
+  }
+  const std::vector<std::string> parts = split_key(key);
+  if (std::any_of(parts.begin(), parts.end(), [](const std::string& p) { return p.empty(); }))
+    throw InputError(where + ": " + label + " '" + key +
+                     "' has an empty component; expected a dotted path like 'geometry.gap_width'");
+  const toml::node* node = &base.table;
+  for (std::size_t i = 0; i < parts.size();) {
+    if (const toml::table* t = node->as_table()) {
+      node = t->get(parts[i]);
+      resolved.path.push_back(parts[i]);
+      ++i;
+      if (!node) {
+        if (const TemplateParameter* p = template_parameter(base, resolved.path);
+            p && i == parts.size()) {
+          resolved.target = KeyTarget::template_parameter;
+          resolved.parameter = p->key;
+          resolved.kind = p->kind;
+          if (p->kind == ParameterKind::length) resolved.si_per_unit = base.input.length_unit;
+          resolved.type = p->kind == ParameterKind::length || p->kind == ParameterKind::count
+                              ? KeyType::number
+                              : KeyType::text;
+          return resolved;
+        }
+        unknown_key(base, key, where, label, "does not exist in the case");
+      }
+    } else if (const toml::array* a = node->as_array()) {
+      if (!a->is_array_of_tables() || a->empty())
+        unknown_key(base, key, where, label,
+                    "goes into a list of values, which is edited as one value");
+      if (is_index(parts[i])) {
+        const std::size_t index = std::stoul(parts[i]);
+        if (index >= a->size())
+          unknown_key(base, key, where, label,
+                      "indexes item " + parts[i] + " of a list of " + std::to_string(a->size()));
+        node = a->get(index);
+        resolved.path.push_back(parts[i]);
+        ++i;
+      } else if (a->size() == 1) {
+        node = a->get(0);
+        resolved.path.push_back("0");
+      } else {
+        unknown_key(base, key, where, label,
+                    "needs an index: the case has " + std::to_string(a->size()) +
+                        " entries there (write e.g. '" + resolved.path.front() + ".0." + parts[i] +
+                        "')");
+      }
+    } else {
+      unknown_key(base, key, where, label, "goes below a value");
+    }
+  }
+  if (node->is_table() || (node->is_array() && node->as_array()->is_array_of_tables()))
+    unknown_key(base, key, where, label, "is a table, not a value");
+  if (!node->is_value() || node->is_date() || node->is_time() || node->is_date_time())
+    throw InputError(where + ": " + label + " '" + key +
+                     "' holds a list, date or time in the case; only numbers, integers, "
+                     "booleans and strings can be edited");
+  resolved.type = type_of(*node);
+  if (const TemplateParameter* p = template_parameter(base, resolved.path)) {
+    resolved.target = KeyTarget::template_parameter;
+    resolved.parameter = p->key;
+    resolved.kind = p->kind;
+    if (p->kind == ParameterKind::length) resolved.si_per_unit = base.input.length_unit;
+  } else if (resolved.path.size() == 3 && resolved.path[0] == "circuit" &&
+             resolved.path[2] == "current") {
+    resolved.target = KeyTarget::circuit_current;
+    resolved.circuit = std::stoi(resolved.path[1]);
+  }
+  return resolved;
+}
+
+KeyValue case_value(const Case& c, const CaseKey& key) {
+  if (key.target == KeyTarget::wire_gauge) {
+    const double n = awg_number(c.input.winding.wire_diameter);
+    return std::abs(n - std::round(n)) < 1e-6 ? std::round(n) : n;
+  }
+  if (key.target == KeyTarget::fluid) return c.fluid;
+  if (const toml::node* node = node_at(c.table, key.path)) {
+    if (auto i = node->value_exact<int64_t>()) return static_cast<long long>(*i);
+    if (auto d = node->value_exact<double>()) return *d;
+    if (auto b = node->value_exact<bool>()) return *b;
+    if (auto s = node->value_exact<std::string>()) return *s;
+  }
+  if (key.target == KeyTarget::template_parameter) {
+    if (key.kind == ParameterKind::length)
+      return c.input.template_values.numbers.at(key.parameter) / key.si_per_unit;
+    if (key.kind == ParameterKind::count) return c.input.template_values.numbers.at(key.parameter);
+    return c.input.template_values.texts.at(key.parameter);
+  }
+  throw InputError(c.source.string() + ": key '" + key.written + "' is not in the case");
+}
+
+double numeric_case_value(const Case& c, const CaseKey& key, const std::string& where) {
+  const KeyValue value = case_value(c, key);
+  if (const double* d = std::get_if<double>(&value)) return *d;
+  if (const long long* i = std::get_if<long long>(&value)) return static_cast<double>(*i);
+  throw InputError(where + ": \"" + key.written + "\" is not a number in the case");
+}
+
+bool only_currents(const std::vector<CaseEdit>& edits) {
+  return std::all_of(edits.begin(), edits.end(),
+                     [](const CaseEdit& e) { return e.key.target == KeyTarget::circuit_current; });
+}
+
+Case with(const Case& base, const std::vector<CaseEdit>& edits) {
+  Case c = base;
+  bool reread = false;
+  for (const CaseEdit& edit : edits) {
+    const CaseKey& key = edit.key;
+    switch (key.target) {
+      case KeyTarget::template_parameter:
+        if (key.kind == ParameterKind::length)
+          c.input.template_values.numbers[key.parameter] =
+              as_number(edit.value, key.written) * key.si_per_unit;
+        else if (key.kind == ParameterKind::count)
+          c.input.template_values.numbers[key.parameter] = as_number(edit.value, key.written);
+        else
+          c.input.template_values.texts[key.parameter] = as_text(edit.value, key.written);
+        set_document_value(c.table, key.path, edit.value);
+        break;
+      case KeyTarget::circuit_current:
+        c.problem.circuits.at(static_cast<std::size_t>(key.circuit)).current =
+            as_number(edit.value, key.written);
+        set_document_value(c.table, key.path, edit.value);
+        break;
+      case KeyTarget::wire_gauge: {
+        const double n = as_number(edit.value, key.written);
+        const double whole = std::round(n);
+        c.input.winding.wire = wire_text(n);
+        c.input.winding.wire_diameter = std::abs(n - whole) < 1e-9
+                                            ? awg_diameter(static_cast<int>(whole))
+                                            : awg_diameter_relaxed(n);
+        set_document_value(c.table, key.path, c.input.winding.wire);
+        break;
+      }
+      case KeyTarget::fluid: {
+        const std::string& name = as_text(edit.value, key.written);
+        c.input.fluid = name;
+        set_document_value(c.table, {"case", "fluid"}, name);
+        if (c.input.valve) {
+          c.input.template_values.texts["fluid_material"] = name;
+          set_document_value(c.table, {"geometry", "fluid_material"}, name);
+        }
+        break;
+      }
+      case KeyTarget::document:
+        set_document_value(c.table, key.path, edit.value);
+        reread = true;
+        break;
+    }
+  }
+  if (reread) return parse_case(c.table, c.source.string(), *base.input.library);
+  if (!only_currents(edits)) build_case(c);
+  return c;
+}
+
+std::string format_value(const KeyValue& value) {
+  struct Formatter {
+    std::string operator()(long long v) const { return std::to_string(v); }
+    std::string operator()(double v) const {
+      char buffer[40];
+      std::snprintf(buffer, sizeof buffer, "%.12g", v);
+      return buffer;
+    }
+    std::string operator()(bool v) const { return v ? "true" : "false"; }
+    std::string operator()(const std::string& v) const { return v; }
+  };
+  return std::visit(Formatter{}, value);
+}
+
+std::string wire_text(double n) {
+  const double whole = std::round(n);
+  if (std::abs(n - whole) < 1e-9) {
+    if (whole >= 1.0) return "AWG " + std::to_string(static_cast<int>(whole));
+    return "AWG " + std::string(static_cast<std::size_t>(1.0 - whole), '0');
+  }
+  char text[48];
+  std::snprintf(text, sizeof text, "%.9g mm", awg_diameter_relaxed(n) * 1e3);
+  return text;
+}
+
+}  // namespace rheomag::cases

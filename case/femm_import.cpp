@@ -1,0 +1,694 @@
+// FEMM 4.2 .fem (magnetostatic) reader. Format facts from the FEMM 4.2 manual and the .fem
+// reader of xfemm (cfemm/libfemm); no code taken from either.
+
+#include "case/femm_import.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <vector>
+
+#include "case/material_library.hpp"
+#include "case/region_outline.hpp"
+#include "case/toml_section.hpp"
+#include "core/error.hpp"
+
+namespace rheomag::cases {
+
+double femm_mesh_size_to_edge(double femm_size) {
+  return femm_size * std::sqrt(std::numbers::pi / std::sqrt(3.0));
+}
+
+namespace {
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return out;
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  return s;
+}
+
+/// The raw .fem data of one boundary property.
+struct FemBoundary {
+  std::string name;
+  int type = 0;
+  double a0 = 0, a1 = 0, a2 = 0, phi = 0, c0 = 0, c1 = 0;
+  int line = 0;
+};
+
+/// The raw .fem data of one block (material) property.
+struct FemBlock {
+  std::string name;
+  double mu_x = 1, mu_y = 1, h_c = 0, j = 0, sigma = 0, lam_fill = 1;
+  int lam_type = 0;
+  std::vector<std::pair<double, double>> bh;
+  int line = 0;
+};
+
+/// The raw .fem data of one circuit.
+struct FemCircuit {
+  std::string name;
+  double amps = 0;
+  int type = 0;
+  int line = 0;
+};
+
+struct FemLabel {
+  double x = 0, y = 0, size = -1, magdir = 0;
+  int block = 0, circuit = 0, group = 0, turns = 1, external = 0;
+  int line = 0;
+};
+
+struct FemArc {
+  int n0 = 0, n1 = 0, marker = 0, line = 0;
+  double degrees = 0, max_side_degrees = 0;
+};
+
+struct FemSegment {
+  int n0 = 0, n1 = 0, marker = 0, line = 0;
+  double max_length = -1;
+};
+
+/// Line-by-line reader with file:line error messages.
+class FemReader {
+ public:
+  FemReader(std::string_view text, std::string source) : source_(std::move(source)) {
+    std::size_t start = 0;
+    while (start <= text.size()) {
+      std::size_t end = text.find_first_of("\r\n", start);
+      if (end == std::string_view::npos) end = text.size();
+      lines_.emplace_back(text.substr(start, end - start));
+      if (end < text.size() && text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n')
+        ++end;
+      start = end + 1;
+    }
+  }
+
+  [[noreturn]] void fail(int line, const std::string& message) const {
+    throw InputError(source_ + ":" + std::to_string(line) + ": " + message);
+  }
+
+  bool next(std::string_view& line) {
+    while (index_ < lines_.size()) {
+      line = trim(lines_[index_++]);
+      if (!line.empty()) return true;
+    }
+    return false;
+  }
+
+  /// The next non-empty line, which must exist (`what` says what was expected).
+  std::string_view require(const std::string& what) {
+    std::string_view line;
+    if (!next(line)) fail(line_number(), "file ends early: expected " + what);
+    return line;
+  }
+
+  int line_number() const { return static_cast<int>(index_); }
+  const std::string& source() const { return source_; }
+
+  double number(std::string_view token, const std::string& what) const {
+    const std::string text(trim(token));
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size())
+      fail(line_number(), "expected a number for " + what + ", got '" + text + "'");
+    if (!std::isfinite(value))
+      fail(line_number(), "expected a finite number for " + what + ", got '" + text + "'");
+    return value;
+  }
+
+  int integer(std::string_view token, const std::string& what) const {
+    const double value = number(token, what);
+    if (value != std::floor(value) || std::abs(value) > 1e9)
+      fail(line_number(), "expected an integer for " + what + ", got '" + std::string(token) + "'");
+    return static_cast<int>(value);
+  }
+
+  /// Whitespace-separated numeric columns of a data line (quoted strings end the columns).
+  std::vector<double> columns(std::string_view line, std::size_t minimum, const std::string& what) {
+    std::vector<double> values;
+    std::istringstream in{std::string(line)};
+    std::string token;
+    while (in >> token) {
+      if (token.front() == '"') break;
+      values.push_back(number(token, what));
+    }
+    if (values.size() < minimum)
+      fail(line_number(), what + ": expected at least " + std::to_string(minimum) +
+                              " numbers, got " + std::to_string(values.size()));
+    return values;
+  }
+
+ private:
+  std::vector<std::string_view> lines_;
+  std::size_t index_ = 0;
+  std::string source_;
+};
+
+/// Splits "[Key] = value" or "<Key> = value" into lower-case key and trimmed value.
+std::pair<std::string, std::string_view> key_value(std::string_view line, char close) {
+  const std::size_t end = line.find(close);
+  const std::string key = lower(line.substr(1, end == std::string_view::npos ? 0 : end - 1));
+  std::string_view value;
+  const std::size_t equals = line.find('=');
+  if (equals != std::string_view::npos) value = trim(line.substr(equals + 1));
+  return {key, value};
+}
+
+std::string unquote(std::string_view value) {
+  value = trim(value);
+  if (value.size() >= 2 && value.front() == '"' && value.back() == '"')
+    value = value.substr(1, value.size() - 2);
+  return std::string(value);
+}
+
+double length_unit(std::string_view value, FemReader& reader) {
+  const std::string unit = lower(unquote(value));
+  if (unit == "inches") return 0.0254;
+  if (unit == "millimeters") return 1e-3;
+  if (unit == "centimeters") return 1e-2;
+  if (unit == "meters") return 1.0;
+  if (unit == "mils") return 2.54e-5;
+  if (unit == "micrometers") return 1e-6;
+  reader.fail(reader.line_number(),
+              "[LengthUnits]: expected inches, millimeters, centimeters, meters, mils or "
+              "micrometers, got '" +
+                  unit + "'");
+}
+
+/// Everything read from the file before conversion.
+struct FemFile {
+  double unit = 0.0254;  // FEMM's default length unit is inches
+  double depth = 1.0;
+  bool axisymmetric = false;
+  std::vector<FemBoundary> boundaries;
+  std::vector<FemBlock> blocks;
+  std::vector<FemCircuit> circuits;
+  int point_props = 0;
+  std::vector<std::pair<mesh::Point, int>> points;  // point, point-property marker
+  std::vector<FemSegment> segments;
+  std::vector<FemArc> arcs;
+  std::vector<FemLabel> holes;
+  std::vector<FemLabel> labels;
+  std::map<std::string, int> declared;  // [BdryProps] etc. counts
+  std::map<std::string, int> declared_line;
+};
+
+int count_value(std::string_view value, FemReader& reader, const std::string& key) {
+  const int n = reader.integer(value, "[" + key + "]");
+  if (n < 0 || n > 10000000) reader.fail(reader.line_number(), "[" + key + "]: bad count");
+  return n;
+}
+
+void read_property_block(FemReader& reader, FemFile& file, const std::string& begin) {
+  const int start = reader.line_number();
+  const std::string end = "end" + begin.substr(5);
+  FemBoundary boundary;
+  FemBlock block;
+  FemCircuit circuit;
+  boundary.line = block.line = circuit.line = start;
+  while (true) {
+    const std::string_view line =
+        reader.require("<" + end + "> closing the block opened at line " + std::to_string(start));
+    if (line.front() != '<')
+      reader.fail(reader.line_number(), "expected a <Key> = value line inside <" + begin + ">");
+    const auto [key, value] = key_value(line, '>');
+    const std::string what = "<" + key + ">";
+    if (key == end) break;
+    if (key.rfind("begin", 0) == 0)
+      reader.fail(reader.line_number(), "<" + key + "> inside <" + begin + "> opened at line " +
+                                            std::to_string(start) + " (missing <" + end + ">)");
+    if (begin == "beginbdry") {
+      if (key == "bdryname")
+        boundary.name = unquote(value);
+      else if (key == "bdrytype")
+        boundary.type = reader.integer(value, what);
+      else if (key == "a_0")
+        boundary.a0 = reader.number(value, what);
+      else if (key == "a_1")
+        boundary.a1 = reader.number(value, what);
+      else if (key == "a_2")
+        boundary.a2 = reader.number(value, what);
+      else if (key == "phi")
+        boundary.phi = reader.number(value, what);
+      else if (key == "c0")
+        boundary.c0 = reader.number(value, what);
+      else if (key == "c1")
+        boundary.c1 = reader.number(value, what);
+    } else if (begin == "beginblock") {
+      if (key == "blockname")
+        block.name = unquote(value);
+      else if (key == "mu_x")
+        block.mu_x = reader.number(value, what);
+      else if (key == "mu_y")
+        block.mu_y = reader.number(value, what);
+      else if (key == "h_c")
+        block.h_c = reader.number(value, what);
+      else if (key == "j_re")
+        block.j = reader.number(value, what);
+      else if (key == "sigma")
+        block.sigma = reader.number(value, what);
+      else if (key == "lamtype")
+        block.lam_type = reader.integer(value, what);
+      else if (key == "lamfill")
+        block.lam_fill = reader.number(value, what);
+      else if (key == "bhpoints") {
+        const int n = count_value(value, reader, "BHPoints");
+        for (int i = 0; i < n; ++i) {
+          const std::vector<double> bh = reader.columns(
+              reader.require("B-H point " + std::to_string(i + 1) + " of " + std::to_string(n)), 2,
+              "B-H point");
+          block.bh.emplace_back(bh[0], bh[1]);
+        }
+      }
+    } else if (begin == "begincircuit") {
+      if (key == "circuitname")
+        circuit.name = unquote(value);
+      else if (key == "totalamps_re")
+        circuit.amps = reader.number(value, what);
+      else if (key == "circuittype")
+        circuit.type = reader.integer(value, what);
+    }
+    // Other keys (complex parts, wire and hysteresis data, ...) do not affect magnetostatics.
+  }
+  if (begin == "beginbdry")
+    file.boundaries.push_back(boundary);
+  else if (begin == "beginblock")
+    file.blocks.push_back(block);
+  else if (begin == "begincircuit")
+    file.circuits.push_back(circuit);
+  else
+    ++file.point_props;
+}
+
+FemFile read_file(std::string_view text, FemReader& reader) {
+  FemFile file;
+  bool frequency_seen = false;
+  std::string_view line;
+  static const std::vector<std::string> ignored{
+      "format",   "precision", "minangle", "dosmartmesh",  "smartmesh", "coordinates", "acsolver",
+      "prevtype", "prevsoln",  "comment",  "forcemaxmesh", "extzo",     "extro",       "extri"};
+  (void)text;
+  while (reader.next(line)) {
+    const int at = reader.line_number();
+    if (line.front() == '<') {
+      const auto [key, value] = key_value(line, '>');
+      if (key == "beginbdry" || key == "beginblock" || key == "begincircuit" ||
+          key == "beginpoint") {
+        read_property_block(reader, file, key);
+        continue;
+      }
+      reader.fail(at, "unexpected '" + std::string(line) + "' outside a property block");
+    }
+    if (line.front() != '[' || line.find(']') == std::string_view::npos)
+      reader.fail(at,
+                  "expected a [Key] = value line, got '" + std::string(line.substr(0, 60)) + "'");
+    const auto [key, value] = key_value(line, ']');
+    if (key == "solution") break;
+    if (line.find('=') == std::string_view::npos) reader.fail(at, "[" + key + "] has no '= value'");
+    if (key == "frequency") {
+      frequency_seen = true;
+      if (reader.number(value, "[Frequency]") != 0.0)
+        reader.fail(at,
+                    "[Frequency] is not 0: time-harmonic problems are not supported (rheomag "
+                    "solves magnetostatics; set the frequency to 0)");
+    } else if (key == "depth") {
+      file.depth = reader.number(value, "[Depth]");
+      if (!(file.depth > 0)) reader.fail(at, "[Depth] must be positive");
+    } else if (key == "lengthunits") {
+      file.unit = length_unit(value, reader);
+    } else if (key == "problemtype") {
+      const std::string type = lower(unquote(value));
+      if (type == "axisymmetric")
+        file.axisymmetric = true;
+      else if (type == "planar")
+        file.axisymmetric = false;
+      else
+        reader.fail(at, "[ProblemType]: expected planar or axisymmetric, got '" + type + "'");
+    } else if (key == "bdryprops" || key == "blockprops" || key == "circuitprops" ||
+               key == "pointprops") {
+      file.declared[key] = count_value(value, reader, key);
+      file.declared_line[key] = at;
+    } else if (key == "numpoints") {
+      const int n = count_value(value, reader, "NumPoints");
+      for (int i = 0; i < n; ++i) {
+        const std::vector<double> c = reader.columns(
+            reader.require("point " + std::to_string(i + 1) + " of " + std::to_string(n) +
+                           " after [NumPoints] (line " + std::to_string(at) + ")"),
+            2, "point");
+        file.points.push_back(
+            {{c[0], c[1]}, c.size() > 2 && std::abs(c[2]) < 1e9 ? static_cast<int>(c[2]) : 0});
+      }
+    } else if (key == "numsegments") {
+      const int n = count_value(value, reader, "NumSegments");
+      for (int i = 0; i < n; ++i) {
+        const std::vector<double> c = reader.columns(
+            reader.require("segment " + std::to_string(i + 1) + " of " + std::to_string(n) +
+                           " after [NumSegments] (line " + std::to_string(at) + ")"),
+            2, "segment");
+        FemSegment s;
+        s.line = reader.line_number();
+        if (c[0] != std::floor(c[0]) || c[1] != std::floor(c[1]) || std::abs(c[0]) > 1e9 ||
+            std::abs(c[1]) > 1e9)
+          reader.fail(s.line, "segment point numbers must be integers");
+        s.n0 = static_cast<int>(c[0]);
+        s.n1 = static_cast<int>(c[1]);
+        s.max_length = c.size() > 2 ? c[2] : -1;
+        s.marker = c.size() > 3 && std::abs(c[3]) < 1e9 ? static_cast<int>(c[3]) : 0;
+        file.segments.push_back(s);
+      }
+    } else if (key == "numarcsegments") {
+      const int n = count_value(value, reader, "NumArcSegments");
+      for (int i = 0; i < n; ++i) {
+        const std::vector<double> c = reader.columns(
+            reader.require("arc segment " + std::to_string(i + 1) + " of " + std::to_string(n) +
+                           " after [NumArcSegments] (line " + std::to_string(at) + ")"),
+            3, "arc segment");
+        FemArc a;
+        a.line = reader.line_number();
+        if (c[0] != std::floor(c[0]) || c[1] != std::floor(c[1]) || std::abs(c[0]) > 1e9 ||
+            std::abs(c[1]) > 1e9)
+          reader.fail(a.line, "arc segment point numbers must be integers");
+        a.n0 = static_cast<int>(c[0]);
+        a.n1 = static_cast<int>(c[1]);
+        a.degrees = c[2];
+        a.max_side_degrees = c.size() > 3 ? c[3] : 10.0;
+        a.marker = c.size() > 4 && std::abs(c[4]) < 1e9 ? static_cast<int>(c[4]) : 0;
+        file.arcs.push_back(a);
+      }
+    } else if (key == "numholes") {
+      const int n = count_value(value, reader, "NumHoles");
+      for (int i = 0; i < n; ++i) {
+        const std::vector<double> c = reader.columns(
+            reader.require("hole " + std::to_string(i + 1) + " of " + std::to_string(n)), 2,
+            "hole");
+        FemLabel hole;
+        hole.x = c[0];
+        hole.y = c[1];
+        hole.line = reader.line_number();
+        file.holes.push_back(hole);
+      }
+    } else if (key == "numblocklabels") {
+      const int n = count_value(value, reader, "NumBlockLabels");
+      for (int i = 0; i < n; ++i) {
+        const std::vector<double> c = reader.columns(
+            reader.require("block label " + std::to_string(i + 1) + " of " + std::to_string(n) +
+                           " after [NumBlockLabels] (line " + std::to_string(at) + ")"),
+            3, "block label");
+        FemLabel label;
+        label.line = reader.line_number();
+        label.x = c[0];
+        label.y = c[1];
+        for (std::size_t k : {2, 4, 6, 7, 8})
+          if (k < c.size() && (c[k] != std::floor(c[k]) || std::abs(c[k]) > 1e9))
+            reader.fail(label.line,
+                        "block label column " + std::to_string(k + 1) + " must be an integer");
+        label.block = static_cast<int>(c[2]);
+        label.size = c.size() > 3 ? c[3] : -1;
+        label.circuit = c.size() > 4 ? static_cast<int>(c[4]) : 0;
+        label.magdir = c.size() > 5 ? c[5] : 0;
+        label.group = c.size() > 6 ? static_cast<int>(c[6]) : 0;
+        label.turns = c.size() > 7 ? static_cast<int>(c[7]) : 1;
+        label.external = c.size() > 8 ? static_cast<int>(c[8]) : 0;
+        file.labels.push_back(label);
+      }
+    } else if (std::find(ignored.begin(), ignored.end(), key) == ignored.end()) {
+      reader.fail(at, "unknown .fem key [" + key + "]");
+    }
+  }
+  if (!frequency_seen)
+    reader.fail(reader.line_number(),
+                "not a FEMM magnetics file: no [Frequency] key (is this a .fem from FEMM 4.2?)");
+  const std::pair<const char*, std::size_t> counts[] = {
+      {"bdryprops", file.boundaries.size()},
+      {"blockprops", file.blocks.size()},
+      {"circuitprops", file.circuits.size()},
+      {"pointprops", static_cast<std::size_t>(file.point_props)}};
+  for (const auto& [key, found] : counts) {
+    auto it = file.declared.find(key);
+    const std::size_t declared = it == file.declared.end() ? 0 : it->second;
+    if (declared != found)
+      reader.fail(it == file.declared.end() ? reader.line_number() : file.declared_line[key],
+                  "[" + std::string(key) + "] declares " + std::to_string(declared) +
+                      " properties but the file has " + std::to_string(found) +
+                      " (truncated or malformed)");
+  }
+  return file;
+}
+
+}  // namespace
+
+Problem parse_femm(std::string_view text, const std::string& source) {
+  FemReader reader(text, source);
+  const FemFile file = read_file(text, reader);
+  auto fail = [&](int line, const std::string& message) { reader.fail(line, message); };
+
+  Problem problem;
+  problem.symmetry = file.axisymmetric ? Symmetry::axisymmetric : Symmetry::planar;
+  problem.depth = file.depth * file.unit;
+  problem.outer = OuterBoundary::none;
+  problem.geometry.source = source;
+
+  // Boundary properties: index i of the file -> index in problem.boundaries (or rejected).
+  for (const FemBoundary& b : file.boundaries) {
+    BoundaryCondition bc;
+    bc.name = b.name;
+    if (b.type == 0) {
+      bc.kind = BoundaryKind::prescribed_a;
+      bc.a_value = b.a0;
+    } else if (b.type == 2) {
+      bc.kind = BoundaryKind::mixed;
+      // FEMM: (1/mu) dA/dn + c0 A + c1 = 0; rheomag: nu dA/dn + c0 A = c1.
+      bc.c0 = b.c0;
+      bc.c1 = -b.c1;
+    }
+    problem.boundaries.push_back(bc);
+  }
+  auto check_boundary_use = [&](int marker, int line) {
+    if (marker == 0) return -1;
+    if (marker < 0 || marker > static_cast<int>(file.boundaries.size()))
+      fail(line, "boundary property number " + std::to_string(marker) +
+                     " does not exist (the "
+                     "file defines " +
+                     std::to_string(file.boundaries.size()) + ")");
+    const FemBoundary& b = file.boundaries[marker - 1];
+    const std::string name =
+        "boundary '" + b.name + "' (defined at line " + std::to_string(b.line) + ")";
+    switch (b.type) {
+      case 0:
+        if (b.a1 != 0.0 || b.a2 != 0.0)
+          reader.fail(line,
+                      name +
+                          ": prescribed A varying in space (A_1, A_2 not 0) is not supported; "
+                          "only a constant A_0");
+        break;
+      case 2:
+        break;
+      case 1:
+        reader.fail(line, name +
+                              ": small skin depth boundaries (BdryType 1) are AC-only and not "
+                              "supported in magnetostatics");
+      case 3:
+        reader.fail(line,
+                    name +
+                        ": strategic dual image boundaries (BdryType 3) are not supported; use "
+                        "a mixed (asymptotic) boundary or rheomag's automatic open boundary");
+      case 4:
+      case 5:
+      case 6:
+      case 7:
+        reader.fail(line, name + ": periodic/antiperiodic boundaries (BdryType " +
+                              std::to_string(b.type) +
+                              ") are not supported; model the full geometry");
+      default:
+        reader.fail(line, name + ": unknown BdryType " + std::to_string(b.type));
+    }
+    return marker - 1;
+  };
+
+  // Points.
+  for (const auto& [p, marker] : file.points) {
+    if (marker != 0)
+      fail(file.declared_line.count("pointprops") ? file.declared_line.at("pointprops") : 1,
+           "point properties (prescribed A or current at a point) are not supported");
+    if (file.axisymmetric && p.r < 0)
+      fail(1, "axisymmetric model has a point at negative r = " + format_number(p.r));
+    problem.geometry.points.push_back({p.r * file.unit, p.z * file.unit});
+  }
+  const int point_count = static_cast<int>(file.points.size());
+  auto check_point = [&](int index, int line) {
+    if (index < 0 || index >= point_count)
+      fail(line, "point number " + std::to_string(index) +
+                     " does not exist (points are numbered "
+                     "0 to " +
+                     std::to_string(point_count - 1) + ")");
+  };
+
+  bool has_prescribed = false;
+  for (const FemSegment& s : file.segments) {
+    check_point(s.n0, s.line);
+    check_point(s.n1, s.line);
+    if (s.n0 == s.n1) fail(s.line, "segment joins point " + std::to_string(s.n0) + " to itself");
+    mesh::Segment segment;
+    segment.a = s.n0;
+    segment.b = s.n1;
+    segment.boundary = check_boundary_use(s.marker, s.line);
+    segment.max_length = s.max_length > 0 ? s.max_length * file.unit : 0.0;
+    if (segment.boundary >= 0 && file.boundaries[segment.boundary].type == 0) has_prescribed = true;
+    problem.geometry.segments.push_back(segment);
+  }
+  for (const FemArc& a : file.arcs) {
+    check_point(a.n0, a.line);
+    check_point(a.n1, a.line);
+    if (a.n0 == a.n1)
+      fail(a.line, "arc segment joins point " + std::to_string(a.n0) + " to itself");
+    if (!(a.degrees > 0.0 && a.degrees <= 180.0))
+      fail(a.line, "arc angle must be in (0, 180] degrees, got " + format_number(a.degrees));
+    if (!(a.max_side_degrees >= 0.01))
+      fail(a.line,
+           "arc maximum segment angle must be at least 0.01 degrees (FEMM's minimum), got " +
+               format_number(a.max_side_degrees));
+    const int boundary = check_boundary_use(a.marker, a.line);
+    if (boundary >= 0 && file.boundaries[boundary].type == 0) has_prescribed = true;
+    std::vector<mesh::Point> pieces;
+    append_arc(pieces, problem.geometry.points[a.n0], problem.geometry.points[a.n1], a.degrees,
+               a.max_side_degrees);
+    int previous = a.n0;
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+      int current = a.n1;
+      if (k + 1 < pieces.size()) {
+        problem.geometry.points.push_back(pieces[k]);
+        current = static_cast<int>(problem.geometry.points.size()) - 1;
+      }
+      problem.geometry.segments.push_back({previous, current, boundary, 0.0});
+      previous = current;
+    }
+  }
+  if (!file.axisymmetric && !has_prescribed)
+    fail(reader.line_number(),
+         "planar model without any prescribed-A boundary: the vector potential is not unique "
+         "(FEMM's default on unmarked edges is dA/dn = 0); add a BdryType 0 boundary");
+
+  // Materials, circuits, regions.
+  std::map<int, int> material_of_block;  // file block index (0-based) -> problem material
+  for (std::size_t i = 0; i < file.circuits.size(); ++i) {
+    const FemCircuit& c = file.circuits[i];
+    if (c.type != 0 && c.type != 1)
+      fail(c.line, "circuit '" + c.name + "': unknown CircuitType " + std::to_string(c.type));
+    problem.circuits.push_back({c.name, c.amps});
+  }
+  std::vector<int> labels_per_circuit(file.circuits.size(), 0);
+  std::map<std::string, int> name_count;
+  for (const FemLabel& l : file.labels)
+    if (l.block > 0 && l.block <= static_cast<int>(file.blocks.size()))
+      ++name_count[file.blocks[l.block - 1].name];
+  std::map<std::string, int> name_seen;
+
+  for (const FemLabel& h : file.holes) {
+    mesh::RegionSeed seed;
+    seed.seed = {h.x * file.unit, h.y * file.unit};
+    seed.name = "hole";
+    seed.hole = true;
+    problem.geometry.regions.push_back(seed);
+    problem.regions.push_back({});
+  }
+  for (const FemLabel& l : file.labels) {
+    mesh::RegionSeed seed;
+    seed.seed = {l.x * file.unit, l.y * file.unit};
+    RegionData data;
+    if (l.block < 0 || l.block > static_cast<int>(file.blocks.size()))
+      fail(l.line, "block type " + std::to_string(l.block) + " does not exist (the file defines " +
+                       std::to_string(file.blocks.size()) + " block properties)");
+    if (l.block == 0) {  // <No Mesh>
+      seed.name = "no_mesh";
+      seed.hole = true;
+      problem.geometry.regions.push_back(seed);
+      problem.regions.push_back(data);
+      continue;
+    }
+    if (l.external != 0)
+      fail(l.line,
+           "block label in an external region (Kelvin transformation) is not supported; "
+           "rheomag provides its own open boundary for .toml cases");
+    const FemBlock& block = file.blocks[l.block - 1];
+    const std::string block_where =
+        source + ":" + std::to_string(block.line) + ": block '" + block.name + "'";
+    if (block.h_c != 0.0)
+      fail(block.line,
+           "block '" + block.name + "': permanent magnets (H_c not 0) are not supported");
+    if (block.j != 0.0)
+      fail(block.line, "block '" + block.name +
+                           "': a source current density J in the material "
+                           "is not supported; drive the region through a circuit instead");
+    if (block.lam_type == 1 || block.lam_type == 2 ||
+        (block.lam_type == 0 && block.lam_fill != 1.0))
+      fail(block.line, "block '" + block.name + "': laminated materials are not supported");
+    auto found = material_of_block.find(l.block - 1);
+    if (found == material_of_block.end()) {
+      Material m;
+      m.name = block.name;
+      m.source = "FEMM file " + source + ", block '" + block.name + "'";
+      m.conductivity = block.sigma * 1e6;  // MS/m -> S/m
+      if (!block.bh.empty()) {
+        m.bh = checked_bh_table(block.bh, block_where);
+      } else {
+        if (block.mu_x != block.mu_y)
+          fail(block.line, "block '" + block.name +
+                               "': anisotropic permeability (Mu_x != Mu_y) "
+                               "is not supported");
+        if (!(block.mu_x > 0.0))
+          fail(block.line, "block '" + block.name + "': Mu_x must be positive");
+        m.mu_r = block.mu_x;
+      }
+      found =
+          material_of_block.emplace(l.block - 1, static_cast<int>(problem.materials.size())).first;
+      problem.materials.push_back(m);
+    }
+    data.material = found->second;
+    if (l.circuit < 0 || l.circuit > static_cast<int>(file.circuits.size()))
+      fail(l.line, "circuit number " + std::to_string(l.circuit) + " does not exist");
+    if (l.circuit > 0) {
+      const FemCircuit& c = file.circuits[l.circuit - 1];
+      if (l.turns == 0) fail(l.line, "block label in circuit '" + c.name + "' has 0 turns");
+      data.circuit = l.circuit - 1;
+      data.turns = l.turns;
+      if (c.type == 0) {
+        if (++labels_per_circuit[l.circuit - 1] > 1)
+          fail(l.line, "parallel circuit '" + c.name +
+                           "' (CircuitType 0) feeds more than one "
+                           "block: the current split needs a voltage-driven solve; use a series "
+                           "circuit (CircuitType 1) with turns per block");
+        if (l.turns != 1)
+          fail(l.line, "parallel circuit '" + c.name + "' (CircuitType 0) with " +
+                           std::to_string(l.turns) +
+                           " turns: a parallel circuit is a solid "
+                           "conductor; use a series circuit for a winding");
+      }
+    }
+    seed.name = block.name;
+    if (name_count[block.name] > 1) seed.name += "_" + std::to_string(++name_seen[block.name]);
+    seed.mesh_size = l.size > 0 ? femm_mesh_size_to_edge(l.size * file.unit) : 0.0;
+    problem.geometry.regions.push_back(seed);
+    problem.regions.push_back(data);
+  }
+  if (file.labels.empty()) fail(reader.line_number(), "the model has no block labels");
+  return problem;
+}
+
+Problem read_femm_file(const std::filesystem::path& path) {
+  return parse_femm(read_input_file(path.string()), path.string());
+}
+
+}  // namespace rheomag::cases

@@ -1,0 +1,57 @@
+#pragma once
+// The materials library (cases/materials/*.toml) and the reader of material tables shared by
+// library files and inline [[material]] tables of case files.
+
+#include <toml++/toml.h>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "case/problem.hpp"
+#include "case/toml_section.hpp"
+
+namespace rheomag::cases {
+
+/// A library material: its magnetic data plus the raw [rheology] table (read by the fluid link).
+struct LibraryMaterial {
+  Material magnetic;
+  std::optional<toml::table> rheology;  ///< present for MR fluids
+  std::string file;                     ///< the file it came from
+};
+
+/// Material names compare case-insensitively, ignoring spaces, '-' and '_' ("AISI 1010" =
+/// "aisi-1010" = "aisi1010"); this is that normal form.
+std::string normalised_material_name(std::string_view name);
+
+/// Checks a B-H table given as (B [T], H [A/m]) pairs: at least 2 points, B and H strictly
+/// increasing; (0, 0) is prepended when the table does not start there. InputError otherwise.
+std::vector<BhPoint> checked_bh_table(const std::vector<std::pair<double, double>>& pairs,
+                                      const std::string& where);
+
+/// Reads a material table (keys name, source, uncertainty, mu_r, bh, conductivity, rheology).
+LibraryMaterial read_material(const TomlSection& section);
+
+/// All materials of one directory of TOML files, looked up by name.
+class MaterialLibrary {
+ public:
+  /// Loads every *.toml file of `directory` (in file-name order); InputError on a bad file.
+  static MaterialLibrary load(const std::filesystem::path& directory);
+  /// The bundled library (RHEOMAG_MATERIALS_DIR), loaded once.
+  static const MaterialLibrary& standard();
+
+  /// Adds (or replaces, by name) one material.
+  void add(LibraryMaterial material);
+  /// The material of that name, nullptr if absent.
+  const LibraryMaterial* find(std::string_view name) const;
+  /// The material of that name; InputError "<where>: unknown material ..." with the closest name.
+  const LibraryMaterial& get(std::string_view name, const std::string& where) const;
+  /// Names of all materials.
+  std::vector<std::string> names() const;
+
+ private:
+  std::vector<LibraryMaterial> materials_;
+};
+
+}  // namespace rheomag::cases

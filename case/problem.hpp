@@ -1,0 +1,81 @@
+#pragma once
+// A magnetostatic problem: geometry, materials per region, coils and boundary conditions.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mesh/pslg.hpp"
+
+namespace rheomag::cases {
+
+/// Planar (A_z, per unit depth scaled by `depth`) or axisymmetric (A_phi about the z axis).
+enum class Symmetry { planar, axisymmetric };
+
+/// One (B, H) sample of a magnetisation curve [T, A/m].
+struct BhPoint {
+  double b = 0.0;
+  double h = 0.0;
+};
+
+/// A magnetic material: linear (relative permeability) or nonlinear (B-H table).
+struct Material {
+  std::string name;
+  double mu_r = 1.0;          ///< relative permeability when `bh` is empty
+  std::vector<BhPoint> bh;    ///< B-H table, B ascending from (0, 0); empty = linear
+  double conductivity = 0.0;  ///< electrical conductivity [S/m] (for eddy-current estimates)
+  std::string source;         ///< where the data come from
+};
+
+/// A series circuit driving one or more coil regions.
+struct Circuit {
+  std::string name;
+  double current = 0.0;  ///< [A]
+};
+
+/// Kinds of boundary condition on marked PSLG segments.
+enum class BoundaryKind {
+  prescribed_a,  ///< Dirichlet A = value
+  mixed,         ///< Robin: nu0 dA/dn + c0 A = c1 (FEMM "mixed")
+};
+
+/// A boundary condition referenced by Segment::boundary.
+struct BoundaryCondition {
+  std::string name;
+  BoundaryKind kind = BoundaryKind::prescribed_a;
+  double a_value = 0.0;  ///< prescribed A [Wb/m]
+  double c0 = 0.0;       ///< mixed: coefficient [1/(H)] as in FEMM (A/(Wb) per m^2)
+  double c1 = 0.0;       ///< mixed: constant term
+};
+
+/// Material, coil and gap data of one region (index matches Pslg::regions).
+struct RegionData {
+  int material = -1;   ///< index into Problem::materials
+  int circuit = -1;    ///< index into Problem::circuits, -1 = no coil
+  double turns = 0.0;  ///< coil turns in this region (sign gives the winding direction)
+};
+
+/// The outer boundary of the computational domain.
+enum class OuterBoundary {
+  none,       ///< the PSLG already contains the outer boundary (e.g. FEMM import)
+  open,       ///< automatic semicircle (axisymmetric) / circle (planar) with an asymptotic
+              ///< (dipole-decay) Robin condition: an open boundary
+  dirichlet,  ///< automatic semicircle/circle with A = 0
+};
+
+/// Everything needed to mesh and solve one magnetostatic problem.
+struct Problem {
+  Symmetry symmetry = Symmetry::axisymmetric;
+  double depth = 1.0;  ///< planar only: length in the third direction [m]
+  mesh::Pslg geometry;
+  std::vector<RegionData> regions;  ///< parallel to geometry.regions
+  std::vector<Material> materials;
+  std::vector<Circuit> circuits;
+  std::vector<BoundaryCondition> boundaries;
+  OuterBoundary outer = OuterBoundary::open;
+  double outer_radius_factor = 5.0;  ///< automatic outer radius = factor * bounding radius
+  int min_gap_elements = 4;          ///< elements across every fluid gap
+  int order = 2;                     ///< Lagrange order, 1 or 2
+};
+
+}  // namespace rheomag::cases

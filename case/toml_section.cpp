@@ -1,0 +1,212 @@
+// Checked access to TOML tables with file:line:key error messages.
+
+#include "case/toml_section.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace rheomag::cases {
+
+std::string toml_location(const std::string& file, const toml::source_region& where) {
+  if (where.begin.line == 0) return file;
+  return file + ":" + std::to_string(where.begin.line);
+}
+
+std::string format_number(double value) {
+  std::ostringstream out;
+  out.precision(12);
+  out << value;
+  return out.str();
+}
+
+TomlSection::TomlSection(const toml::table& table, std::string path, std::string file)
+    : table_(&table), path_(std::move(path)), file_(std::move(file)) {}
+
+std::string TomlSection::key_path(std::string_view key) const {
+  return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+}
+
+std::string TomlSection::where(std::string_view key) const {
+  const toml::node* n = node(key);
+  const toml::source_region region = n ? n->source() : table_->source();
+  return toml_location(file_, region) + ": " + key_path(key);
+}
+
+std::string TomlSection::where() const {
+  return toml_location(file_, table_->source()) + ": " + (path_.empty() ? "(top level)" : path_);
+}
+
+void TomlSection::fail(std::string_view key, const std::string& message) const {
+  throw InputError(where(key) + ": " + message);
+}
+
+void TomlSection::allow_only(const std::vector<std::string_view>& known) const {
+  for (auto&& [key, value] : *table_) {
+    const std::string_view name = key.str();
+    if (std::find(known.begin(), known.end(), name) != known.end()) continue;
+    std::string message =
+        toml_location(file_, key.source().begin.line ? key.source() : value.source()) +
+        ": unknown key '" + key_path(name) + "'";
+    const std::string suggestion = closest_key(name, known);
+    if (!suggestion.empty())
+      message += "; did you mean '" + key_path(suggestion) + "'?";
+    else {
+      message += "; expected one of:";
+      for (std::string_view k : known) message += " " + std::string(k);
+    }
+    throw InputError(message);
+  }
+}
+
+bool TomlSection::has(std::string_view key) const {
+  return table_->contains(key);
+}
+
+const toml::node* TomlSection::node(std::string_view key) const {
+  return table_->get(key);
+}
+
+std::optional<double> TomlSection::number(std::string_view key) const {
+  const toml::node* n = node(key);
+  if (!n) return std::nullopt;
+  double value = 0.0;
+  if (auto i = n->value_exact<int64_t>())
+    value = static_cast<double>(*i);
+  else if (auto f = n->value_exact<double>())
+    value = *f;
+  else
+    fail(key, "expected a number");
+  if (!std::isfinite(value)) fail(key, "expected a finite number, got " + format_number(value));
+  return value;
+}
+
+double TomlSection::number_or(std::string_view key, double fallback) const {
+  return number(key).value_or(fallback);
+}
+
+double TomlSection::positive(std::string_view key) const {
+  const std::optional<double> value = number(key);
+  if (!value) fail(key, "missing; expected a positive number");
+  if (*value <= 0.0) fail(key, "expected a positive number, got " + format_number(*value));
+  return *value;
+}
+
+double TomlSection::positive_or(std::string_view key, double fallback) const {
+  return has(key) ? positive(key) : fallback;
+}
+
+double TomlSection::non_negative_or(std::string_view key, double fallback) const {
+  const std::optional<double> value = number(key);
+  if (!value) return fallback;
+  if (*value < 0.0) fail(key, "expected a number >= 0, got " + format_number(*value));
+  return *value;
+}
+
+long long TomlSection::integer_or(std::string_view key, long long fallback) const {
+  const toml::node* n = node(key);
+  if (!n) return fallback;
+  if (auto i = n->value_exact<int64_t>()) return *i;
+  fail(key, "expected an integer");
+}
+
+std::optional<std::string> TomlSection::string(std::string_view key) const {
+  const toml::node* n = node(key);
+  if (!n) return std::nullopt;
+  if (auto s = n->value_exact<std::string>()) return *s;
+  fail(key, "expected a string");
+}
+
+std::string TomlSection::required_string(std::string_view key) const {
+  std::optional<std::string> value = string(key);
+  if (!value) fail(key, "missing; expected a string");
+  if (value->empty()) fail(key, "expected a non-empty string");
+  return *value;
+}
+
+bool TomlSection::boolean_or(std::string_view key, bool fallback) const {
+  const toml::node* n = node(key);
+  if (!n) return fallback;
+  if (auto b = n->value_exact<bool>()) return *b;
+  fail(key, "expected true or false");
+}
+
+std::vector<std::pair<double, double>> TomlSection::pairs(std::string_view key) const {
+  std::vector<std::pair<double, double>> result;
+  const toml::node* n = node(key);
+  if (!n) return result;
+  const toml::array* rows = n->as_array();
+  if (!rows) fail(key, "expected a list of [x, y] pairs");
+  for (std::size_t i = 0; i < rows->size(); ++i) {
+    const toml::array* row = (*rows)[i].as_array();
+    const std::string item = "item " + std::to_string(i + 1);
+    if (!row || row->size() != 2) fail(key, item + ": expected a pair [x, y]");
+    double xy[2] = {0.0, 0.0};
+    for (std::size_t k = 0; k < 2; ++k) {
+      const toml::node& v = (*row)[k];
+      if (auto iv = v.value_exact<int64_t>())
+        xy[k] = static_cast<double>(*iv);
+      else if (auto fv = v.value_exact<double>())
+        xy[k] = *fv;
+      else
+        fail(key, item + ": expected numbers");
+      if (!std::isfinite(xy[k])) fail(key, item + ": expected finite numbers");
+    }
+    result.emplace_back(xy[0], xy[1]);
+  }
+  return result;
+}
+
+std::optional<TomlSection> TomlSection::table(std::string_view key) const {
+  const toml::node* n = node(key);
+  if (!n) return std::nullopt;
+  const toml::table* t = n->as_table();
+  if (!t) fail(key, "expected a table");
+  return TomlSection(*t, key_path(key), file_);
+}
+
+std::vector<TomlSection> TomlSection::table_array(std::string_view key) const {
+  std::vector<TomlSection> result;
+  const toml::node* n = node(key);
+  if (!n) return result;
+  const toml::array* a = n->as_array();
+  if (!a) fail(key, "expected an array of tables ([[" + std::string(key) + "]])");
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const toml::table* t = (*a)[i].as_table();
+    if (!t) fail(key, "item " + std::to_string(i + 1) + ": expected a table");
+    result.emplace_back(*t, key_path(key) + "[" + std::to_string(i + 1) + "]", file_);
+  }
+  return result;
+}
+
+toml::table parse_toml(std::string_view text, const std::string& file) {
+  try {
+    return toml::parse(text, file);
+  } catch (const toml::parse_error& e) {
+    const auto& begin = e.source().begin;
+    throw InputError(file + ":" + std::to_string(begin.line) + ":" + std::to_string(begin.column) +
+                     ": TOML syntax error: " + std::string(e.description()));
+  }
+}
+
+std::string read_input_file(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) throw InputError(path + ": is a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(path + ": cannot read file");
+  return text.str();
+}
+
+toml::table parse_toml_file(const std::string& path) {
+  return parse_toml(read_input_file(path), path);
+}
+
+}  // namespace rheomag::cases

@@ -1,0 +1,235 @@
+// Ceres fit of rig parameters through the stiff simulation; the Jacobian is a forward difference
+// in the scaled parameters (log for positive physical constants).
+
+#include "diagnose/diagnose_fit.hpp"
+
+#include <ceres/ceres.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <thread>
+
+#include "core/error.hpp"
+
+namespace rheomag::diagnose {
+
+namespace {
+
+double to_internal(const ParamDef& d, double v) {
+  return d.log_scale ? std::log(v / d.nominal) : v / d.typical;
+}
+double to_value(const ParamDef& d, double z) {
+  return d.log_scale ? d.nominal * std::exp(z) : z * d.typical;
+}
+
+/// Residuals (model - measured) / output scale on the masked samples, as a Ceres cost.
+class SimulationCost : public ceres::CostFunction {
+ public:
+  SimulationCost(const DiagnosisModel& model, const std::vector<Effect>& effects,
+                 const std::vector<ParamDef>& layout, const std::vector<bool>& mask, double scale,
+                 int threads)
+      : model_(model), effects_(effects), layout_(layout), scale_(scale), threads_(threads) {
+    const auto n = model.measured().size();
+    for (std::size_t k = 0; k < n; ++k)
+      if (mask.empty() || mask[k]) index_.push_back(k);
+    set_num_residuals(static_cast<int>(index_.size()));
+    mutable_parameter_block_sizes()->push_back(static_cast<int>(layout.size()));
+  }
+
+  /// Residual vector at internal parameters z; false if the simulation fails.
+  bool residuals_at(const double* z, double* r) const {
+    std::vector<double> values(layout_.size());
+    for (std::size_t j = 0; j < layout_.size(); ++j) values[j] = to_value(layout_[j], z[j]);
+    std::vector<double> y;
+    try {
+      y = model_.predict(effects_, values);
+    } catch (const std::exception&) {
+      return false;
+    }
+    const auto& m = model_.measured();
+    for (std::size_t i = 0; i < index_.size(); ++i) {
+      r[i] = (y[index_[i]] - m[index_[i]]) / scale_;
+      if (!std::isfinite(r[i])) return false;
+    }
+    return true;
+  }
+
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    const double* z = parameters[0];
+    if (!residuals_at(z, residuals)) return false;
+    if (jacobians && jacobians[0]) {
+      // One simulation per column; the columns are independent and share the threads.
+      const std::size_t p = layout_.size();
+      const std::size_t workers = std::min<std::size_t>(std::max(threads_, 1), p);
+      std::vector<char> ok(p, 1);
+      auto columns = [&](std::size_t first) {
+        for (std::size_t j = first; j < p; j += workers)
+          ok[j] = jacobian_column(z, residuals, j, jacobians[0]);
+      };
+      std::vector<std::thread> pool;
+      for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(columns, w);
+      columns(0);
+      for (auto& t : pool) t.join();
+      if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return false;
+    }
+    return true;
+  }
+
+  /// Forward (or, where the model fails, backward) difference column j of the Jacobian.
+  bool jacobian_column(const double* z, const double* residuals, std::size_t j,
+                       double* jacobian) const {
+    const std::size_t p = layout_.size(), m = index_.size();
+    std::vector<double> zz(z, z + p), r1(m);
+    const double h = 1e-4;
+    zz[j] = z[j] + h;
+    double sign = 1.0;
+    if (!residuals_at(zz.data(), r1.data())) {
+      zz[j] = z[j] - h;
+      sign = -1.0;
+      if (!residuals_at(zz.data(), r1.data())) return false;
+    }
+    for (std::size_t i = 0; i < m; ++i) jacobian[i * p + j] = sign * (r1[i] - residuals[i]) / h;
+    return true;
+  }
+
+ private:
+  const DiagnosisModel& model_;
+  std::vector<Effect> effects_;
+  std::vector<ParamDef> layout_;
+  std::vector<std::size_t> index_;
+  double scale_;
+  int threads_ = 1;
+};
+
+double output_scale(const std::vector<double>& y) {
+  double mean = 0.0;
+  for (double v : y) mean += v;
+  mean /= static_cast<double>(y.size());
+  double s = 0.0;
+  for (double v : y) s += (v - mean) * (v - mean);
+  return std::max(std::sqrt(s / static_cast<double>(y.size())), 1e-300);
+}
+
+}  // namespace
+
+double masked_sse(const std::vector<double>& measured, const std::vector<double>& prediction,
+                  const std::vector<bool>& mask) {
+  double s = 0.0;
+  for (std::size_t k = 0; k < measured.size(); ++k)
+    if (mask.empty() || mask[k]) s += (prediction[k] - measured[k]) * (prediction[k] - measured[k]);
+  return s;
+}
+
+ModelFit fit_model(const DiagnosisModel& model, const std::vector<Effect>& effects,
+                   const std::vector<double>& start, const FitSettings& settings) {
+  ModelFit fit;
+  fit.effects = effects;
+  fit.layout = model.layout(effects);
+  const std::size_t p = fit.layout.size();
+  if (start.size() != p) throw InputError("diagnose: internal parameter count mismatch");
+  std::vector<double> z(p), lo(p), hi(p);
+  for (std::size_t j = 0; j < p; ++j) {
+    const auto& d = fit.layout[j];
+    lo[j] = to_internal(d, d.lower);
+    hi[j] = to_internal(d, d.upper);
+    z[j] = std::clamp(to_internal(d, std::clamp(start[j], d.lower, d.upper)), lo[j], hi[j]);
+  }
+  const double scale = output_scale(model.measured());
+  auto* cost =
+      new SimulationCost(model, effects, fit.layout, settings.mask, scale, settings.threads);
+  ceres::Problem problem;
+  problem.AddResidualBlock(cost, nullptr, z.data());
+  for (std::size_t j = 0; j < p; ++j) {
+    problem.SetParameterLowerBound(z.data(), static_cast<int>(j), lo[j]);
+    problem.SetParameterUpperBound(z.data(), static_cast<int>(j), hi[j]);
+  }
+  ceres::Solver::Options options;
+  options.minimizer_type = ceres::TRUST_REGION;
+  options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+  options.linear_solver_type = ceres::DENSE_QR;
+  options.max_num_iterations = settings.max_iterations;
+  options.function_tolerance = 1e-7;
+  options.parameter_tolerance = 1e-7;
+  options.logging_type = ceres::SILENT;
+  options.num_threads = 1;
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &problem, &summary);
+  fit.converged = summary.termination_type == ceres::CONVERGENCE;
+
+  fit.values.resize(p);
+  for (std::size_t j = 0; j < p; ++j) fit.values[j] = to_value(fit.layout[j], z[j]);
+  try {
+    fit.prediction = model.predict(effects, fit.values);
+  } catch (const std::exception& e) {
+    throw ConvergenceError(std::string("diagnose: the model cannot be simulated: ") + e.what());
+  }
+  fit.sse = masked_sse(model.measured(), fit.prediction, settings.mask);
+  fit.samples =
+      settings.mask.empty()
+          ? model.measured().size()
+          : static_cast<std::size_t>(std::count(settings.mask.begin(), settings.mask.end(), true));
+
+  // Standard errors from the Jacobian at the optimum: cov = s^2 (J^T J)^+ in internal units.
+  fit.standard_errors.assign(p, std::numeric_limits<double>::quiet_NaN());
+  const int m = cost->num_residuals();
+  std::vector<double> r(m), jac(static_cast<std::size_t>(m) * p);
+  const double* params[] = {z.data()};
+  double* jacs[] = {jac.data()};
+  if (settings.standard_errors && m > static_cast<int>(p) &&
+      cost->Evaluate(params, r.data(), jacs)) {
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> J(
+        jac.data(), m, static_cast<int>(p));
+    const double s2 = fit.sse / (scale * scale) / static_cast<double>(m - static_cast<int>(p));
+    Eigen::MatrixXd info = J.transpose() * J;
+    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(info);
+    if (cod.rank() == static_cast<int>(p)) {
+      const Eigen::MatrixXd cov = s2 * cod.pseudoInverse();
+      for (std::size_t j = 0; j < p; ++j) {
+        const double sz = std::sqrt(std::max(cov(j, j), 0.0));
+        fit.standard_errors[j] =
+            fit.layout[j].log_scale ? fit.values[j] * sz : fit.layout[j].typical * sz;
+      }
+    }
+  }
+  return fit;
+}
+
+std::vector<double> grid_start(const DiagnosisModel& model, const std::vector<Effect>& effects,
+                               std::vector<double> start, double* best_sse, int threads) {
+  const auto layout = model.layout(effects);
+  const std::size_t j = layout.size() - model.effect_params(effects.back()).size();
+  const auto& d = layout[j];
+  std::vector<double> grid;
+  for (double v = d.lower * 3.0; v <= d.upper; v *= 10.0) grid.push_back(v);
+  std::vector<double> sse(grid.size(), std::numeric_limits<double>::infinity());
+  const std::size_t workers = std::min<std::size_t>(std::max(threads, 1), grid.size());
+  auto score = [&](std::size_t first) {
+    auto values = start;
+    for (std::size_t g = first; g < grid.size(); g += workers) {
+      values[j] = grid[g];
+      try {
+        sse[g] = masked_sse(model.measured(), model.predict(effects, values), {});
+      } catch (const std::exception&) {
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(score, w);
+  score(0);
+  for (auto& t : pool) t.join();
+  double best = std::numeric_limits<double>::infinity();
+  double best_value = start[j];
+  for (std::size_t g = 0; g < grid.size(); ++g)
+    if (sse[g] < best) {
+      best = sse[g];
+      best_value = grid[g];
+    }
+  start[j] = best_value;
+  if (best_sse) *best_sse = best;
+  return start;
+}
+
+}  // namespace rheomag::diagnose

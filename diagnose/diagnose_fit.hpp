@@ -1,0 +1,48 @@
+#pragma once
+// Bounded least-squares fit (Ceres, Levenberg-Marquardt) of a DiagnosisModel's parameters to the
+// measured output, on all samples or on a mask (for held-out validation).
+
+#include <vector>
+
+#include "diagnose/diagnose_model.hpp"
+
+namespace rheomag::diagnose {
+
+/// A fitted model: the effects, the parameter values in SI and their standard errors.
+struct ModelFit {
+  std::vector<Effect> effects;
+  std::vector<ParamDef> layout;
+  std::vector<double> values;           ///< SI, in the order of layout
+  std::vector<double> standard_errors;  ///< SI; NaN where the Jacobian does not identify it
+  std::vector<double> prediction;       ///< free-run output over the whole recording
+  double sse = 0.0;                     ///< sum of squared residuals on the fitted samples
+  std::size_t samples = 0;              ///< number of fitted samples
+  bool converged = false;
+};
+
+/// Options of fit_model.
+struct FitSettings {
+  int max_iterations = 25;      ///< 0: only evaluate (and give standard errors) at the start
+  std::vector<bool> mask;       ///< samples to fit; all when empty
+  int threads = 1;              ///< threads sharing the Jacobian's columns (one simulation each)
+  bool standard_errors = true;  ///< compute them (one more Jacobian) or leave them NaN
+};
+
+/// Fits `effects` on top of the baseline, starting from `start` (SI values in the order of
+/// model.layout(effects); clamped into the bounds). Throws ConvergenceError if the model cannot
+/// be simulated even at the start.
+ModelFit fit_model(const DiagnosisModel& model, const std::vector<Effect>& effects,
+                   const std::vector<double>& start, const FitSettings& settings = {});
+
+/// Sum of squared residuals of `prediction` on the samples of `mask` (all when empty).
+double masked_sse(const std::vector<double>& measured, const std::vector<double>& prediction,
+                  const std::vector<bool>& mask);
+
+/// Best start for `effects.back()`'s first parameter: a decade grid over its bounds with the
+/// other values held at `start`; returns `start` with that parameter replaced and, in
+/// `best_sse` when given, the squared error there. The grid points share `threads` threads.
+std::vector<double> grid_start(const DiagnosisModel& model, const std::vector<Effect>& effects,
+                               std::vector<double> start, double* best_sse = nullptr,
+                               int threads = 1);
+
+}  // namespace rheomag::diagnose

@@ -1,0 +1,250 @@
+// HTML report with inline SVG plots, traces CSV and JSON of a diagnosis.
+
+#include "diagnose/diagnose_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+
+namespace rheomag::diagnose {
+
+namespace {
+
+struct Series {
+  std::string label;
+  std::string color;
+  const std::vector<double>* values;
+};
+
+struct Band {
+  double t0, t1;
+};
+
+std::string num(double v, int digits = 4) {
+  std::ostringstream o;
+  o.precision(digits);
+  o << v;
+  return o.str();
+}
+
+std::string escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '&')
+      out += "&amp;";
+    else
+      out += c;
+  }
+  return out;
+}
+
+/// A line plot of `series` against t over [ta, tb] with shaded bands, as an inline SVG.
+std::string svg_plot(const std::string& title, const std::string& ylabel,
+                     const std::vector<double>& t, const std::vector<Series>& series,
+                     const std::vector<Band>& bands, double ta, double tb) {
+  const double W = 900, H = 280, L = 80, R = 20, T = 30, B = 40;
+  std::size_t a = std::lower_bound(t.begin(), t.end(), ta) - t.begin();
+  std::size_t b = std::upper_bound(t.begin(), t.end(), tb) - t.begin();
+  if (b <= a + 1) {
+    a = 0;
+    b = t.size();
+  }
+  double lo = 1e300, hi = -1e300;
+  for (const auto& s : series)
+    for (std::size_t k = a; k < b; ++k) {
+      lo = std::min(lo, (*s.values)[k]);
+      hi = std::max(hi, (*s.values)[k]);
+    }
+  if (!(hi > lo)) {
+    hi = lo + 1.0;
+    lo -= 1.0;
+  }
+  const double pad = 0.05 * (hi - lo);
+  lo -= pad;
+  hi += pad;
+  const double t0 = t[a], t1 = t[b - 1];
+  auto X = [&](double tt) { return L + (tt - t0) / std::max(t1 - t0, 1e-300) * (W - L - R); };
+  auto Y = [&](double v) { return T + (hi - v) / (hi - lo) * (H - T - B); };
+  std::ostringstream o;
+  o << "<svg xmlns='http://www.w3.org/2000/svg' width='" << W << "' height='" << H
+    << "' viewBox='0 0 " << W << ' ' << H << "' font-family='sans-serif' font-size='12'>\n";
+  o << "<rect x='0' y='0' width='" << W << "' height='" << H << "' fill='white'/>\n";
+  for (const auto& band : bands) {
+    const double x0 = X(std::max(band.t0, t0)), x1 = X(std::min(band.t1, t1));
+    if (x1 > x0)
+      o << "<rect x='" << x0 << "' y='" << T << "' width='" << x1 - x0 << "' height='" << H - T - B
+        << "' fill='#f4c7c3' opacity='0.6'/>\n";
+  }
+  o << "<rect x='" << L << "' y='" << T << "' width='" << W - L - R << "' height='" << H - T - B
+    << "' fill='none' stroke='#444'/>\n";
+  for (int i = 0; i <= 4; ++i) {
+    const double v = lo + (hi - lo) * i / 4.0, tt = t0 + (t1 - t0) * i / 4.0;
+    o << "<text x='" << L - 6 << "' y='" << Y(v) + 4 << "' text-anchor='end'>" << num(v, 3)
+      << "</text><line x1='" << L << "' x2='" << W - R << "' y1='" << Y(v) << "' y2='" << Y(v)
+      << "' stroke='#ddd'/>\n";
+    o << "<text x='" << X(tt) << "' y='" << H - B + 16 << "' text-anchor='middle'>" << num(tt, 4)
+      << "</text>\n";
+  }
+  o << "<text x='" << (L + W - R) / 2 << "' y='" << H - 6
+    << "' text-anchor='middle'>t [s]</text>\n";
+  o << "<text x='14' y='" << (T + H - B) / 2 << "' transform='rotate(-90 14 " << (T + H - B) / 2
+    << ")' text-anchor='middle'>" << escape(ylabel) << "</text>\n";
+  o << "<text x='" << L << "' y='18' font-weight='bold'>" << escape(title) << "</text>\n";
+  const std::size_t stride = std::max<std::size_t>(1, (b - a) / 2000);
+  double legend_x = W - R - 10;
+  // The first series (the measurement) is drawn first, wide and grey, so the models show on top.
+  for (auto it = series.begin(); it != series.end(); ++it) {
+    o << "<polyline fill='none' stroke='" << it->color << "' stroke-width='"
+      << (it == series.begin() ? 2.5 : 1.3) << "' points='";
+    for (std::size_t k = a; k < b; k += stride) o << X(t[k]) << ',' << Y((*it->values)[k]) << ' ';
+    o << "'/>\n";
+    legend_x -= 8.0 * static_cast<double>(it->label.size()) + 30;
+    o << "<line x1='" << legend_x << "' x2='" << legend_x + 18 << "' y1='14' y2='14' stroke='"
+      << it->color << "' stroke-width='3'/><text x='" << legend_x + 22 << "' y='18'>"
+      << escape(it->label) << "</text>\n";
+  }
+  o << "</svg>\n";
+  return o.str();
+}
+
+}  // namespace
+
+std::string diagnosis_traces_csv(const Diagnosis& d) {
+  std::ostringstream o;
+  o.precision(10);
+  o << "t,measured,baseline,final,residual_baseline,residual_final\n";
+  for (std::size_t k = 0; k < d.t.size(); ++k) {
+    const double y = d.measured[k], b = d.baseline.prediction[k], f = d.final_fit.prediction[k];
+    o << d.t[k] << ',' << y << ',' << b << ',' << f << ',' << y - b << ',' << y - f << '\n';
+  }
+  return o.str();
+}
+
+std::string diagnosis_html(const Diagnosis& d) {
+  const std::size_t n = d.t.size();
+  std::vector<double> r0(n), r1(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    r0[k] = d.measured[k] - d.baseline.prediction[k];
+    r1[k] = d.measured[k] - d.final_fit.prediction[k];
+  }
+  std::vector<Band> bands;
+  for (const auto& w : d.mismatch) bands.push_back({w.t_start, w.t_end});
+  const std::string unit = d.output_column == "force"     ? "N"
+                           : d.output_column == "current" ? "A"
+                                                          : "Pa";
+  const std::string ylabel = d.output_column + " [" + unit + "]";
+  std::ostringstream o;
+  o << "<!DOCTYPE html>\n<html><head><meta charset='utf-8'><title>rheomag diagnosis</title>\n"
+    << "<style>body{font-family:sans-serif;margin:20px;max-width:960px}"
+       "table{border-collapse:collapse}td,th{border:1px solid #bbb;padding:3px 8px;"
+       "text-align:left}h2{margin-top:28px}.ok{color:#1a7f37}.warn{color:#b35900}</style>"
+       "</head><body>\n";
+  o << "<h1>Diagnosis of " << escape(d.recording) << "</h1>\n";
+  o << "<p>Output explained: <b>" << escape(d.output_column) << "</b>. Baseline FIT "
+    << num(d.baseline_fit_percent, 4) << " % &rarr; final FIT <b>" << num(d.final_fit_percent, 4)
+    << " %</b>.</p>\n";
+  o << "<h2>Missing physics</h2>\n";
+  if (d.findings.empty()) {
+    o << "<p class='ok'>None: the calibrated baseline explains the recording "
+         "(no candidate passed both the held-out and the BIC test).</p>\n";
+  } else {
+    o << "<table><tr><th>#</th><th>effect</th><th>parameters (SI, &plusmn; 1 s.e.)</th>"
+         "<th>FIT after</th><th>evidence</th></tr>\n";
+    int i = 1;
+    for (const auto& f : d.findings) {
+      o << "<tr><td>" << i++ << "</td><td><b>" << effect_name(f.effect) << "</b>";
+      if (!f.ambiguous_with.empty()) {
+        o << "<br><span class='warn'>or equally:";
+        for (Effect a : f.ambiguous_with) o << ' ' << effect_name(a);
+        o << "</span>";
+      }
+      o << "</td><td>";
+      for (std::size_t j = 0; j < f.params.size(); ++j)
+        o << escape(f.param_names[j]) << " = " << num(f.params[j]) << " &plusmn; "
+          << num(f.standard_errors[j], 2) << "<br>";
+      o << "</td><td>" << num(f.fit_percent, 4) << " %</td><td>" << escape(f.evidence);
+      if (!f.separating_measurement.empty())
+        o << "<br><i>To separate: " << escape(f.separating_measurement) << "</i>";
+      o << "</td></tr>\n";
+    }
+    o << "</table>\n";
+  }
+  o << "<h2>Measured, baseline and final model</h2>\n"
+    << svg_plot("measured vs baseline vs final", ylabel, d.t,
+                {{"measured", "#999", &d.measured},
+                 {"baseline", "#d62728", &d.baseline.prediction},
+                 {"final", "#1f77b4", &d.final_fit.prediction}},
+                {}, d.t.front(), d.t.back());
+  o << "<h2>Residual before and after (mismatch windows shaded)</h2>\n"
+    << svg_plot("residual", ylabel, d.t,
+                {{"baseline residual", "#d62728", &r0}, {"final residual", "#1f77b4", &r1}}, bands,
+                d.t.front(), d.t.back());
+  if (!d.mismatch.empty()) {
+    const auto& w = d.mismatch.front();
+    const double margin = 0.5 * (w.t_end - w.t_start);
+    o << "<h2>Zoom on the worst window (" << num(w.t_start) << "&ndash;" << num(w.t_end) << " s, "
+      << escape(w.regime) << ", " << num(100 * w.share, 3) << " % of the residual energy)</h2>\n"
+      << svg_plot("worst window", ylabel, d.t,
+                  {{"measured", "#999", &d.measured},
+                   {"baseline", "#d62728", &d.baseline.prediction},
+                   {"final", "#1f77b4", &d.final_fit.prediction}},
+                  {{w.t_start, w.t_end}}, w.t_start - margin, w.t_end + margin);
+  }
+  o << "<h2>Mismatch windows of the baseline</h2>\n<table><tr><th>t start [s]</th><th>t end "
+       "[s]</th><th>share of residual</th><th>regime</th></tr>\n";
+  for (const auto& w : d.mismatch)
+    o << "<tr><td>" << num(w.t_start) << "</td><td>" << num(w.t_end) << "</td><td>"
+      << num(100 * w.share, 3) << " %</td><td>" << escape(w.regime) << "</td></tr>\n";
+  o << "</table>\n<h2>Residual statistics of the baseline</h2>\n<p>Lag-1 autocorrelation "
+    << num(d.baseline_stats.lag1_autocorrelation, 3)
+    << ", Ljung&ndash;Box Q(20) = " << num(d.baseline_stats.ljung_box_q, 4) << " ("
+    << (d.baseline_stats.white ? "white" : "not white")
+    << "); after: " << (d.final_stats.white ? "white" : "not white")
+    << ". Measured output lags the baseline by " << num(1e3 * d.baseline_stats.output_lag, 3)
+    << " ms.</p>\n<table><tr><th>signal</th>"
+       "<th>peak correlation with residual</th><th>lag [s]</th></tr>\n";
+  for (const auto& c : d.baseline_stats.correlations)
+    o << "<tr><td>" << escape(c.signal) << "</td><td>" << num(c.value, 3) << "</td><td>"
+      << num(c.lag, 3) << "</td></tr>\n";
+  o << "</table>\n<table><tr><th>loop (input, residual)</th><th>opening</th>"
+       "<th>slow/fast</th><th>rate-independent</th></tr>\n";
+  for (const auto& l : d.baseline_stats.loops)
+    o << "<tr><td>" << escape(l.input) << "</td><td>" << num(l.opening, 3) << "</td><td>"
+      << num(l.slow_fast_ratio, 3) << "</td><td>" << (l.rate_independent ? "yes" : "no")
+      << "</td></tr>\n";
+  o << "</table>\n<h2>Candidates tried</h2>\n<table><tr><th>step</th><th>effect</th><th>FIT "
+       "%</th><th>&Delta;BIC</th></tr>\n";
+  for (const auto& c : d.candidates)
+    o << "<tr><td>" << c.step + 1 << "</td><td>" << effect_name(c.effect) << "</td><td>"
+      << (c.screened ? std::string("screened out") : num(c.fit_percent, 4)) << "</td><td>"
+      << num(c.delta_bic, 4) << "</td></tr>\n";
+  o << "</table>\n";
+  if (!d.notes.empty()) {
+    o << "<h2>Notes</h2><ul>";
+    for (const auto& note : d.notes) o << "<li>" << escape(note) << "</li>";
+    o << "</ul>\n";
+  }
+  o << "</body></html>\n";
+  return o.str();
+}
+
+void write_diagnosis_outputs(const Diagnosis& d, const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError("--out " + dir + ": cannot create the folder (" + ec.message() + ")");
+  const std::filesystem::path base(dir);
+  write_file_atomically(base / "diagnosis.json", diagnosis_json(d).dump(2) + "\n");
+  write_file_atomically(base / "report.html", diagnosis_html(d));
+  write_file_atomically(base / "traces.csv", diagnosis_traces_csv(d));
+}
+
+}  // namespace rheomag::diagnose

@@ -1,0 +1,538 @@
+// Forward selection of missing physics on top of the calibrated baseline.
+
+#include "diagnose/diagnose_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <thread>
+
+#include "core/error.hpp"
+#include "lumped/metrics.hpp"
+
+namespace rheomag::diagnose {
+
+namespace {
+
+constexpr std::size_t kMinSamples = 100;
+
+double bic(double sse, std::size_t n, std::size_t k) {
+  const double nn = static_cast<double>(n);
+  return nn * std::log(std::max(sse, 1e-300) / nn) + static_cast<double>(k) * std::log(nn);
+}
+
+double fit_percent_of(const std::vector<double>& y, const std::vector<double>& yhat) {
+  return lumped::fit_percent(y, yhat);
+}
+
+bool has_effect(const ModelFit& f, Effect e) {
+  return std::find(f.effects.begin(), f.effects.end(), e) != f.effects.end();
+}
+
+/// True if `c` was fitted at the first step (not screened out) and did not make the fit clearly
+/// worse (BIC up by more than `margin`): a candidate masked by a larger effect then still gets its
+/// second chance.
+bool worth_retrying(const std::vector<CandidateScore>& scores, Effect c, double margin) {
+  for (const auto& s : scores)
+    if (s.step == 0 && s.effect == c) return !s.screened && s.delta_bic > -margin;
+  return false;
+}
+
+/// Candidates whose output fits tie (within 5 % of the best's improvement) are told apart by
+/// the measured coil current when the recording has one that the model does not take as input:
+/// coil inductance delays that current, field and fluid lags do not. Returns the tied candidates
+/// that the current rules out (their current error at least twice the best's).
+template <class Tried>
+std::vector<Effect> prefer_by_measured_current(const DiagnosisModel& model,
+                                               std::vector<Tried>& tried) {
+  const auto& rec = model.recording();
+  if (tried.size() < 2 || model.output_column() == "current" || !rec.columns.count("current") ||
+      std::find(rec.meta.drive.begin(), rec.meta.drive.end(), "current") != rec.meta.drive.end())
+    return {};
+  const double best = tried.front().fit.sse;
+  const double spread = 0.05 * std::abs(best);
+  std::size_t tied = 1;
+  while (tied < tried.size() && tried[tied].fit.sse - best < spread) ++tied;
+  if (tied < 2) return {};
+  const auto& measured = rec.column("current");
+  std::vector<double> current_sse(tied);
+  for (std::size_t i = 0; i < tied; ++i) {
+    try {
+      const auto c = model.predict_column(tried[i].fit.effects, tried[i].fit.values, "current");
+      current_sse[i] = masked_sse(measured, c, {});
+    } catch (const std::exception&) {
+      current_sse[i] = std::numeric_limits<double>::infinity();
+    }
+  }
+  const auto best_i = static_cast<std::size_t>(
+      std::min_element(current_sse.begin(), current_sse.end()) - current_sse.begin());
+  std::vector<Effect> ruled_out;
+  for (std::size_t i = 0; i < tied; ++i)
+    if (current_sse[i] > 2.0 * current_sse[best_i]) ruled_out.push_back(tried[i].effect);
+  if (current_sse[best_i] < 0.5 * current_sse[0]) std::swap(tried[0], tried[best_i]);
+  return ruled_out;
+}
+
+/// Rejects recordings that cannot support a diagnosis, saying why.
+void check_informative(const DiagnosisModel& model) {
+  const auto& rec = model.recording();
+  const std::string name = rec.csv_path.empty() ? std::string("recording") : rec.csv_path;
+  if (rec.t.size() < kMinSamples)
+    throw InputError(name + ": too short to diagnose: " + std::to_string(rec.t.size()) +
+                     " samples, at least " + std::to_string(kMinSamples) + " needed");
+  const auto& y = model.measured();
+  const auto [lo, hi] = std::minmax_element(y.begin(), y.end());
+  const double span = *hi - *lo;
+  if (!(span > 1e-9 * std::max(std::abs(*hi), std::abs(*lo))) || span == 0.0)
+    throw InputError(name + ": the output column '" + model.output_column() +
+                     "' is flat; nothing to diagnose");
+  bool any_moving = false;
+  for (const auto& c : rec.meta.drive) {
+    auto it = rec.columns.find(c);
+    if (it == rec.columns.end()) continue;
+    const auto [a, b] = std::minmax_element(it->second.begin(), it->second.end());
+    if (*b > *a) any_moving = true;
+  }
+  if (!any_moving)
+    throw InputError(name +
+                     ": every drive column is constant; the recording is too flat to "
+                     "diagnose");
+}
+
+std::vector<bool> block_mask(std::size_t n, int blocks, bool even) {
+  std::vector<bool> mask(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto b = static_cast<int>(k * static_cast<std::size_t>(blocks) / n);
+    mask[k] = (b % 2 == 0) == even;
+  }
+  return mask;
+}
+
+/// Held-out squared error: fit on even blocks, score on odd, and the other way round (the two
+/// folds on two threads when `threads` > 1).
+double heldout_sse(const DiagnosisModel& model, const ModelFit& full, int blocks, int iterations,
+                   int threads) {
+  double fold_sse[2] = {0.0, 0.0};
+  std::exception_ptr failure[2];
+  auto fold = [&](int k) {
+    try {
+      FitSettings s;
+      s.mask = block_mask(model.measured().size(), blocks, k == 0);
+      s.max_iterations = iterations;
+      s.threads = threads > 1 ? std::max(threads / 2, 1) : 1;
+      s.standard_errors = false;
+      const auto f = fit_model(model, full.effects, full.values, s);
+      auto other = s.mask;
+      other.flip();
+      fold_sse[k] = masked_sse(model.measured(), f.prediction, other);
+    } catch (...) {
+      failure[k] = std::current_exception();
+    }
+  };
+  if (threads > 1) {
+    std::thread second(fold, 1);
+    fold(0);
+    second.join();
+  } else {
+    fold(0);
+    fold(1);
+  }
+  for (const auto& e : failure)
+    if (e) std::rethrow_exception(e);
+  return fold_sse[0] + fold_sse[1];
+}
+
+std::string fmt(double v, int digits = 3) {
+  std::ostringstream o;
+  o.precision(digits);
+  o << v;
+  return o.str();
+}
+
+double regime_share(const std::vector<MismatchWindow>& windows, const std::string& regime) {
+  double s = 0.0;
+  for (const auto& w : windows)
+    if (w.regime == regime) s += w.share;
+  return s;
+}
+
+std::string evidence_for(Effect e, const Diagnosis& d, const ModelFit& fit) {
+  std::ostringstream o;
+  const auto& st = d.baseline_stats;
+  const double lag_ms = 1e3 * st.output_lag;
+  auto value = [&](const std::string& name) {
+    for (std::size_t j = 0; j < fit.layout.size(); ++j)
+      if (fit.layout[j].name == name) return fit.values[j];
+    return 0.0;
+  };
+  switch (e) {
+    case Effect::compressibility:
+      o << "the output lags the baseline by " << fmt(lag_ms) << " ms; "
+        << fmt(100 * regime_share(d.mismatch, "flow reversal"), 2)
+        << " % of the residual energy sits at flow reversals, where a chamber with "
+        << fmt(value("air_volume")) << " m^3 of air per chamber must be compressed before "
+        << "pressure can build";
+      break;
+    case Effect::fluid_inertia:
+      o << "the residual follows the piston acceleration (";
+      if (lag_ms < 0.0)
+        o << "the output leads the baseline by " << fmt(-lag_ms) << " ms";
+      else
+        o << "the output lags the baseline by " << fmt(lag_ms)
+          << " ms overall, which inertia alone would not do";
+      o << "); an inertance of " << fmt(value("inertance")) << " Pa s^2/m^3 explains it";
+      break;
+    case Effect::eddy_currents:
+    case Effect::mr_response_time: {
+      const double edges = regime_share(d.mismatch, "current rising edge") +
+                           regime_share(d.mismatch, "current falling edge");
+      o << "the output lags the baseline by " << fmt(lag_ms) << " ms"
+        << (edges >= 0.5 ? ", mostly at current edges (" : " (") << fmt(100 * edges, 2)
+        << " % of the residual energy in rising/falling-edge windows); a first-order lag of "
+        << fmt(1e3 * value("time_constant")) << " ms between current and yield stress removes it";
+      break;
+    }
+    case Effect::coil_inductance:
+      o << "the response lags the coil voltage at its edges (output " << fmt(lag_ms)
+        << " ms behind the baseline); an inductance of " << fmt(value("inductance"))
+        << " H (L/R = " << fmt(1e3 * value("inductance") / d.final_fit.values.front()) << " ms"
+        << ") explains it";
+      break;
+    case Effect::coil_heating:
+      o << "the residual drifts slowly (it follows the integral of the coil drive); a coil "
+           "warming with thermal resistance "
+        << fmt(value("thermal_resistance")) << " K/W and time constant "
+        << fmt(value("thermal_time_constant")) << " s loses current as R(T) rises";
+      break;
+    case Effect::friction: {
+      double opening = 0.0, ratio = 0.0;
+      for (const auto& l : st.loops)
+        if (l.input == "velocity") opening = l.opening, ratio = l.slow_fast_ratio;
+      o << "the residual steps with the sign of the velocity (loop opening " << fmt(opening, 2)
+        << " of the residual rms, " << fmt(ratio, 2) << " as wide at slow as at fast rates: "
+        << (ratio > 0.5 ? "rate-independent" : "rate-dependent, so friction explains only part")
+        << "); a Coulomb force of " << fmt(value("coulomb_force")) << " N explains it";
+      break;
+    }
+    case Effect::magnetic_hysteresis: {
+      double memory = 0.0;
+      for (const auto& l : st.loops)
+        if (l.input == "current" || l.input == "current_cmd") memory = l.memory_opening;
+      const double a = value("a"), dd = value("d");
+      o << "the output at one current depends on where the current came from: the residual "
+           "signed by the direction of the last current change averages "
+        << fmt(memory, 2)
+        << " of its rms, a loop in (current, residual) that stays open while the current "
+           "rests (rate-independent, unlike a lag, which settles); a Duhem field with a = "
+        << fmt(a) << " 1/A, d = " << fmt(dd, 2)
+        << " (loop half width (1 - d)/a = " << fmt(a > 0 ? (1.0 - dd) / a : 0.0)
+        << " A) explains it";
+      break;
+    }
+  }
+  if (!st.correlations.empty())
+    o << "; strongest residual correlation: " << st.correlations.front().signal << " ("
+      << fmt(st.correlations.front().value, 2) << ")";
+  return o.str();
+}
+
+std::string separating_measurement(Effect a, Effect b) {
+  auto pair = [&](Effect x, Effect y) { return (a == x && b == y) || (a == y && b == x); };
+  if (pair(Effect::eddy_currents, Effect::mr_response_time))
+    return "both are one first-order lag between coil current and yield stress; measure the "
+           "flux in the gap (search coil or Hall probe): eddy currents delay the flux behind the "
+           "current, a slow MR response does not; or repeat with a laminated core";
+  if (pair(Effect::compressibility, Effect::fluid_inertia))
+    return "change the frequency: a compliance lag shrinks with stiffer fluid and grows with the "
+           "pressure swing, inertia grows with the square of the frequency";
+  if (pair(Effect::coil_inductance, Effect::eddy_currents) ||
+      pair(Effect::coil_inductance, Effect::mr_response_time))
+    return "record the coil current: inductance delays the current itself, field and fluid lags "
+           "do not";
+  if (a == Effect::magnetic_hysteresis || b == Effect::magnetic_hysteresis)
+    return "hold each current level longer and approach it from above and from below: a lag "
+           "settles within a few time constants, magnetic hysteresis leaves a lasting offset "
+           "that depends on the approach (also at DC); a search coil on the core shows the "
+           "flux loop directly";
+  return "excite the device at several frequencies and amplitudes: the two effects scale "
+         "differently with rate and amplitude";
+}
+
+}  // namespace
+
+Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options) {
+  const auto run_start = std::chrono::steady_clock::now();
+  auto stage_start = run_start;
+  auto since = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
+  auto num = [](double v) {
+    std::ostringstream text;
+    text << v;
+    return text.str();
+  };
+  // A finished stage: its name and its own time in the detail.
+  auto stage = [&](const std::string& what) {
+    if (!options.progress) return;
+    const auto now = std::chrono::steady_clock::now();
+    options.progress(
+        {what, 0.0, 0.0, since(run_start),
+         "in " + num(std::chrono::duration<double>(now - stage_start).count()) + " s"});
+    stage_start = now;
+  };
+  DiagnosisModel model(rec);
+  check_informative(model);
+  Diagnosis d;
+  d.recording = rec.csv_path;
+  d.output_column = model.output_column();
+  d.t = rec.t;
+  d.measured = model.measured();
+  const auto& y = model.measured();
+  const std::size_t n = y.size();
+
+  // 1. Baseline: calibrate the static parameters.
+  std::vector<double> start;
+  for (const auto& p : model.static_params()) start.push_back(p.nominal);
+  FitSettings calib;
+  calib.max_iterations = 50;
+  calib.threads = options.threads;
+  d.baseline = fit_model(model, {}, start, calib);
+  d.baseline_fit_percent = fit_percent_of(y, d.baseline.prediction);
+  stage("baseline calibration");
+
+  // 2. Locate.
+  std::vector<double> residual(n);
+  for (std::size_t k = 0; k < n; ++k) residual[k] = y[k] - d.baseline.prediction[k];
+  d.mismatch = locate_mismatch(model.recording(), residual);
+  d.baseline_stats =
+      residual_statistics(model.recording(), rec.meta.drive, y, d.baseline.prediction);
+
+  // 3. Name: forward selection.
+  ModelFit current = d.baseline;
+  FitSettings settings;
+  settings.max_iterations = options.max_iterations;
+  settings.threads = options.threads;
+  settings.standard_errors = false;  // only the final model's are reported
+  double held_current = -1.0;        // held-out error of `current`, once known
+  const auto candidates = model.applicable_effects();
+  for (int step = 0; step < options.max_effects; ++step) {
+    struct Tried {
+      Effect effect;
+      ModelFit fit;
+      double delta_bic;
+    };
+    std::vector<Tried> tried;
+    const double bic_now = bic(current.sse, n, current.values.size());
+    const bool first_step = step == 0;
+    for (Effect c : candidates) {
+      if (std::find(current.effects.begin(), current.effects.end(), c) != current.effects.end())
+        continue;
+      // After the first step, candidates that made the fit clearly worse alone are not retried.
+      if (!first_step && !worth_retrying(d.candidates, c, options.bic_margin)) continue;
+      // Eddy currents and MR response time are the same first-order lag block in the rig model:
+      // when neither is in yet, the second is the first's fit under another name.
+      if (c == Effect::eddy_currents && !has_effect(current, Effect::mr_response_time)) {
+        auto twin = std::find_if(tried.begin(), tried.end(), [](const auto& t) {
+          return t.effect == Effect::mr_response_time;
+        });
+        if (twin != tried.end()) {
+          d.candidates.push_back(
+              {c, step, fit_percent_of(y, twin->fit.prediction), twin->delta_bic});
+          tried.push_back({c, twin->fit, twin->delta_bic});
+          tried.back().fit.effects.back() = c;
+          continue;
+        }
+      }
+      auto effects = current.effects;
+      effects.push_back(c);
+      auto s = current.values;
+      for (const auto& p : model.effect_params(c)) s.push_back(p.nominal);
+      try {
+        const auto started = std::chrono::steady_clock::now();
+        double grid_sse = 0.0;
+        s = grid_start(model, effects, s, &grid_sse, options.threads);
+        // Screening: a candidate that lowers the error at no decade of its parameter (the
+        // others held at the current fit) is scored there and not fitted.
+        if (!(grid_sse < current.sse)) {
+          const double db = bic_now - bic(grid_sse, n, s.size());
+          d.candidates.push_back({c, step, 0.0, db, true});
+          if (options.progress)
+            options.progress({"step " + std::to_string(step + 1) + " " + effect_name(c), 0.0, 0.0,
+                              since(run_start), "screened out (no decade of its parameter helps)"});
+          continue;
+        }
+        auto f = fit_model(model, effects, s, settings);
+        const double db = bic_now - bic(f.sse, n, f.values.size());
+        if (options.progress)
+          options.progress({"step " + std::to_string(step + 1) + " " + effect_name(c), 0.0, 0.0,
+                            since(run_start),
+                            "dBIC " + num(db) + " in " + num(since(started)) + " s"});
+        d.candidates.push_back({c, step, fit_percent_of(y, f.prediction), db});
+        tried.push_back({c, std::move(f), db});
+      } catch (const ConvergenceError&) {
+        d.notes.push_back("candidate " + effect_name(c) + " could not be simulated at step " +
+                          std::to_string(step + 1));
+      }
+    }
+    stage("step " + std::to_string(step + 1) + " candidates");
+    if (tried.empty()) break;
+    std::stable_sort(tried.begin(), tried.end(),
+                     [](const Tried& a, const Tried& b) { return a.delta_bic > b.delta_bic; });
+    const auto ruled_out = prefer_by_measured_current(model, tried);
+    const auto& best = tried.front();
+    if (best.delta_bic <= options.bic_margin) break;
+    const int cv_iterations = std::max(options.max_iterations / 3, 5);
+    const double held_now = held_current >= 0.0 ? held_current
+                                                : heldout_sse(model, current, options.blocks,
+                                                              cv_iterations, options.threads);
+    const double held_new =
+        heldout_sse(model, best.fit, options.blocks, cv_iterations, options.threads);
+    stage("held-out check of " + effect_name(best.effect));
+    const double gain = held_now > 0 ? 1.0 - held_new / held_now : 0.0;
+    if (gain < options.heldout_margin) {
+      d.notes.push_back(effect_name(best.effect) + " lowered BIC by " + fmt(best.delta_bic) +
+                        " but cut the held-out error by only " + fmt(100 * gain, 2) +
+                        " %: not accepted");
+      break;
+    }
+    Finding f;
+    f.effect = best.effect;
+    f.fit_percent = fit_percent_of(y, best.fit.prediction);
+    f.delta_bic = best.delta_bic;
+    f.heldout_gain = gain;
+    const double reduction = current.sse - best.fit.sse;
+    for (std::size_t i = 1; i < tried.size(); ++i)
+      if (std::find(ruled_out.begin(), ruled_out.end(), tried[i].effect) != ruled_out.end() &&
+          tried[i].effect != best.effect) {
+        f.ruled_out_by_current.push_back(tried[i].effect);
+      } else if (tried[i].fit.sse - best.fit.sse < 0.05 * reduction) {
+        f.ambiguous_with.push_back(tried[i].effect);
+        // One measurement per distinct way of telling a tied candidate apart.
+        const auto how = separating_measurement(best.effect, tried[i].effect);
+        if (f.separating_measurement.find(how) == std::string::npos)
+          f.separating_measurement += (f.separating_measurement.empty() ? "" : "; ") + how;
+      }
+    d.findings.push_back(std::move(f));
+    current = best.fit;
+    held_current = held_new;
+  }
+
+  // Re-fit all accepted effects together. The last forward step already fitted them all jointly;
+  // with one effect whose fit converged there is nothing left to polish.
+  if (!d.findings.empty()) {
+    const bool polish = d.findings.size() > 1 || !current.converged;
+    FitSettings final_settings;
+    final_settings.max_iterations = polish ? 2 * options.max_iterations : 0;
+    final_settings.threads = options.threads;
+    auto refit = fit_model(model, current.effects, current.values, final_settings);
+    if (refit.sse <= current.sse || !polish) current = std::move(refit);
+  }
+  stage("joint re-fit");
+  d.final_fit = current;
+  d.final_fit_percent = fit_percent_of(y, current.prediction);
+  d.final_stats = residual_statistics(model.recording(), rec.meta.drive, y, current.prediction);
+  for (std::size_t k = 0; k < n; ++k) residual[k] = y[k] - current.prediction[k];
+  d.final_mismatch = locate_mismatch(model.recording(), residual);
+  std::size_t offset = model.static_params().size();
+  for (auto& f : d.findings) {
+    for (const auto& p : model.effect_params(f.effect)) {
+      f.param_names.push_back(p.name);
+      f.params.push_back(current.values[offset]);
+      f.standard_errors.push_back(current.standard_errors[offset]);
+      ++offset;
+    }
+    f.evidence = evidence_for(f.effect, d, current);
+    if (!f.ruled_out_by_current.empty()) {
+      f.evidence += "; the output alone fits as well with";
+      for (Effect e : f.ruled_out_by_current) f.evidence += " " + effect_name(e);
+      f.evidence += ", but the measured coil current rules that out";
+    }
+  }
+  if (!model.chamber_volume_given() && !d.findings.empty())
+    d.notes.push_back(
+        "[rig] chamber_volume not given: compressibility assumed 2e-5 m^3 of oil "
+        "per chamber");
+  if (model.constant_field())
+    d.notes.push_back("the recording has no coil input: the field is taken as constant");
+  if (d.findings.empty() && !d.baseline_stats.white)
+    d.notes.push_back("the residual is not white but no candidate explains it significantly");
+  return d;
+}
+
+nlohmann::json diagnosis_json(const Diagnosis& d) {
+  using nlohmann::json;
+  auto params_of = [](const ModelFit& f, std::size_t from, std::size_t to) {
+    json p = json::object();
+    for (std::size_t j = from; j < to; ++j) p[f.layout[j].name] = f.values[j];
+    return p;
+  };
+  const std::size_t n_static = d.baseline.values.size();
+  json out;
+  out["recording"] = d.recording;
+  out["baseline"] = {{"fit_percent", d.baseline_fit_percent},
+                     {"params", params_of(d.baseline, 0, n_static)}};
+  out["mismatch"] = json::array();
+  for (const auto& w : d.mismatch)
+    out["mismatch"].push_back({{"t_start", w.t_start},
+                               {"t_end", w.t_end},
+                               {"share_of_residual", w.share},
+                               {"regime", w.regime}});
+  out["missing_physics"] = json::array();
+  for (const auto& f : d.findings) {
+    json p = json::object(), u = json::object();
+    for (std::size_t j = 0; j < f.params.size(); ++j) {
+      p[f.param_names[j]] = f.params[j];
+      u[f.param_names[j]] =
+          std::isfinite(f.standard_errors[j]) ? json(f.standard_errors[j]) : json();
+    }
+    if (f.effect == Effect::compressibility && !f.params.empty())
+      p["hydraulic_capacitance"] = f.params[0] / 1e5;  // isothermal air at the 1e5 Pa precharge
+    json e = {{"name", effect_name(f.effect)}, {"params", p},
+              {"standard_errors", u},          {"fit_percent", f.fit_percent},
+              {"delta_bic", f.delta_bic},      {"heldout_gain", f.heldout_gain},
+              {"evidence", f.evidence}};
+    if (!f.ruled_out_by_current.empty()) {
+      e["ruled_out_by_measured_current"] = json::array();
+      for (Effect a : f.ruled_out_by_current)
+        e["ruled_out_by_measured_current"].push_back(effect_name(a));
+    }
+    if (!f.ambiguous_with.empty()) {
+      e["ambiguous_with"] = json::array();
+      for (Effect a : f.ambiguous_with) e["ambiguous_with"].push_back(effect_name(a));
+      e["separating_measurement"] = f.separating_measurement;
+    }
+    out["missing_physics"].push_back(e);
+  }
+  out["final"] = {{"fit_percent", d.final_fit_percent},
+                  {"params", params_of(d.final_fit, 0, d.final_fit.values.size())}};
+  json stats;
+  stats["whiteness"] = {{"lag1_autocorrelation", d.baseline_stats.lag1_autocorrelation},
+                        {"ljung_box_q", d.baseline_stats.ljung_box_q},
+                        {"white", d.baseline_stats.white}};
+  stats["correlations"] = json::array();
+  for (const auto& c : d.baseline_stats.correlations)
+    stats["correlations"].push_back({{"signal", c.signal}, {"value", c.value}, {"lag", c.lag}});
+  stats["loops"] = json::array();
+  for (const auto& l : d.baseline_stats.loops)
+    stats["loops"].push_back({{"input", l.input},
+                              {"opening", l.opening},
+                              {"slow_fast_ratio", l.slow_fast_ratio},
+                              {"rate_independent", l.rate_independent}});
+  stats["output_lag"] = d.baseline_stats.output_lag;
+  stats["final_white"] = d.final_stats.white;
+  out["residual_statistics"] = stats;
+  out["candidates"] = json::array();
+  for (const auto& c : d.candidates)
+    out["candidates"].push_back(
+        {{"name", effect_name(c.effect)},
+         {"step", c.step + 1},
+         {"fit_percent", c.screened ? nlohmann::json() : nlohmann::json(c.fit_percent)},
+         {"screened", c.screened},
+         {"delta_bic", c.delta_bic}});
+  out["notes"] = d.notes;
+  return out;
+}
+
+}  // namespace rheomag::diagnose

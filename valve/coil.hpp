@@ -1,0 +1,45 @@
+#pragma once
+// Electrical side of a valve coil: wire gauge (magnetostatics/wire_gauge.hpp), resistance at
+// temperature, copper fill, current density, power I^2 R and time constant L/R.
+
+#include <string>
+
+#include "case/wire_gauge.hpp"
+
+namespace rheomag::valve {
+
+/// The wire-gauge table lives in the case layer (the case needs it for turns before the solve).
+using cases::awg_diameter;
+using cases::wire_diameter;
+
+/// Resistivity of annealed copper [Ohm m] at `temperature` [deg C]: 1.7241e-8 (100 % IACS at
+/// 20 C) x (1 + 0.00393 (T - 20)).
+double copper_resistivity(double temperature);
+
+/// What is known about a coil before the field solve.
+struct CoilSpec {
+  double turns = 0.0;             ///< number of turns
+  double wire_diameter = 0.0;     ///< bare copper diameter [m]
+  double mean_turn_length = 0.0;  ///< 2 pi x mean winding radius [m]
+  double window_area = 0.0;       ///< winding cross-section (meridian plane) [m^2]
+  double temperature = 20.0;      ///< winding temperature [deg C]
+};
+
+/// Coil quantities at one current.
+struct CoilProperties {
+  double turns = 0.0;
+  double wire_length = 0.0;      ///< [m]
+  double resistance = 0.0;       ///< at CoilSpec::temperature [Ohm]
+  double copper_fill = 0.0;      ///< copper area / window area
+  double current_density = 0.0;  ///< in the copper [A/m^2]
+  double power = 0.0;            ///< I^2 R [W]
+  double inductance = 0.0;       ///< the given (e.g. FE secant) inductance [H]
+  double time_constant = 0.0;    ///< L / R [s]
+};
+
+/// Coil quantities at `current` [A] with inductance `inductance` [H] (from the field solve).
+/// Throws InputError for non-positive turns, diameter, turn length or window area, or a copper
+/// fill above the pi/4 of perfect square packing of bare wire.
+CoilProperties coil_properties(const CoilSpec& spec, double current, double inductance);
+
+}  // namespace rheomag::valve
