@@ -50,21 +50,22 @@ vtkSmartPointer<vtkDataArray> to_vtk(const VtuFields::Field& field) {
   return array;
 }
 
-vtkNew<vtkUnstructuredGrid> make_grid(const Mesh& mesh) {
+vtkNew<vtkUnstructuredGrid> make_grid(const VtuGrid& in) {
   vtkNew<vtkUnstructuredGrid> grid;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.nodes.size()));
-  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
-    points->SetPoint(static_cast<vtkIdType>(i), mesh.nodes[i].r, mesh.nodes[i].z, 0.0);
+  points->SetNumberOfPoints(static_cast<vtkIdType>(in.points.size()));
+  for (std::size_t i = 0; i < in.points.size(); ++i)
+    points->SetPoint(static_cast<vtkIdType>(i), in.points[i].data());
   grid->SetPoints(points);
-  const int per_cell = mesh.nodes_per_triangle();
-  const int cell_type = mesh.order == 2 ? VTK_QUADRATIC_TRIANGLE : VTK_TRIANGLE;
-  grid->Allocate(static_cast<vtkIdType>(mesh.triangles.size()));
-  vtkIdType ids[6];
-  for (const auto& t : mesh.triangles) {
-    for (int k = 0; k < per_cell; ++k) ids[k] = t[static_cast<std::size_t>(k)];
-    grid->InsertNextCell(cell_type, per_cell, ids);
+  grid->Allocate(static_cast<vtkIdType>(in.cells()));
+  std::vector<vtkIdType> ids(static_cast<std::size_t>(in.nodes_per_cell));
+  for (std::size_t c = 0; c < in.cells(); ++c) {
+    for (int k = 0; k < in.nodes_per_cell; ++k)
+      ids[static_cast<std::size_t>(k)] =
+          in.connectivity[c * static_cast<std::size_t>(in.nodes_per_cell) +
+                          static_cast<std::size_t>(k)];
+    grid->InsertNextCell(in.cell_type, in.nodes_per_cell, ids.data());
   }
   return grid;
 }
@@ -103,24 +104,37 @@ void VtuFields::add_point_vector(std::string name,
 
 void write_vtu(const std::string& path, const Mesh& mesh, const VtuFields& fields,
                const std::vector<std::string>& region_names) {
-  vtkNew<vtkUnstructuredGrid> grid = make_grid(mesh);
+  VtuGrid grid;
+  grid.points.reserve(mesh.nodes.size());
+  for (const Point& p : mesh.nodes) grid.points.push_back({p.r, p.z, 0.0});
+  grid.nodes_per_cell = mesh.nodes_per_triangle();
+  grid.cell_type = mesh.order == 2 ? VTK_QUADRATIC_TRIANGLE : VTK_TRIANGLE;
+  for (const auto& t : mesh.triangles)
+    grid.connectivity.insert(grid.connectivity.end(), t.begin(), t.begin() + grid.nodes_per_cell);
+  grid.region = mesh.region;
+  write_vtu(path, grid, fields, region_names);
+}
+
+void write_vtu(const std::string& path, const VtuGrid& in, const VtuFields& fields,
+               const std::vector<std::string>& region_names) {
+  vtkNew<vtkUnstructuredGrid> grid = make_grid(in);
 
   vtkNew<vtkIntArray> region;
   region->SetName("region");
-  region->SetNumberOfTuples(static_cast<vtkIdType>(mesh.region.size()));
-  for (std::size_t i = 0; i < mesh.region.size(); ++i)
-    region->SetValue(static_cast<vtkIdType>(i), mesh.region[i]);
-  if (mesh.region.size() == mesh.triangles.size()) grid->GetCellData()->AddArray(region);
+  region->SetNumberOfTuples(static_cast<vtkIdType>(in.region.size()));
+  for (std::size_t i = 0; i < in.region.size(); ++i)
+    region->SetValue(static_cast<vtkIdType>(i), in.region[i]);
+  if (in.region.size() == in.cells()) grid->GetCellData()->AddArray(region);
 
   for (const VtuFields::Field& field : fields.fields()) {
     const bool on_cells = field.location == VtuFields::Location::cell;
-    const std::size_t expected = static_cast<std::size_t>(field.components) *
-                                 (on_cells ? mesh.triangles.size() : mesh.nodes.size());
+    const std::size_t expected =
+        static_cast<std::size_t>(field.components) * (on_cells ? in.cells() : in.points.size());
     if (field.values.size() != expected)
       throw std::invalid_argument(
           "write_vtu: field '" + field.name + "' has " + std::to_string(field.values.size()) +
           " values; expected " + std::to_string(expected) + " (" +
-          std::to_string(field.components) + " per " + (on_cells ? "triangle" : "node") + ")");
+          std::to_string(field.components) + " per " + (on_cells ? "cell" : "node") + ")");
     if (field.name == "region")
       throw std::invalid_argument("write_vtu: the field name 'region' is reserved");
     auto array = to_vtk(field);

@@ -44,6 +44,24 @@ class VtuFields {
   std::vector<Field> fields_;
 };
 
+/// A general unstructured grid of one cell type (e.g. tetrahedra of a 3D mesh).
+struct VtuGrid {
+  std::vector<std::array<double, 3>> points;  ///< [m]
+  int cell_type = 0;                          ///< VTK cell type (10 = VTK_TETRA)
+  int nodes_per_cell = 0;
+  std::vector<int> connectivity;  ///< nodes_per_cell point indices per cell
+  std::vector<int> region;        ///< region index per cell
+  /// Number of cells.
+  std::size_t cells() const {
+    return nodes_per_cell > 0 ? connectivity.size() / static_cast<std::size_t>(nodes_per_cell) : 0;
+  }
+};
+
+/// Writes `grid` with cell data "region" plus `fields` (cell fields per cell, point fields per
+/// point) and field data "region_names", atomically, like the triangle-mesh overload below.
+void write_vtu(const std::string& path, const VtuGrid& grid, const VtuFields& fields = {},
+               const std::vector<std::string>& region_names = {});
+
 /// Writes `mesh` with points (r, z, 0), triangles (VTK_TRIANGLE, or VTK_QUADRATIC_TRIANGLE for
 /// order 2, whose node order is the one of mesh.hpp), cell data "region" (region index) plus
 /// `fields`, and field data "region_names". Binary appended XML, written to PATH.tmp and then

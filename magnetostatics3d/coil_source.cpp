@@ -1,0 +1,146 @@
+#include "magnetostatics3d/coil_source.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace rheomag::magnetostatics3d {
+namespace {
+
+/// One coil triangle of the meridian plane with its turn density [turns/m^2].
+struct CoilTriangle {
+  std::array<mesh::Point, 3> v;
+  double density = 0.0;
+};
+
+/// The coil triangles of one circuit, their bounding box and the z of horizontal coil edges.
+struct CircuitCoils {
+  std::vector<CoilTriangle> triangles;
+  double r_max = 0.0, z_min = 0.0, z_max = 0.0;
+  std::vector<std::array<double, 2>> steps;  // (z, largest r) of horizontal boundary edges
+};
+
+/// T_z(r, z) at unit current: sum of density x length of the triangle chord at z right of r.
+double source_tz(const CircuitCoils& coils, double r, double z) {
+  if (z < coils.z_min || z > coils.z_max || r >= coils.r_max) return 0.0;
+  double t = 0.0;
+  for (const CoilTriangle& tri : coils.triangles) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (int k = 0; k < 3; ++k) {
+      const mesh::Point& p = tri.v[k];
+      const mesh::Point& q = tri.v[(k + 1) % 3];
+      if ((z - p.z) * (z - q.z) > 0.0 || p.z == q.z) continue;
+      const double x = p.r + (z - p.z) / (q.z - p.z) * (q.r - p.r);
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
+    }
+    if (hi > lo) t += tri.density * std::max(0.0, hi - std::max(r, lo));
+  }
+  return t;
+}
+
+/// Integral of T_z over the tetrahedron with vertices x (degree-2 rule, `levels` bisections).
+double integrate_tz(const CircuitCoils& coils, const std::array<Eigen::Vector3d, 4>& x,
+                    int levels) {
+  if (levels > 0) {
+    // Eight children by edge midpoints (four corners and the inner octahedron split in four).
+    auto mid = [&](int i, int j) { return 0.5 * (x[i] + x[j]); };
+    const Eigen::Vector3d m01 = mid(0, 1), m02 = mid(0, 2), m03 = mid(0, 3), m12 = mid(1, 2),
+                          m13 = mid(1, 3), m23 = mid(2, 3);
+    const std::array<std::array<Eigen::Vector3d, 4>, 8> children{{{x[0], m01, m02, m03},
+                                                                  {m01, x[1], m12, m13},
+                                                                  {m02, m12, x[2], m23},
+                                                                  {m03, m13, m23, x[3]},
+                                                                  {m01, m02, m03, m13},
+                                                                  {m01, m02, m12, m13},
+                                                                  {m02, m03, m13, m23},
+                                                                  {m02, m12, m13, m23}}};
+    double sum = 0.0;
+    for (const auto& c : children) sum += integrate_tz(coils, c, levels - 1);
+    return sum;
+  }
+  const double volume = std::abs((x[1] - x[0]).dot((x[2] - x[0]).cross(x[3] - x[0]))) / 6.0;
+  constexpr double a = 0.5854101966249685, b = 0.1381966011250105;  // degree-2 4-point rule
+  double sum = 0.0;
+  for (int q = 0; q < 4; ++q) {
+    Eigen::Vector3d p = b * (x[0] + x[1] + x[2] + x[3]) + (a - b) * x[q];
+    sum += source_tz(coils, std::hypot(p[0], p[1]), p[2]);
+  }
+  return 0.25 * volume * sum;
+}
+
+std::vector<CircuitCoils> collect_coils(const cases::Problem& closed, const mesh::Mesh& meridian) {
+  std::vector<CircuitCoils> coils(closed.circuits.size());
+  std::vector<double> area(closed.regions.size(), 0.0);
+  auto vertices = [&](std::size_t e) {
+    const auto& t = meridian.triangles[e];
+    return std::array<mesh::Point, 3>{meridian.nodes[t[0]], meridian.nodes[t[1]],
+                                      meridian.nodes[t[2]]};
+  };
+  for (std::size_t e = 0; e < meridian.triangles.size(); ++e) {
+    const auto v = vertices(e);
+    area[meridian.region[e]] += 0.5 * std::abs((v[1].r - v[0].r) * (v[2].z - v[0].z) -
+                                               (v[2].r - v[0].r) * (v[1].z - v[0].z));
+  }
+  // Edge use count per region: an edge used once is on the region's boundary.
+  std::map<std::array<int, 3>, int> uses;
+  for (std::size_t e = 0; e < meridian.triangles.size(); ++e) {
+    const cases::RegionData& rd = closed.regions[meridian.region[e]];
+    if (rd.circuit < 0 || rd.turns == 0.0) continue;
+    CircuitCoils& c = coils[rd.circuit];
+    const auto v = vertices(e);
+    if (c.triangles.empty()) {
+      c.r_max = -INFINITY;
+      c.z_min = INFINITY;
+      c.z_max = -INFINITY;
+    }
+    c.triangles.push_back({v, rd.turns / area[meridian.region[e]]});
+    for (int k = 0; k < 3; ++k) {
+      c.r_max = std::max(c.r_max, v[k].r);
+      c.z_min = std::min(c.z_min, v[k].z);
+      c.z_max = std::max(c.z_max, v[k].z);
+      int a = meridian.triangles[e][k], b = meridian.triangles[e][(k + 1) % 3];
+      ++uses[{meridian.region[e], std::min(a, b), std::max(a, b)}];
+    }
+  }
+  for (const auto& [key, count] : uses) {
+    const mesh::Point& p = meridian.nodes[key[1]];
+    const mesh::Point& q = meridian.nodes[key[2]];
+    if (count == 1 && p.z == q.z) {
+      coils[closed.regions[key[0]].circuit].steps.push_back({p.z, std::max(p.r, q.r)});
+    }
+  }
+  return coils;
+}
+
+}  // namespace
+
+std::vector<Eigen::VectorXd> circuit_loads(const cases::Problem& closed, const mesh::Mesh& meridian,
+                                           const TetMesh& mesh,
+                                           const std::vector<Eigen::Vector3d>& source_nodes) {
+  const std::vector<CircuitCoils> coils = collect_coils(closed, meridian);
+  std::vector<Eigen::VectorXd> loads;
+  for (const CircuitCoils& c : coils) {
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(mesh.edges.size()));
+    for (int t = 0; t < static_cast<int>(mesh.tets.size()) && !c.triangles.empty(); ++t) {
+      std::array<Eigen::Vector3d, 4> x;
+      double z_lo = INFINITY, z_hi = -INFINITY;
+      for (int k = 0; k < 4; ++k) {
+        x[k] = source_nodes[mesh.tets[t][k]];
+        z_lo = std::min(z_lo, x[k][2]);
+        z_hi = std::max(z_hi, x[k][2]);
+      }
+      if (z_hi < c.z_min || z_lo > c.z_max) continue;
+      const bool jump = std::any_of(c.steps.begin(), c.steps.end(),
+                                    [&](const auto& s) { return s[0] > z_lo && s[0] < z_hi; });
+      const double tz = integrate_tz(c, x, jump ? 2 : 0);
+      if (tz == 0.0) continue;
+      const auto curls = edge_curls(mesh, t);
+      for (int e = 0; e < 6; ++e) f[mesh.tet_edges[t][e]] += curls[e][2] * tz;
+    }
+    loads.push_back(std::move(f));
+  }
+  return loads;
+}
+
+}  // namespace rheomag::magnetostatics3d

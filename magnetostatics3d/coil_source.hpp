@@ -1,0 +1,29 @@
+#pragma once
+// Azimuthal coil currents of a revolved problem as discretely divergence-free edge loads.
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "case/problem.hpp"
+#include "magnetostatics3d/tet_mesh.hpp"
+#include "mesh/mesh.hpp"
+
+namespace rheomag::magnetostatics3d {
+
+/// Edge loads f_ce = integral T_c . curl w_e dV of every circuit c at 1 A, where T_c is a source
+/// field with curl T_c = J_c, the coil current density (turns / meridian area of each coil
+/// region, azimuthal). T_c = T_z(r, z) e_z with T_z(r, z) = sum over the circuit's coil regions
+/// of (N / S) x (length of the part of the horizontal line through (r, z) inside the region at
+/// radius > r): -dT_z/dr = J_phi and n x T is continuous, so curl T = J exactly. Because the load
+/// is the transpose curl of something, it is orthogonal to every discrete gradient: the coil
+/// source is discretely divergence-free whatever the quadrature. The coil regions are taken from
+/// `meridian`, a linear triangle mesh of the closed problem (its triangles tile each region
+/// exactly); integrals over tetrahedra use a degree-2 rule, on 64 sub-tetrahedra where T_z jumps
+/// (across the planes of horizontal coil edges). Also the flux linkage is lambda_c = f_c . a.
+/// `source_nodes` (one per mesh node) are the positions at which T is evaluated: the mesh's own
+/// nodes, or the undeformed ones when the part of the mesh holding the coils was moved rigidly.
+std::vector<Eigen::VectorXd> circuit_loads(const cases::Problem& closed, const mesh::Mesh& meridian,
+                                           const TetMesh& mesh,
+                                           const std::vector<Eigen::Vector3d>& source_nodes);
+
+}  // namespace rheomag::magnetostatics3d

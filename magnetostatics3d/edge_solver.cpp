@@ -1,0 +1,189 @@
+#include "magnetostatics3d/edge_solver.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+#include "magnetostatics/serial_openmp.hpp"
+
+namespace rheomag::magnetostatics3d {
+
+/// R(x) = grad E(x) over the cotree unknowns at fixed currents.
+class EdgeSolver::System : public magnetostatics::NonlinearSystem {
+ public:
+  System(EdgeSolver& solver, Eigen::VectorXd load) : s_(solver), load_(std::move(load)) {}
+  double residual(const Eigen::VectorXd& x, Eigen::VectorXd& r) override {
+    s_.assemble(s_.to_edges(x), &r, false);
+    r -= load_;
+    return r.norm();
+  }
+  void factorize_jacobian(const Eigen::VectorXd& x) override {
+    if (s_.factorized_ && !s_.nonlinear_) return;  // linear: one factorisation for all steps
+    s_.assemble(s_.to_edges(x), nullptr, true);
+    const magnetostatics::SerialOpenMp serial;
+    s_.cholesky_.factorize(s_.tangent_);
+    if (s_.cholesky_.info() != Eigen::Success) {
+      throw ConvergenceError("CHOLMOD could not factorise the 3D tangent (not positive definite)");
+    }
+    s_.factorized_ = true;
+    ++s_.factorizations_;
+  }
+  Eigen::VectorXd solve_jacobian(const Eigen::VectorXd& rhs, double) override {
+    const magnetostatics::SerialOpenMp serial;
+    return s_.cholesky_.solve(rhs);
+  }
+  double energy(const Eigen::VectorXd& x) override {
+    const Eigen::VectorXd a = s_.to_edges(x);
+    std::vector<Eigen::Vector3d> b(s_.mesh_.tets.size());
+    for (std::size_t t = 0; t < b.size(); ++t) b[t] = s_.flux_density(static_cast<int>(t), a);
+    return s_.stored_energy(b) - load_.dot(x);
+  }
+
+ private:
+  EdgeSolver& s_;
+  Eigen::VectorXd load_;  // over the unknowns, at the solve's currents
+};
+
+EdgeSolver::EdgeSolver(const TetMesh& mesh, std::vector<magnetostatics::Reluctivity> laws,
+                       std::vector<int> material_of_region, Eigen::VectorXd fixed_values,
+                       std::vector<Eigen::VectorXd> loads, magnetostatics::NewtonOptions options)
+    : mesh_(mesh),
+      laws_(std::move(laws)),
+      material_of_region_(std::move(material_of_region)),
+      fixed_values_(std::move(fixed_values)),
+      loads_(std::move(loads)),
+      options_(options) {
+  for (int m : material_of_region_) {
+    if (m < 0 || m >= static_cast<int>(laws_.size()))
+      throw InputError("3D mesh: a region has no material");
+    nonlinear_ = nonlinear_ || laws_[m].nonlinear();
+  }
+  dofs_ = tree_cotree_dofs(mesh_);
+  const int n_tets = static_cast<int>(mesh_.tets.size());
+  volume_.resize(n_tets);
+  curl_.resize(n_tets);
+  for (int t = 0; t < n_tets; ++t) {
+    volume_[t] = mesh_.volume(t);
+    curl_[t] = edge_curls(mesh_, t);
+  }
+  // Pattern of the lower triangle over the unknowns, then each element entry's value slot.
+  std::vector<Eigen::Triplet<double, int>> triplets;
+  triplets.reserve(static_cast<std::size_t>(n_tets) * 21);
+  for (int t = 0; t < n_tets; ++t) {
+    for (int i = 0; i < 6; ++i) {
+      const int di = dofs_.dof_of_edge[mesh_.tet_edges[t][i]];
+      for (int j = 0; j < 6 && di >= 0; ++j) {
+        const int dj = dofs_.dof_of_edge[mesh_.tet_edges[t][j]];
+        if (dj >= 0 && dj <= di) triplets.emplace_back(di, dj, 0.0);
+      }
+    }
+  }
+  const int n = dofs_.free_count();
+  tangent_.resize(n, n);
+  tangent_.setFromTriplets(triplets.begin(), triplets.end());
+  tangent_.makeCompressed();
+  slot_.resize(n_tets);
+  for (int t = 0; t < n_tets; ++t) {
+    for (int i = 0; i < 6; ++i) {
+      const int di = dofs_.dof_of_edge[mesh_.tet_edges[t][i]];
+      for (int j = 0; j < 6; ++j) {
+        const int dj = dofs_.dof_of_edge[mesh_.tet_edges[t][j]];
+        int& slot = slot_[t][6 * i + j];
+        slot = -1;
+        if (di < 0 || dj < 0 || dj > di) continue;
+        const int* begin = tangent_.innerIndexPtr() + tangent_.outerIndexPtr()[dj];
+        const int* end = tangent_.innerIndexPtr() + tangent_.outerIndexPtr()[dj + 1];
+        slot = static_cast<int>(std::lower_bound(begin, end, di) - tangent_.innerIndexPtr());
+      }
+    }
+  }
+  if (n > 0) {
+    const magnetostatics::SerialOpenMp serial;
+    cholesky_.analyzePattern(tangent_);
+    if (cholesky_.info() != Eigen::Success)
+      throw ConvergenceError("CHOLMOD symbolic analysis failed for " + std::to_string(n) +
+                             " unknowns");
+  }
+}
+
+Eigen::VectorXd EdgeSolver::to_edges(const Eigen::VectorXd& x) const {
+  Eigen::VectorXd a = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(mesh_.edges.size()));
+  for (std::size_t e = 0; e < mesh_.edges.size(); ++e)
+    if (dofs_.fixed[e]) a[e] = fixed_values_[e];
+  for (int d = 0; d < dofs_.free_count(); ++d) a[dofs_.edge_of_dof[d]] = x[d];
+  return a;
+}
+
+Eigen::Vector3d EdgeSolver::flux_density(int t, const Eigen::VectorXd& a) const {
+  Eigen::Vector3d b = Eigen::Vector3d::Zero();
+  for (int e = 0; e < 6; ++e) b += a[mesh_.tet_edges[t][e]] * curl_[t][e];
+  return b;
+}
+
+double EdgeSolver::stored_energy(const std::vector<Eigen::Vector3d>& b) const {
+  double w = 0.0;
+  for (std::size_t t = 0; t < b.size(); ++t)
+    w += volume_[t] * law(static_cast<int>(t)).energy_density(b[t].squaredNorm());
+  return w;
+}
+
+void EdgeSolver::assemble(const Eigen::VectorXd& a, Eigen::VectorXd* residual, bool tangent) {
+  if (residual) residual->setZero(dofs_.free_count());
+  if (tangent) std::fill(tangent_.valuePtr(), tangent_.valuePtr() + tangent_.nonZeros(), 0.0);
+  for (int t = 0; t < static_cast<int>(mesh_.tets.size()); ++t) {
+    const Eigen::Vector3d b = flux_density(t, a);
+    const double b2 = b.squaredNorm();
+    const magnetostatics::Reluctivity& nu = law(t);
+    const double v = volume_[t], n = nu.nu(b2);
+    const auto& c = curl_[t];
+    if (residual) {
+      for (int i = 0; i < 6; ++i) {
+        const int d = dofs_.dof_of_edge[mesh_.tet_edges[t][i]];
+        if (d >= 0) (*residual)[d] += v * n * b.dot(c[i]);
+      }
+    }
+    if (!tangent) continue;
+    const double dn = 2.0 * nu.dnu_db2(b2);
+    std::array<double, 6> bc;
+    for (int i = 0; i < 6; ++i) bc[i] = b.dot(c[i]);
+    for (int i = 0; i < 6; ++i) {
+      for (int j = 0; j <= i; ++j) {
+        const double k = v * (n * c[i].dot(c[j]) + dn * bc[i] * bc[j]);
+        const int s1 = slot_[t][6 * i + j], s2 = slot_[t][6 * j + i];
+        // One of (i, j), (j, i) is the lower triangle; the diagonal appears once.
+        if (s1 >= 0)
+          tangent_.valuePtr()[s1] += k;
+        else if (s2 >= 0)
+          tangent_.valuePtr()[s2] += k;
+      }
+    }
+  }
+}
+
+EdgeSolution EdgeSolver::solve(const std::vector<double>& currents) {
+  const auto start = std::chrono::steady_clock::now();
+  EdgeSolution sol;
+  sol.currents = currents;
+  const int n = dofs_.free_count();
+  Eigen::VectorXd load_edges = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(mesh_.edges.size()));
+  for (std::size_t c = 0; c < currents.size() && c < loads_.size(); ++c)
+    load_edges += currents[c] * loads_[c];
+  Eigen::VectorXd load(n);
+  for (int d = 0; d < n; ++d) load[d] = load_edges[dofs_.edge_of_dof[d]];
+  System system(*this, load);
+  // Reference of the relative residual: the residual at x = 0 (fixed values and loads).
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(n), r;
+  const double scale = system.residual(x, r);
+  magnetostatics::NewtonOptions options = options_;
+  options.local_iterations = 0;
+  sol.newton = magnetostatics::newton_solve(system, x, scale, options);
+  sol.a = to_edges(x);
+  sol.b.resize(mesh_.tets.size());
+  for (std::size_t t = 0; t < sol.b.size(); ++t)
+    sol.b[t] = flux_density(static_cast<int>(t), sol.a);
+  sol.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return sol;
+}
+
+}  // namespace rheomag::magnetostatics3d

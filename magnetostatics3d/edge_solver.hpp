@@ -1,0 +1,83 @@
+#pragma once
+// Nonlinear 3D magnetostatics with lowest-order Nedelec (edge) elements: the vector potential
+// A is a combination of Whitney edge functions, B = curl A is constant in each tetrahedron.
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <vector>
+
+#include "magnetostatics/newton.hpp"
+#include "magnetostatics/reluctivity.hpp"
+#include "magnetostatics3d/gauge.hpp"
+#include "magnetostatics3d/tet_mesh.hpp"
+
+namespace rheomag::magnetostatics3d {
+
+/// One solution: edge values of A and the flux density per tetrahedron.
+struct EdgeSolution {
+  std::vector<double> currents;    ///< per circuit [A]
+  Eigen::VectorXd a;               ///< line integral of A along every edge [Wb]
+  std::vector<Eigen::Vector3d> b;  ///< B per tetrahedron [T]
+  magnetostatics::NewtonReport newton;
+  double seconds = 0.0;  ///< wall time of the solve
+};
+
+/// Weak form: find A (tangential trace prescribed on condition faces) with
+///   sum_t integral_t nu(|B|^2) B . curl w_e dV = sum_c I_c f_ce   for every cotree edge e,
+/// f_ce = integral T_c . curl w_e dV the load of circuit c at unit current (coil_source.hpp).
+/// Newton with the exact tangent V curl w_i^T (nu + 2 nu' B B^T) curl w_j (symmetric positive
+/// definite for a monotone B-H curve) and a line search on the energy (magnetostatics::newton);
+/// CHOLMOD supernodal Cholesky, symbolic analysis once.
+class EdgeSolver {
+ public:
+  /// `laws` per material, `material_of_region` per mesh region, `fixed_values` per edge (used on
+  /// fixed edges only), `loads` per circuit (per edge).
+  EdgeSolver(const TetMesh& mesh, std::vector<magnetostatics::Reluctivity> laws,
+             std::vector<int> material_of_region, Eigen::VectorXd fixed_values,
+             std::vector<Eigen::VectorXd> loads, magnetostatics::NewtonOptions options = {});
+  EdgeSolver(const EdgeSolver&) = delete;
+  EdgeSolver& operator=(const EdgeSolver&) = delete;
+
+  /// Solves for the given current per circuit [A]. Throws ConvergenceError if Newton fails.
+  EdgeSolution solve(const std::vector<double>& currents);
+
+  const TetMesh& mesh() const { return mesh_; }
+  const EdgeDofs& dofs() const { return dofs_; }
+  /// Load vector of circuit c at unit current (per edge): lambda_c = loads(c) . a.
+  const Eigen::VectorXd& load(int c) const { return loads_[c]; }
+  /// Reluctivity law of tetrahedron t.
+  const magnetostatics::Reluctivity& law(int t) const {
+    return laws_[material_of_region_[mesh_.region[t]]];
+  }
+  /// Flux density of tetrahedron t for edge values a.
+  Eigen::Vector3d flux_density(int t, const Eigen::VectorXd& a) const;
+  /// Numeric Cholesky factorisations so far (one per Newton step of a nonlinear problem).
+  int factorizations() const { return factorizations_; }
+  /// Stored energy sum_t V w(|B|) [J] of the field B per tetrahedron.
+  double stored_energy(const std::vector<Eigen::Vector3d>& b) const;
+
+ private:
+  class System;
+  using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+  Eigen::VectorXd to_edges(const Eigen::VectorXd& x) const;
+  void assemble(const Eigen::VectorXd& a, Eigen::VectorXd* residual, bool tangent);
+
+  const TetMesh& mesh_;
+  std::vector<magnetostatics::Reluctivity> laws_;
+  std::vector<int> material_of_region_;
+  Eigen::VectorXd fixed_values_;
+  std::vector<Eigen::VectorXd> loads_;
+  magnetostatics::NewtonOptions options_;
+  EdgeDofs dofs_;
+  std::vector<double> volume_;
+  std::vector<std::array<Eigen::Vector3d, 6>> curl_;
+  std::vector<std::array<int, 36>> slot_;  // value index in tangent_ of local (i, j), -1 none
+  SparseMatrix tangent_;
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholesky_;
+  bool nonlinear_ = false;
+  bool factorized_ = false;
+  int factorizations_ = 0;
+};
+
+}  // namespace rheomag::magnetostatics3d

@@ -1,0 +1,74 @@
+#include "magnetostatics3d/gauge.hpp"
+
+#include <numeric>
+
+#include "core/error.hpp"
+
+namespace rheomag::magnetostatics3d {
+namespace {
+
+/// Disjoint sets of nodes (union by size, path halving).
+class NodeSets {
+ public:
+  explicit NodeSets(int n) : parent_(n), size_(n, 1) {
+    std::iota(parent_.begin(), parent_.end(), 0);
+  }
+  int find(int x) {
+    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+    return x;
+  }
+  bool unite(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a == b) return false;
+    if (size_[a] < size_[b]) std::swap(a, b);
+    parent_[b] = a;
+    size_[a] += size_[b];
+    return true;
+  }
+
+ private:
+  std::vector<int> parent_, size_;
+};
+
+}  // namespace
+
+EdgeDofs tree_cotree_dofs(const TetMesh& mesh) {
+  if (mesh.faces.empty()) {
+    throw InputError("3D mesh: no outer or symmetry boundary, so A is not determined");
+  }
+  EdgeDofs d;
+  const int n_edges = static_cast<int>(mesh.edges.size());
+  d.fixed.assign(n_edges, false);
+  d.dof_of_edge.assign(n_edges, -1);
+  // Fixed edges: those of condition faces. Edge lookup through the tets' edge lists.
+  std::vector<std::vector<std::pair<int, int>>> by_node(mesh.nodes.size());  // (other, edge)
+  for (int e = 0; e < n_edges; ++e) by_node[mesh.edges[e][0]].push_back({mesh.edges[e][1], e});
+  auto find_edge = [&](int a, int b) {
+    if (a > b) std::swap(a, b);
+    for (const auto& [other, e] : by_node[a])
+      if (other == b) return e;
+    return -1;
+  };
+  NodeSets sets(static_cast<int>(mesh.nodes.size()));
+  const int anchor = mesh.faces.front()[0];
+  for (const auto& f : mesh.faces) {
+    for (int k = 0; k < 3; ++k) {
+      const int e = find_edge(f[k], f[(k + 1) % 3]);
+      if (e >= 0) d.fixed[e] = true;
+      sets.unite(anchor, f[k]);
+    }
+  }
+  for (int e = 0; e < n_edges; ++e) {
+    if (d.fixed[e]) continue;
+    if (sets.unite(mesh.edges[e][0], mesh.edges[e][1])) {
+      ++d.tree_edges;
+    } else {
+      d.dof_of_edge[e] = d.free_count();
+      d.edge_of_dof.push_back(e);
+    }
+  }
+  return d;
+}
+
+}  // namespace rheomag::magnetostatics3d

@@ -1,0 +1,27 @@
+#pragma once
+// Tree-cotree gauge of lowest-order edge elements.
+
+#include <vector>
+
+#include "magnetostatics3d/tet_mesh.hpp"
+
+namespace rheomag::magnetostatics3d {
+
+/// Unknowns of the gauged edge-element system: fixed edges (tangential A prescribed on outer and
+/// symmetry faces) and tree edges (A = 0) are eliminated, the cotree edges are the unknowns.
+struct EdgeDofs {
+  std::vector<int> dof_of_edge;  ///< unknown index per edge, -1 for fixed and tree edges
+  std::vector<int> edge_of_dof;  ///< edge per unknown
+  std::vector<bool> fixed;       ///< per edge: on a face with a condition
+  int tree_edges = 0;            ///< edges removed by the gauge
+  int free_count() const { return static_cast<int>(edge_of_dof.size()); }
+};
+
+/// Marks the edges of the mesh's condition faces as fixed and removes a spanning tree of the
+/// remaining edges, grown from all fixed-edge nodes taken as one node. The stiffness matrix on
+/// the cotree edges is then positive definite when the condition faces form one connected
+/// surface (the discrete gradients that vanish there are exactly what the tree removes).
+/// Throws InputError if the mesh has no condition face (A would not be determined).
+EdgeDofs tree_cotree_dofs(const TetMesh& mesh);
+
+}  // namespace rheomag::magnetostatics3d

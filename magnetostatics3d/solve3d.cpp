@@ -1,0 +1,138 @@
+#include "magnetostatics3d/solve3d.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <numbers>
+
+#include "core/error.hpp"
+#include "magnetostatics/domain.hpp"
+#include "magnetostatics3d/coil_source.hpp"
+#include "magnetostatics3d/features.hpp"
+#include "magnetostatics3d/plc.hpp"
+#include "magnetostatics3d/region_box.hpp"
+#include "magnetostatics3d/revolve.hpp"
+#include "mesh/mesher.hpp"
+
+namespace rheomag::magnetostatics3d {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+/// Volume of a regular tetrahedron of edge h.
+double tet_volume(double h) {
+  return h * h * h / (6.0 * std::sqrt(2.0));
+}
+
+std::vector<double> region_volume_limits(const cases::Problem& closed,
+                                         const std::vector<RegionBox>& box,
+                                         const Solve3dOptions& options) {
+  // Gaps first: thickness / layers; other regions no finer than the finest gap.
+  std::vector<double> h(closed.regions.size(), 0.0);
+  double finest_gap = INFINITY;
+  for (std::size_t r = 0; r < closed.regions.size(); ++r) {
+    const mesh::GapKind gap = closed.geometry.regions[r].gap;
+    if (box[r].r1 < box[r].r0 || gap == mesh::GapKind::none) continue;
+    h[r] = (gap == mesh::GapKind::annular ? box[r].r1 - box[r].r0 : box[r].z1 - box[r].z0) /
+           options.gap_layers;
+    finest_gap = std::min(finest_gap, h[r]);
+  }
+  std::vector<double> limit(closed.regions.size(), 0.0);
+  for (std::size_t r = 0; r < closed.regions.size(); ++r) {
+    if (static_cast<int>(r) == closed.geometry.default_region || box[r].r1 < box[r].r0) continue;
+    if (h[r] == 0.0) {
+      const double side = std::min(box[r].r1 - box[r].r0, box[r].z1 - box[r].z0);
+      h[r] = options.region_fraction * side;
+      if (std::isfinite(finest_gap)) h[r] = std::max(h[r], finest_gap);
+    }
+    const double requested = closed.geometry.regions[r].mesh_size;
+    if (requested > 0) h[r] = std::min(h[r], requested);
+    limit[r] = tet_volume(h[r]);
+  }
+  return limit;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+Solve3dResult solve_problem_3d(const cases::Problem& problem, const std::vector<Feature>& features,
+                               const Solve3dOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string& source = problem.geometry.source;
+  if (problem.symmetry != cases::Symmetry::axisymmetric) {
+    throw InputError(source + ": --3d revolves an axisymmetric case; this case is planar");
+  }
+  if (!(options.gap_layers >= 1) || !(options.region_fraction > 0) || !(options.facet_angle > 0)) {
+    throw InputError(source + ": 3D mesh settings must be positive");
+  }
+  for (const cases::BoundaryCondition& bc : problem.boundaries) {
+    if (bc.kind == cases::BoundaryKind::prescribed_a && bc.a_value != 0.0) {
+      throw InputError(source + ": boundary '" + bc.name +
+                       "' prescribes A != 0, which the 3D solver does not support");
+    }
+  }
+  auto report = [&](const char* stage, std::string detail) {
+    if (options.progress) options.progress({stage, 0, 0, seconds_since(start), std::move(detail)});
+  };
+  Solve3dResult out;
+  cases::Problem open = problem;
+  if (open.outer == cases::OuterBoundary::open) open.outer = cases::OuterBoundary::dirichlet;
+  out.closed = magnetostatics::close_domain(open);
+  cases::Problem& closed = out.closed;
+
+  report("mesh", "");
+  mesh::MeshOptions meridian_options;
+  meridian_options.order = 1;
+  meridian_options.min_gap_elements = 2;
+  const mesh::Mesh meridian = mesh::generate_mesh(closed.geometry, meridian_options);
+  const std::vector<RegionBox> boxes = region_boxes(meridian, closed.regions.size());
+
+  // The smallest exact model: a thin wedge for an axisymmetric body (B lies in the meridian
+  // planes), the half 0 <= phi <= pi when every feature is symmetric about y = 0, else all.
+  ModelPart part = ModelPart::full;
+  double span = kTwoPi;
+  if (!options.force_full && features.empty()) {
+    part = ModelPart::wedge;
+    span = options.wedge_angle > 0 ? options.wedge_angle : options.facet_angle;
+  } else if (!options.force_full && features_allow_half_model(features)) {
+    part = ModelPart::half;
+    span = 0.5 * kTwoPi;
+  }
+  const Revolution rev =
+      make_revolution(span, options.facet_angle, feature_walls(features, closed, boxes, span));
+  const Plc plc = revolve(closed, rev, region_volume_limits(closed, boxes, options),
+                          feature_walls(features, closed, boxes, span));
+  out.mesh = std::make_unique<TetMesh>(tetrahedralize(plc));
+  if (getenv("COUNTS")) {
+    std::vector<int> n(closed.regions.size() + 1);
+    for (int r : out.mesh->region) ++n[r];
+    for (std::size_t r = 0; r < closed.regions.size(); ++r)
+      std::fprintf(stderr, "region %s: %d tets, limit %g\n",
+                   closed.geometry.regions[r].name.c_str(), n[r], plc.regions[r].max_volume);
+  }
+  const std::vector<Eigen::Vector3d> undeformed =
+      apply_features(features, closed, boxes, *out.mesh);
+  out.mesh_seconds = seconds_since(start);
+
+  report("solve", std::to_string(out.mesh->tets.size()) + " tetrahedra, " +
+                      std::to_string(out.mesh->edges.size()) + " edges");
+  std::vector<int> material_of_region;
+  for (const cases::RegionData& r : closed.regions) material_of_region.push_back(r.material);
+  Eigen::VectorXd fixed = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(out.mesh->edges.size()));
+  out.solver = std::make_unique<EdgeSolver>(
+      *out.mesh, magnetostatics::build_reluctivities(closed), material_of_region, fixed,
+      circuit_loads(closed, meridian, *out.mesh, undeformed), options.newton);
+  std::vector<double> currents;
+  for (const cases::Circuit& c : closed.circuits) currents.push_back(c.current);
+  out.solution = out.solver->solve(currents);
+  out.results = compute_results_3d(closed, *out.solver, out.solution, part, span);
+  out.results.seconds = seconds_since(start);
+  return out;
+}
+
+}  // namespace rheomag::magnetostatics3d

@@ -1,0 +1,52 @@
+#pragma once
+// One call from an axisymmetric Problem (plus non-axisymmetric features) to 3D results.
+
+#include <memory>
+#include <vector>
+
+#include "case/problem.hpp"
+#include "core/progress.hpp"
+#include "magnetostatics/newton.hpp"
+#include "magnetostatics3d/edge_solver.hpp"
+#include "magnetostatics3d/features.hpp"
+#include "magnetostatics3d/results3d.hpp"
+#include "magnetostatics3d/tet_mesh.hpp"
+
+namespace rheomag::magnetostatics3d {
+
+/// Mesh and solver settings of a 3D solve.
+struct Solve3dOptions {
+  int gap_layers = 3;             ///< tetrahedron edge length in a fluid gap = thickness / this
+  double region_fraction = 0.15;  ///< other regions: edge length = this x smallest side of the
+                                  ///< region's meridian bounding box
+  double wedge_angle = 0.0;       ///< wedge of an axisymmetric body [rad]; 0 = automatic
+  double facet_angle = 5.0 * 3.14159265358979323846 / 180.0;  ///< largest angle of a revolved
+                                                              ///< facet [rad]
+  bool force_full = false;  ///< mesh the whole revolution even when a symmetry allows less
+  magnetostatics::NewtonOptions newton;
+  ProgressCallback progress;  ///< stages "mesh", "solve" (optional)
+};
+
+/// Everything a 3D solve produces (the mesh and solver stay alive for .vtu output).
+struct Solve3dResult {
+  cases::Problem closed;  ///< the problem with its outer boundary (region indices of the mesh)
+  std::unique_ptr<TetMesh> mesh;
+  std::unique_ptr<EdgeSolver> solver;
+  EdgeSolution solution;
+  Results3d results;
+  double mesh_seconds = 0.0;
+};
+
+/// Revolves `problem` (axisymmetric) about z, cuts the `features`, meshes it with TetGen and
+/// solves the 3D field at the problem's circuit currents. Without features the body is
+/// axisymmetric and a thin wedge is meshed; with features all at 0 or 180 degrees the half
+/// 0 <= phi <= pi (unless options.force_full). The outer boundary of the 2D case becomes a sphere
+/// of the same radius with tangential A = 0 (the 2D open condition is not carried over: for the
+/// bundled valves the difference at outer_radius_factor 5 is below 1e-4 in lambda and the gap
+/// |B|, docs/magnetostatics3d.md). Throws InputError for bad input (including TetGen failures)
+/// and ConvergenceError if Newton fails.
+Solve3dResult solve_problem_3d(const cases::Problem& problem,
+                               const std::vector<Feature>& features = {},
+                               const Solve3dOptions& options = {});
+
+}  // namespace rheomag::magnetostatics3d
