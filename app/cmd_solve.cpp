@@ -12,6 +12,8 @@
 #include "core/error.hpp"
 #include "magnetostatics/report.hpp"
 #include "magnetostatics/solve_problem.hpp"
+#include "magnetostatics3d/report3d.hpp"
+#include "magnetostatics3d/solve3d.hpp"
 
 namespace {
 
@@ -25,11 +27,42 @@ struct SolveCommandOptions {
   std::string vtk;
   std::optional<int> order;
   bool json = false;
+  bool three_d = false;
+  bool full = false;
 };
 
 void check_current(double current, const char* option) {
   if (!std::isfinite(current))
     throw rheomag::InputError(std::string(option) + ": expected a finite current in A");
+}
+
+/// `solve --3d`: the case revolved about z with its [[feature]] cuts (magnetostatics3d).
+void run_3d(const SolveCommandOptions& o, const Case& c) {
+  if (!o.sweep.empty() || o.order)
+    throw rheomag::InputError("--sweep and --order are not available with --3d");
+  namespace m3 = rheomag::magnetostatics3d;
+  m3::Solve3dOptions options;
+  options.force_full = o.full;
+  if (!o.json) {
+    options.progress = [](const rheomag::ProgressEvent& e) {
+      std::cerr << "3d: " << e.stage << " (" << e.elapsed << " s)"
+                << (e.detail.empty() ? "" : ": " + e.detail) << std::endl;
+    };
+  }
+  const m3::Solve3dResult solved = m3::solve_problem_3d(c.problem, m3::read_features(c), options);
+  if (!o.vtk.empty()) m3::write_results_vtu_3d(o.vtk, solved);
+  if (o.json) {
+    nlohmann::json j = m3::results_json_3d(solved.results);
+    j["case"] = c.name;
+    j["mesh_seconds"] = solved.mesh_seconds;
+    if (!o.vtk.empty()) j["vtk"] = o.vtk;
+    std::cout << j.dump(2) << "\n";
+    return;
+  }
+  std::cout << "case " << c.name << " (" << o.case_path << ")\n";
+  if (!c.description.empty()) std::cout << c.description << "\n";
+  std::cout << m3::results_summary_3d(solved.results);
+  if (!o.vtk.empty()) std::cout << "\nwrote " << o.vtk << " (open it in ParaView)\n";
 }
 
 void run(const SolveCommandOptions& o) {
@@ -40,6 +73,10 @@ void run(const SolveCommandOptions& o) {
     if (problem.circuits.empty())
       throw rheomag::InputError(o.case_path + ": --current given but the case has no circuit");
     for (Circuit& circuit : problem.circuits) circuit.current = *o.current;
+  }
+  if (o.three_d) {
+    run_3d(o, c);
+    return;
   }
   if (o.order) problem.order = *o.order;
   for (double i : o.sweep) check_current(i, "--sweep");
@@ -107,6 +144,12 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
   cmd->add_option("--order", o->order, "Lagrange element order, 1 or 2 (default: the case's, 2)")
       ->check(CLI::Range(1, 2));
   cmd->add_flag("--json", o->json, "Print one JSON object (SI units) instead of the summary");
+  cmd->add_flag("--3d", o->three_d,
+                "Revolve the case about z and solve in 3D with its [[feature]] cuts (lead_slot, "
+                "hole, port, eccentricity; docs/magnetostatics3d.md)");
+  cmd->add_flag("--full", o->full,
+                "With --3d: mesh the whole revolution even where a symmetry allows a wedge or "
+                "half model");
   cmd->callback([o] { run(*o); });
 });
 
