@@ -1,0 +1,56 @@
+// Benchmarks of the 3D solver (rheomag solve --3d): the bundled annular valve revolved (wedge
+// model, default mesh: 1 % agreement with 2D) and the small test valve with a lead slot (half
+// model, coarse mesh). Whole pipeline timed: revolve, TetGen, gauge, loads, Newton, results.
+// Peak memory: run under /usr/bin/time -v.
+
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "case/case_file.hpp"
+#include "case/toml_section.hpp"
+#include "magnetostatics3d/solve3d.hpp"
+
+namespace {
+
+using namespace rheomag;
+using namespace rheomag::magnetostatics3d;
+
+void report(benchmark::State& state, const Solve3dResult& s) {
+  state.counters["tetrahedra"] = s.results.tetrahedra;
+  state.counters["dofs"] = s.results.dofs;
+  state.counters["newton"] = s.results.newton_iterations;
+  state.counters["mesh_s"] = s.mesh_seconds;
+}
+
+void BM_AnnularValveWedge(benchmark::State& state) {
+  const cases::Case c =
+      cases::load_case(std::string(RHEOMAG_SOURCE_DIR) + "/cases/annular_valve.toml");
+  for (auto _ : state) {
+    const Solve3dResult s = solve_problem_3d(c.problem);
+    report(state, s);
+  }
+}
+BENCHMARK(BM_AnnularValveWedge)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+
+void BM_SmallValveLeadSlotHalf(benchmark::State& state) {
+  const std::string path =
+      std::string(RHEOMAG_SOURCE_DIR) + "/tests/data/magnetostatics3d/small_valve.toml";
+  const cases::Case c = cases::parse_case(
+      cases::read_input_file(path) +
+          "\n[[feature]]\nkind = \"lead_slot\"\nregion = \"core\"\nwidth = 2.0\ndepth = 1.5\n",
+      path);
+  Solve3dOptions options;
+  options.gap_layers = 1;
+  options.region_fraction = 0.5;
+  options.facet_angle = 10.0 * 3.14159265358979323846 / 180.0;
+  for (auto _ : state) {
+    const Solve3dResult s = solve_problem_3d(c.problem, read_features(c), options);
+    report(state, s);
+  }
+}
+BENCHMARK(BM_SmallValveLeadSlotHalf)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
