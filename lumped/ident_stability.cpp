@@ -53,6 +53,16 @@ StabilityVerdict check_simulation_stability(const IdentModel& model, const IoDat
   std::vector<double> recursion;
   if (family == "arx") recursion = numbered_params(params, "a");
   if (family == "hw") recursion = numbered_params(params, "f");
+  if (family == "narx") {  // linear terms y(k-i) of y(k) = sum c_i y(k-i) + ...: z^n - c_1 ...
+    const auto na = std::find_if(params.begin(), params.end(),
+                                 [](const NamedValue& p) { return p.first == "na"; });
+    for (long i = 1; na != params.end() && i <= static_cast<long>(na->second); ++i) {
+      const std::string name = numbered("y(k-", i) + ")";
+      const auto it = std::find_if(params.begin(), params.end(),
+                                   [&](const NamedValue& p) { return p.first == name; });
+      recursion.push_back(it == params.end() ? 0.0 : -it->second);
+    }
+  }
   if (!recursion.empty()) {
     v.pole_radius = largest_root_modulus(recursion);
     if (!(*v.pole_radius < 1.0)) {

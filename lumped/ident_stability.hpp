@@ -24,7 +24,8 @@ struct StabilityVerdict {
 double largest_root_modulus(const std::vector<double>& c);
 
 /// Checks `model` in free-run simulation on `data`: the poles of its linear output recursion
-/// (ARX's A(q), Hammerstein-Wiener's F(q)) must lie inside the unit circle, and the simulated
+/// (ARX's A(q), Hammerstein-Wiener's F(q), NARX's linear terms y(k-i): its linearisation about
+/// the mean) must lie inside the unit circle, and the simulated
 /// output must stay finite and within `peak_limit` times the measured peak deviation from the
 /// mean.
 StabilityVerdict check_simulation_stability(const IdentModel& model, const IoData& data,
