@@ -19,6 +19,7 @@
 #include "lumped/greybox.hpp"
 #include "lumped/ident_fit.hpp"
 #include "lumped/ident_plot.hpp"
+#include "lumped/ident_stability.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording_io.hpp"
 #include "lumped/valve_chain_fit.hpp"
@@ -51,6 +52,8 @@ struct FitReport {
   Metrics train;
   std::optional<Metrics> validation;
   std::vector<double> train_output, validation_output;
+  std::optional<StabilityVerdict> train_stability;       ///< black-box, simulation mode only
+  std::optional<StabilityVerdict> validation_stability;  ///< black-box, simulation mode only
 };
 
 bool looks_like_file(const std::string& text) {
@@ -101,6 +104,8 @@ FitReport fit_black_box_model(const FitOptions& o, const Recording& rec, const S
   Eigen::VectorXd out;
   report.train = evaluate(*model, train_data, o.mode, &out);
   report.train_output = to_std(out);
+  if (o.mode == EvalMode::simulation)
+    report.train_stability = check_simulation_stability(*model, train_data);
   std::optional<IoData> val_data;
   if (val.range)
     val_data = slice(all, static_cast<std::ptrdiff_t>(val.range->begin),
@@ -110,6 +115,8 @@ FitReport fit_black_box_model(const FitOptions& o, const Recording& rec, const S
   if (val_data) {
     report.validation = evaluate(*model, *val_data, o.mode, &out);
     report.validation_output = to_std(out);
+    if (o.mode == EvalMode::simulation)
+      report.validation_stability = check_simulation_stability(*model, *val_data);
   }
   return report;
 }
@@ -173,21 +180,38 @@ FitReport fit_valve_chain_model(const FitOptions& o, const Recording& rec, const
                          [&](const Recording& other) { return simulate_valve_chain(other, fit); });
 }
 
-nlohmann::json metrics_json(const Metrics& m) {
-  return {{"fit_percent", m.fit_percent}, {"rmse_percent", m.rmse_percent}, {"re", m.re}};
+/// Metrics as JSON; an unstable free run has no meaningful metrics: nulls and the reason.
+nlohmann::json metrics_json(const Metrics& m, const std::optional<StabilityVerdict>& s) {
+  if (s && !s->stable)
+    return {{"fit_percent", nullptr},
+            {"rmse_percent", nullptr},
+            {"re", nullptr},
+            {"stable", false},
+            {"stability", s->reason}};
+  nlohmann::json j = {
+      {"fit_percent", m.fit_percent}, {"rmse_percent", m.rmse_percent}, {"re", m.re}};
+  if (s) j["stable"] = true;
+  return j;
 }
 
 void print_text(const FitReport& r, const FitOptions& o, const SampleRange& train,
                 const Validation& val) {
-  auto line = [](const std::string& what, const Metrics& m) {
+  auto line = [](const std::string& what, const Metrics& m,
+                 const std::optional<StabilityVerdict>& s) {
+    if (s && !s->stable) {
+      std::printf("%-34s UNSTABLE in free-run simulation: %s (no FIT reported)\n", what.c_str(),
+                  s->reason.c_str());
+      return;
+    }
     std::printf("%-34s FIT %7.2f %%   RMSE %7.2f %%   RE %.4f\n", what.c_str(), m.fit_percent,
                 m.rmse_percent, m.re);
   };
   std::printf("model %s (%s mode)\n", r.model.c_str(),
               o.mode == EvalMode::simulation ? "simulation" : "prediction");
-  line("train " + range_text(train), r.train);
+  line("train " + range_text(train), r.train, r.train_stability);
   if (r.validation)
-    line("validation " + (val.range ? range_text(*val.range) : o.validate), *r.validation);
+    line("validation " + (val.range ? range_text(*val.range) : o.validate), *r.validation,
+         r.validation_stability);
   std::printf("parameters:\n");
   for (const auto& [name, value] : r.params.items()) {
     std::printf("  %-28s %.6g", name.c_str(), value.get<double>());
@@ -262,9 +286,11 @@ void run_fit(const FitOptions& o) {
   j["model"] = report.model;
   j["params"] = report.params;
   if (report.standard_errors.is_object()) j["standard_errors"] = report.standard_errors;
-  j["train"] = metrics_json(report.train);
+  j["train"] = metrics_json(report.train, report.train_stability);
   j["train_range"] = {train.begin, train.end};
-  j["validation"] = report.validation ? metrics_json(*report.validation) : nlohmann::json(nullptr);
+  j["validation"] = report.validation
+                        ? metrics_json(*report.validation, report.validation_stability)
+                        : nlohmann::json(nullptr);
   if (val.range) j["validation_range"] = {val.range->begin, val.range->end};
   if (val.other) j["validation_file"] = o.validate;
   j["mode"] = o.mode == EvalMode::simulation ? "simulation" : "prediction";
@@ -286,10 +312,15 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
       "  narx[:na,nb,nk[,degree]]            polynomial NARX, terms by FROLS (default degree 3)\n"
       "  hw[:nb,nf,nk[,breakpoints]]         Hammerstein-Wiener, piecewise-linear in/out maps\n"
       "  svr[:na,nb,nk]                      libsvm epsilon-SVR NARX with (C, gamma, eps) search\n"
-      "  bingham | lugre | bouc-wen | maxwell | dahl   grey-box physical models\n"
+      "  bingham | lugre | bouc-wen | maxwell | dahl | bi-viscous | tanh   grey-box models\n"
+      "  damper                              physically based damper: valve map (Herschel-\n"
+      "                                      Bulkley, pre-yield creep), compliance, seal\n"
+      "                                      friction, fluid inertia, gas spring, field lag\n"
       "  valve-chain                         the sidecar's [valve] case through the fluid chain,\n"
       "                                      fitted yield/viscous scales, field lag, compliance\n"
-      "tf and hw are output-error models: their prediction equals their simulation.");
+      "tf and hw are output-error models: their prediction equals their simulation.\n"
+      "Black-box models are checked in simulation mode (poles of the output recursion, bounded\n"
+      "free run); an unstable one is reported as such instead of a FIT.");
   cmd->add_option("recording", o->recording, "Recording CSV (its .toml sidecar beside it)")
       ->required();
   cmd->add_option("--model", o->model, "Model name (see above)")->required();

@@ -14,6 +14,7 @@
 #include "app/command.hpp"
 #include "core/error.hpp"
 #include "lumped/current_dependent_fit.hpp"
+#include "lumped/family_report.hpp"
 #include "lumped/recording_io.hpp"
 
 namespace {
@@ -28,7 +29,14 @@ struct FamilyOptions {
   int starts = 2;
   double max_substep = 2e-3;
   bool json = false;
+  std::string report;
 };
+
+std::string model_list() {
+  std::string names;
+  for (const std::string& n : greybox_model_names()) names += (names.empty() ? "" : " | ") + n;
+  return names;
+}
 
 nlohmann::json member_json(const FamilyMember& m) {
   return {{"file", m.csv_path},
@@ -47,9 +55,8 @@ void print_members(const char* title, const std::vector<FamilyMember>& members) 
 
 void run_fit_family(const FamilyOptions& o) {
   if (!is_greybox_model(o.model))
-    throw rheomag::InputError(
-        "--model: '" + o.model +
-        "' is not a grey-box model (bingham, lugre, bouc-wen, maxwell, dahl)");
+    throw rheomag::InputError("--model: '" + o.model + "' is not a grey-box model (" +
+                              model_list() + ")");
   std::vector<Recording> training, prediction;
   for (const auto& f : o.recordings) training.push_back(rheomag::app::load_recording(f));
   for (const auto& f : o.predict) prediction.push_back(rheomag::app::load_recording(f));
@@ -58,14 +65,21 @@ void run_fit_family(const FamilyOptions& o) {
   options.greybox.starts = o.starts;
   options.greybox.max_substep = o.max_substep;
   const FamilyFit r = fit_current_dependent(training, o.model, prediction, options);
+  if (!o.report.empty()) write_family_report(o.report, r, training, prediction);
   if (!o.json) {
     std::printf("model %s, joint fit on %zu recordings (every %d-th sample)\n", r.fit.model.c_str(),
                 training.size(), o.decimation);
-    for (const auto& p : r.fit.params)
-      std::printf("  %-12s %14.6g %s%s\n", p.name.c_str(), p.value, p.unit.c_str(),
+    for (const auto& p : r.fit.params) {
+      std::printf("  %-24s %14.6g", p.name.c_str(), p.value);
+      if (p.standard_error)
+        std::printf(" +- %-10.3g", *p.standard_error);
+      else
+        std::printf("    %-10s", "");
+      std::printf(" %s%s\n", p.unit.c_str(),
                   p.fixed      ? " (fixed)"
                   : p.at_bound ? " (at bound)"
                                : "");
+    }
     print_members("training recordings:", r.training);
     if (!r.predicted.empty()) print_members("predicted recordings:", r.predicted);
     return;
@@ -73,7 +87,12 @@ void run_fit_family(const FamilyOptions& o) {
   nlohmann::json j;
   j["model"] = r.fit.model;
   j["params"] = nlohmann::json::object();
-  for (const auto& p : r.fit.params) j["params"][p.name] = p.value;
+  j["standard_errors"] = nlohmann::json::object();
+  for (const auto& p : r.fit.params) {
+    j["params"][p.name] = p.value;
+    j["standard_errors"][p.name] =
+        p.standard_error ? nlohmann::json(*p.standard_error) : nlohmann::json(nullptr);
+  }
   j["train"] = nlohmann::json::array();
   for (const auto& m : r.training) j["train"].push_back(member_json(m));
   j["prediction"] = nlohmann::json::array();
@@ -88,11 +107,12 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
   CLI::App* cmd = root.add_subcommand(
       "fit-family",
       "Fit one grey-box model jointly on several recordings of the same device (e.g. every\n"
-      "current at two frequencies), its field-scaled parameters linear in the current, and\n"
-      "predict other recordings; reports FIT% and RE (paper 001 eq. 10) per recording.");
+      "current at several strokes and frequencies), one parameter set whose field terms are\n"
+      "smooth in the current, each recording simulated from rest and weighted by its own\n"
+      "spread; predict other recordings; reports FIT% and RE (paper 001 eq. 10) per recording.");
   cmd->add_option("recordings", o->recordings, "Training recordings (CSV with .toml sidecars)")
       ->required();
-  cmd->add_option("--model", o->model, "bingham | lugre | bouc-wen | maxwell | dahl")->required();
+  cmd->add_option("--model", o->model, model_list())->required();
   cmd->add_option("--predict", o->predict, "Recordings to predict with the fitted model");
   cmd->add_option("--decimation", o->decimation,
                   "Keep every n-th sample of each training recording in the joint fit")
@@ -101,6 +121,9 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
   cmd->add_option("--max-substep", o->max_substep,
                   "[s] longest RK4 substep inside the fit (stiff states shorten it further)")
       ->check(CLI::Range(1e-6, 1.0));
+  cmd->add_option("--report", o->report,
+                  "Write DIR/report.html: measured vs model loops of every recording, parameters "
+                  "with standard errors and their field dependence, FIT per recording");
   cmd->add_flag("--json", o->json,
                 "Print one JSON object: model, params, train and prediction (arrays of {file, "
                 "field, fit_percent, rmse_percent, re}), mode");

@@ -3,6 +3,7 @@
 #include "lumped/current_dependent_fit.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "core/error.hpp"
@@ -21,6 +22,44 @@ FamilyMember evaluate_member(const Recording& rec, const GreyboxFit& fit) {
   m.simulated = simulate_greybox(rec, fit);
   m.metrics = compute_metrics(rec.column(fit.setup.output_column), m.simulated);
   return m;
+}
+
+void check_family(const std::vector<Recording>& training, const std::vector<Recording>& prediction,
+                  const std::string& model) {
+  if (training.empty()) throw InputError("fit-family: no training recordings given");
+  const Recording& first = training.front();
+  const auto kind_text = [](const Recording& r) {
+    return r.meta.rig.kind ? "'" + std::string(kRigKindNames.name(*r.meta.rig.kind)) + "'"
+                           : std::string("(none)");
+  };
+  const auto same_kind = [&](const Recording& r) {
+    if (r.meta.rig.kind != first.meta.rig.kind)
+      throw InputError(r.csv_path + ": [rig] kind " + kind_text(r) + " differs from " +
+                       kind_text(first) + " of " + first.csv_path +
+                       "; a family is one device on one rig");
+    if (r.meta.drive != first.meta.drive || r.meta.output != first.meta.output)
+      throw InputError(r.csv_path + ": drive/output columns differ from " + first.csv_path +
+                       "; a family fit needs recordings of the same kind");
+  };
+  for (const Recording& r : training) same_kind(r);
+  for (const Recording& r : prediction) same_kind(r);
+  PhenoKind kind;
+  if (!parse_pheno_kind(model, kind)) return;  // fit_greybox_family names the unknown model
+  const GreyboxSetup setup = greybox_setup_for(first, kind);
+  if (setup.field_column.empty()) return;  // no field input: the model is not current-dependent
+  // The field terms are identifiable only if the field takes two or more values in the family.
+  double lo = 1e300, hi = -1e300;
+  for (const Recording& r : training)
+    for (double u : r.column(setup.field_column)) {
+      lo = std::min(lo, u);
+      hi = std::max(hi, u);
+    }
+  if (!(hi - lo > 1e-3 * std::max({std::abs(lo), std::abs(hi), 1e-12})))
+    throw InputError("fit-family --model " + model + ": the '" + setup.field_column +
+                     "' column is " + std::to_string(lo) + " in every training recording (" +
+                     first.csv_path +
+                     ", ...); the model's field terms need recordings at two or "
+                     "more field levels");
 }
 
 }  // namespace
@@ -57,11 +96,9 @@ Recording join_recordings(const std::vector<Recording>& recs, int decimation) {
 FamilyFit fit_current_dependent(const std::vector<Recording>& training, const std::string& model,
                                 const std::vector<Recording>& prediction,
                                 const FamilyFitOptions& options) {
-  const Recording joined = join_recordings(training, options.decimation);
-  GreyboxOptions gb = options.greybox;
-  gb.train.reset();
+  check_family(training, prediction, model);
   FamilyFit out;
-  out.fit = fit_greybox(joined, model, gb);
+  out.fit = fit_greybox_family(training, model, options.greybox, options.decimation);
   for (const Recording& r : training) out.training.push_back(evaluate_member(r, out.fit));
   for (const Recording& r : prediction) out.predicted.push_back(evaluate_member(r, out.fit));
   return out;

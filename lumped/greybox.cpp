@@ -24,24 +24,45 @@ namespace {
 
 /// Drive and output samples of one recording as a model sees them.
 struct DriveSeries {
-  std::vector<double> t, position, motion, field, y;
-  PhenoDrive at(std::size_t i) const { return {position[i], motion[i], field[i]}; }
+  std::vector<double> t, position, motion, field, acceleration, y;
+  PhenoDrive at(std::size_t i) const { return {position[i], motion[i], field[i], acceleration[i]}; }
   /// Linear interpolation between sample i and i+1 at fraction w in [0, 1].
   PhenoDrive between(std::size_t i, double w) const {
     return {position[i] + w * (position[i + 1] - position[i]),
-            motion[i] + w * (motion[i + 1] - motion[i]), field[i] + w * (field[i + 1] - field[i])};
+            motion[i] + w * (motion[i + 1] - motion[i]), field[i] + w * (field[i + 1] - field[i]),
+            acceleration[i] + w * (acceleration[i + 1] - acceleration[i])};
   }
 };
 
-DriveSeries drive_series(const Recording& rec, const GreyboxSetup& setup) {
+/// Every `step`-th sample of `v`.
+std::vector<double> every(const std::vector<double>& v, std::size_t step) {
+  std::vector<double> out;
+  for (std::size_t i = 0; i < v.size(); i += step) out.push_back(v[i]);
+  return out;
+}
+
+/// Rate of `v` on the time base `t`: central differences inside, one-sided at the ends.
+std::vector<double> rate_of(const std::vector<double>& t, const std::vector<double>& v) {
+  std::vector<double> r(v.size(), 0.0);
+  if (v.size() < 2) return r;
+  for (std::size_t i = 1; i + 1 < v.size(); ++i)
+    r[i] = (v[i + 1] - v[i - 1]) / (t[i + 1] - t[i - 1]);
+  r.front() = (v[1] - v[0]) / (t[1] - t[0]);
+  r.back() = (v[v.size() - 1] - v[v.size() - 2]) / (t[v.size() - 1] - t[v.size() - 2]);
+  return r;
+}
+
+/// The drive and output of `rec` as `setup` reads them, keeping every `step`-th sample.
+DriveSeries drive_series(const Recording& rec, const GreyboxSetup& setup, std::size_t step = 1) {
   DriveSeries d;
-  d.t = rec.t;
-  d.motion = rec.column(setup.motion_column);
-  d.y = rec.column(setup.output_column);
+  d.t = every(rec.t, step);
+  d.motion = every(rec.column(setup.motion_column), step);
+  d.y = every(rec.column(setup.output_column), step);
   d.field = setup.field_column.empty() ? std::vector<double>(d.t.size(), 0.0)
-                                       : rec.column(setup.field_column);
+                                       : every(rec.column(setup.field_column), step);
+  d.acceleration = rate_of(d.t, d.motion);
   if (!setup.position_column.empty()) {
-    d.position = rec.column(setup.position_column);
+    d.position = every(rec.column(setup.position_column), step);
   } else {
     // Trapezoidal integral of the motion, mean removed (the absolute position is unknown).
     d.position.assign(d.t.size(), 0.0);
@@ -78,8 +99,9 @@ double stiffest_rate(PhenoKind kind, const T* p, const PhenoDrive& d, const Phen
   return rate;
 }
 
-/// Free-run RK4 simulation of samples [begin, end) with substeps no longer than max_substep and
-/// short enough for the stiffest rate. Returns false if the state became non-finite.
+/// Free-run simulation of samples [begin, end): RK4 with substeps no longer than max_substep and
+/// short enough for the stiffest rate (the damper model: exponential midpoint steps no longer than
+/// max_substep, see damper_step). Returns false if the state became non-finite.
 template <class T>
 bool simulate_rk4(PhenoKind kind, const T* p, const DriveSeries& d, const PhenoSettings& s,
                   std::size_t begin, std::size_t end, double max_substep, T* out) {
@@ -91,6 +113,16 @@ bool simulate_rk4(PhenoKind kind, const T* p, const DriveSeries& d, const PhenoS
   double rate_previous = 0.0;
   for (std::size_t i = begin; i + 1 < end; ++i) {
     const double dt = d.t[i + 1] - d.t[i];
+    if (kind == PhenoKind::damper) {  // stiff-stable exponential steps, no rate limit
+      const int steps = std::max(1, static_cast<int>(std::ceil(dt / max_substep)));
+      const double h = dt / steps;
+      for (int j = 0; j < steps; ++j)
+        damper_step(p, d.between(i, static_cast<double>(j) / steps),
+                    d.between(i, (j + 0.5) / steps), s, h, x.data());
+      out[i + 1 - begin] = pheno_output(kind, p, d.at(i + 1), s, x.data());
+      if (!std::isfinite(value_of(out[i + 1 - begin]))) return false;
+      continue;
+    }
     // The stiffest rate changes within an interval (hysteretic states saturate), so the larger of
     // this and the previous interval's estimate sets the step.
     const double rate_now = n > 0 ? stiffest_rate(kind, p, d.at(i), s, x.data(), n) : 0.0;
@@ -176,6 +208,7 @@ ParamGuess initial_guess(PhenoKind kind, const DriveSeries& d, SampleRange r, do
   const double M = std::max(rms(d.motion, r), 1e-300);
   const double X = std::max(rms(d.position, r), 1e-300);
   const double U = umax > 0.0 ? umax : 1.0;
+  const double Acc = std::max(rms(d.acceleration, r), 1e-300);
   ParamGuess g;
   // add(nominal, scale, lower, upper, field_term)
   auto add = [&](double nominal, double scale, double lower, double upper, bool field_term) {
@@ -242,6 +275,42 @@ ParamGuess initial_guess(PhenoKind kind, const DriveSeries& d, SampleRange r, do
       add(0.0, F / X, -10 * F / X, 10 * F / X, false);
       add(ymean, F, ymean - 10 * F, ymean + 10 * F, false);
       break;
+    case PhenoKind::biviscous:
+      add(0.5 * F, F, 0.0, 10 * F, false);                                 // yield
+      add(0.0, F / U, -10 * F / U, 10 * F / U, true);                      // yield_per_field
+      add(0.5 * F / M, F / M, 0.0, 100 * F / M, false);                    // post_yield
+      add(0.0, F / (M * U), -100 * F / (M * U), 100 * F / (M * U), true);  // post_yield_per_field
+      add(20 * F / M, 20 * F / M, F / M, 1e4 * F / M, false);              // pre_yield
+      add(ymean, F, ymean - 10 * F, ymean + 10 * F, false);                // offset
+      break;
+    case PhenoKind::tanh:
+      add(0.3 * F / M, F / M, 0.0, 100 * F / M, false);                    // viscous
+      add(0.0, F / (M * U), -100 * F / (M * U), 100 * F / (M * U), true);  // viscous_per_field
+      add(0.0, F / X, -10 * F / X, 10 * F / X, false);                     // stiffness
+      add(0.5 * F, F, 0.0, 10 * F, false);                                 // hysteretic
+      add(0.0, F / U, -10 * F / U, 10 * F / U, true);                      // hysteretic_per_field
+      add(3.0 / M, 3.0 / M, 0.01 / M, 1000 / M, false);                    // shape
+      add(0.3, 1.0, -5.0, 5.0, false);                                     // lag
+      add(ymean, F, ymean - 10 * F, ymean + 10 * F, false);                // offset
+      break;
+    case PhenoKind::damper:
+      add(0.3 * F, F, 0.0, 10 * F, false);                                 // yield
+      add(0.3 * F / U, F / U, -10 * F / U, 10 * F / U, true);              // yield_per_field
+      add(0.0, F / (U * U), -10 * F / (U * U), 10 * F / (U * U), true);    // ..._per_field2
+      add(0.3 * F / M, F / M, 1e-3 * F / M, 100 * F / M, false);           // consistency
+      add(0.0, F / (M * U), -100 * F / (M * U), 100 * F / (M * U), true);  // ..._per_field
+      add(1.0, 1.0, 0.2, 2.0, false);                                      // flow_index
+      add(30 * F / M, 30 * F / M, F / M, 1e5 * F / M, false);              // pre_yield_viscous
+      add(20 * F / X, 20 * F / X, 0.1 * F / X, 1e4 * F / X, false);        // compliance_stiffness
+      add(0.0, 1.0 / X, 0.0, 1e3 / X, false);                              // stiffening
+      add(0.05 * F, F, 0.0, 2 * F, false);                                 // seal_friction
+      add(0.01 * X, 0.01 * X, 1e-5 * X, X, false);                         // seal_presliding
+      add(0.0, F / Acc, -10 * F / Acc, 10 * F / Acc, false);               // inertance
+      add(0.0, F / X, -10 * F / X, 10 * F / X, false);                     // gas_stiffness
+      add(0.01, 0.01, 1e-4, 1.0, true);                                    // field_time_constant
+      add(ymean, F, ymean - 10 * F, ymean + 10 * F, false);                // offset
+      if (!has_field) g.nominal[pheno_param_index(kind, "field_time_constant")] = 0.01;  // held
+      break;
   }
   return g;
 }
@@ -284,6 +353,8 @@ class PhenoOde : public OdeSystem {
         return {X, X, std::max(1.0, rms(d_.field, all))};
       case PhenoKind::maxwell:
         return {std::max(rms(d_.y, all), 1.0)};  // [N or Pa]
+      case PhenoKind::damper:
+        return {std::max(rms(d_.y, all), 1.0), 1.0, std::max(1.0, rms(d_.field, all))};
       default:
         return std::vector<double>(state_size(), 1.0);
     }
@@ -322,6 +393,13 @@ std::vector<double> simulate_stiff(const DriveSeries& d, const GreyboxSetup& set
 /// extremely stiff), the fixed-step RK4 of the fit (stability-limited substeps) is used instead.
 std::vector<double> simulate_for_report(const DriveSeries& d, const GreyboxSetup& setup,
                                         const std::vector<double>& params, double max_substep) {
+  if (setup.kind == PhenoKind::damper) {  // its own stiff-stable integrator, at 0.5 ms steps
+    std::vector<double> y(d.t.size());
+    if (!simulate_rk4(setup.kind, params.data(), d, setup.settings, 0, d.t.size(), 5e-4, y.data()))
+      throw ConvergenceError("model damper: the simulation diverges with these parameters");
+    for (double& v : y) v *= setup.orientation;
+    return y;
+  }
   try {
     return simulate_stiff(d, setup, params);
   } catch (const ConvergenceError&) {
@@ -335,18 +413,37 @@ std::vector<double> simulate_for_report(const DriveSeries& d, const GreyboxSetup
   }
 }
 
+/// Longest integration step inside a fit: the damper model's exponential steps are not limited
+/// by its stiff modes, the other models' RK4 substeps are.
+double fit_step(PhenoKind kind, const GreyboxOptions& options) {
+  return kind == PhenoKind::damper ? options.exponential_step : options.max_substep;
+}
+
+/// The training data of a fit: one or more drive series, each simulated from its own initial
+/// state on its own sample range, its residuals divided by its own scale.
+struct FitData {
+  std::vector<DriveSeries> series;
+  std::vector<SampleRange> ranges;
+  std::vector<double> y_scales;
+};
+
 /// One multi-start fit of a model with N parameters; fills `fit`.
 template <int N>
-void run_fit(const DriveSeries& d, const GreyboxSetup& setup, const ParamGuess& guess,
-             SampleRange range, const GreyboxOptions& options, GreyboxFit& fit) {
-  double y_scale = 0.0;
-  for (std::size_t i = range.begin; i < range.end; ++i)
-    y_scale = std::max(y_scale, std::abs(d.y[i]));
-  if (!(y_scale > 0.0))
-    throw InputError("grey-box fit: the output is zero on the training samples");
-  FitResidual<N> functor{&d, setup.kind,        setup.settings, range,
-                         {}, setup.orientation, y_scale,        options.max_substep};
-  for (int k = 0; k < N; ++k) functor.scale[k] = guess.scale[k];
+void run_fit(const FitData& data, const GreyboxSetup& setup, const ParamGuess& guess,
+             const GreyboxOptions& options, GreyboxFit& fit) {
+  std::vector<FitResidual<N>> functors;
+  for (std::size_t r = 0; r < data.series.size(); ++r) {
+    FitResidual<N> functor{&data.series[r],
+                           setup.kind,
+                           setup.settings,
+                           data.ranges[r],
+                           {},
+                           setup.orientation,
+                           data.y_scales[r],
+                           fit_step(setup.kind, options)};
+    for (int k = 0; k < N; ++k) functor.scale[k] = guess.scale[k];
+    functors.push_back(functor);
+  }
   std::vector<int> fixed;
   for (int k = 0; k < N; ++k)
     if (guess.fixed[k]) fixed.push_back(k);
@@ -373,9 +470,11 @@ void run_fit(const DriveSeries& d, const GreyboxSetup& setup, const ParamGuess& 
   const auto solve_start = [&](std::size_t start) {
     std::array<double, N>& theta = thetas[start];
     ceres::Problem problem;
-    auto* cost = new ceres::AutoDiffCostFunction<FitResidual<N>, ceres::DYNAMIC, N>(
-        new FitResidual<N>(functor), static_cast<int>(range.size()));
-    problem.AddResidualBlock(cost, nullptr, theta.data());
+    for (const FitResidual<N>& functor : functors)
+      problem.AddResidualBlock(
+          new ceres::AutoDiffCostFunction<FitResidual<N>, ceres::DYNAMIC, N>(
+              new FitResidual<N>(functor), static_cast<int>(functor.range.size())),
+          nullptr, theta.data());
     for (int k = 0; k < N; ++k) {
       if (guess.fixed[k]) continue;
       problem.SetParameterLowerBound(theta.data(), k, guess.lower[k] / guess.scale[k]);
@@ -397,11 +496,22 @@ void run_fit(const DriveSeries& d, const GreyboxSetup& setup, const ParamGuess& 
     throw ConvergenceError("grey-box fit of " + fit.model +
                            ": no starting point gave a finite simulation");
 
-  // Standard errors: cov = (J^T J)^-1 sigma^2 on the free parameters (normalised), then scaled.
-  const int m = static_cast<int>(range.size());
-  Eigen::Matrix<double, Eigen::Dynamic, N, Eigen::RowMajor> jac;
-  Eigen::VectorXd res;
-  residual_jacobian(functor, m, best.theta.data(), jac, res);
+  // Standard errors: cov = (J^T J)^-1 sigma^2 on the free parameters (normalised), then scaled;
+  // the rows of every series stacked.
+  int m = 0;
+  for (const FitResidual<N>& functor : functors) m += static_cast<int>(functor.range.size());
+  Eigen::Matrix<double, Eigen::Dynamic, N, Eigen::RowMajor> jac(m, N);
+  Eigen::VectorXd res(m);
+  int row = 0;
+  for (const FitResidual<N>& functor : functors) {
+    const int rows = static_cast<int>(functor.range.size());
+    Eigen::Matrix<double, Eigen::Dynamic, N, Eigen::RowMajor> part_jac;
+    Eigen::VectorXd part_res;
+    residual_jacobian(functor, rows, best.theta.data(), part_jac, part_res);
+    jac.middleRows(row, rows) = part_jac;
+    res.segment(row, rows) = part_res;
+    row += rows;
+  }
   fit.best_start = best.start;
   fit.converged = best.converged;
   std::vector<int> free;
@@ -431,10 +541,90 @@ void run_fit(const DriveSeries& d, const GreyboxSetup& setup, const ParamGuess& 
   }
 }
 
+PhenoKind parse_model(const std::string& model) {
+  PhenoKind kind;
+  if (!parse_pheno_kind(model, kind)) {
+    std::string names;
+    for (const std::string& n : greybox_model_names()) names += (names.empty() ? "" : ", ") + n;
+    throw InputError("unknown grey-box model '" + model + "' (expected one of " + names + ")");
+  }
+  return kind;
+}
+
+/// All series of `data` end to end (for magnitudes and orientation only: the time base is dropped)
+/// with the range covering everything.
+DriveSeries concatenated(const FitData& data, SampleRange& range) {
+  DriveSeries all;
+  for (std::size_t r = 0; r < data.series.size(); ++r) {
+    const DriveSeries& d = data.series[r];
+    const SampleRange& k = data.ranges[r];
+    const auto append = [&](std::vector<double>& to, const std::vector<double>& from) {
+      to.insert(to.end(), from.begin() + static_cast<std::ptrdiff_t>(k.begin),
+                from.begin() + static_cast<std::ptrdiff_t>(k.end));
+    };
+    append(all.position, d.position);
+    append(all.motion, d.motion);
+    append(all.field, d.field);
+    append(all.acceleration, d.acceleration);
+    append(all.y, d.y);
+  }
+  range = SampleRange{0, all.y.size()};
+  return all;
+}
+
+/// Fits `fit.setup` (kind and columns set) to `data`: orientation, regularisation widths, guess,
+/// multi-start Ceres fit; fills fit.params and the start counters. `where` names the data.
+void fit_data(const FitData& data, const GreyboxOptions& options, const std::string& where,
+              GreyboxFit& fit) {
+  const PhenoKind kind = fit.setup.kind;
+  SampleRange range;
+  const DriveSeries all = concatenated(data, range);
+  // Orientation: make the output grow with the motion (mrdamper's force has the opposite sign).
+  double corr = 0.0;
+  for (std::size_t i = 0; i < range.end; ++i) corr += all.y[i] * all.motion[i];
+  fit.setup.orientation = corr < 0.0 ? -1.0 : 1.0;
+  const double m_rms = rms(all.motion, range);
+  if (!(m_rms > 0.0)) throw InputError(where + ": the motion drive is zero throughout");
+  fit.setup.settings.eps = options.eps_fraction * m_rms;
+  fit.setup.settings.motion_scale = m_rms;
+  fit.setup.settings.position_scale = std::max(rms(all.position, range), 1e-300);
+  double y_max = 0.0;
+  for (double y : all.y) y_max = std::max(y_max, std::abs(y));
+  if (!(y_max > 0.0)) throw InputError(where + ": the output is zero on the training samples");
+  fit.setup.settings.output_scale = y_max;
+  const ParamGuess guess =
+      initial_guess(kind, all, range, fit.setup.orientation, !fit.setup.field_column.empty());
+  switch (kind) {
+    case PhenoKind::bingham:
+    case PhenoKind::maxwell:
+    case PhenoKind::dahl:
+    case PhenoKind::biviscous:
+      run_fit<6>(data, fit.setup, guess, options, fit);
+      break;
+    case PhenoKind::lugre:
+    case PhenoKind::tanh:
+      run_fit<8>(data, fit.setup, guess, options, fit);
+      break;
+    case PhenoKind::bouc_wen:
+      run_fit<13>(data, fit.setup, guess, options, fit);
+      break;
+    case PhenoKind::damper:
+      run_fit<15>(data, fit.setup, guess, options, fit);
+      break;
+  }
+}
+
+std::vector<double> param_values(const GreyboxFit& fit) {
+  std::vector<double> values;
+  for (const auto& p : fit.params) values.push_back(p.value);
+  return values;
+}
+
 }  // namespace
 
 const std::vector<std::string>& greybox_model_names() {
-  static const std::vector<std::string> names = {"bingham", "lugre", "bouc-wen", "maxwell", "dahl"};
+  static const std::vector<std::string> names = {"bingham", "lugre",      "bouc-wen", "maxwell",
+                                                 "dahl",    "bi-viscous", "tanh",     "damper"};
   return names;
 }
 
@@ -474,15 +664,14 @@ GreyboxSetup greybox_setup_for(const Recording& rec, PhenoKind kind) {
 
 GreyboxFit fit_greybox(const Recording& rec, const std::string& model,
                        const GreyboxOptions& options) {
-  PhenoKind kind;
-  if (!parse_pheno_kind(model, kind))
-    throw InputError("unknown grey-box model '" + model +
-                     "' (expected bingham, lugre, bouc-wen, maxwell or dahl)");
+  const PhenoKind kind = parse_model(model);
   FLAGS_minloglevel = 3;  // Ceres logs failed trial steps through glog; results are reported here
   GreyboxFit fit;
   fit.model = pheno_name(kind);
   fit.setup = greybox_setup_for(rec, kind);
-  const DriveSeries d = drive_series(rec, fit.setup);
+  FitData data;
+  data.series.push_back(drive_series(rec, fit.setup));
+  const DriveSeries& d = data.series.front();
   const SampleRange range = options.train.value_or(SampleRange{0, d.t.size()});
   if (range.end > d.t.size() || range.begin >= range.end)
     throw InputError(rec.csv_path + ": training range " + std::to_string(range.begin) + ":" +
@@ -494,38 +683,54 @@ GreyboxFit fit_greybox(const Recording& rec, const std::string& model,
                      std::to_string(min_samples) + " training samples, got " +
                      std::to_string(range.size()));
   fit.train_range = range;
-  // Orientation: make the output grow with the motion (mrdamper's force has the opposite sign).
-  double corr = 0.0;
-  for (std::size_t i = range.begin; i < range.end; ++i) corr += d.y[i] * d.motion[i];
-  fit.setup.orientation = corr < 0.0 ? -1.0 : 1.0;
-  const double m_rms = rms(d.motion, range);
-  if (!(m_rms > 0.0)) throw InputError(rec.csv_path + ": the motion drive is zero throughout");
-  fit.setup.settings.eps = options.eps_fraction * m_rms;
-  fit.setup.settings.motion_scale = m_rms;
-  const ParamGuess guess =
-      initial_guess(kind, d, range, fit.setup.orientation, !fit.setup.field_column.empty());
-  switch (kind) {
-    case PhenoKind::bingham:
-      run_fit<6>(d, fit.setup, guess, range, options, fit);
-      break;
-    case PhenoKind::lugre:
-      run_fit<8>(d, fit.setup, guess, range, options, fit);
-      break;
-    case PhenoKind::bouc_wen:
-      run_fit<13>(d, fit.setup, guess, range, options, fit);
-      break;
-    case PhenoKind::maxwell:
-      run_fit<6>(d, fit.setup, guess, range, options, fit);
-      break;
-    case PhenoKind::dahl:
-      run_fit<6>(d, fit.setup, guess, range, options, fit);
-      break;
-  }
-  std::vector<double> values;
-  for (const auto& p : fit.params) values.push_back(p.value);
-  fit.simulated = simulate_for_report(d, fit.setup, values, options.max_substep);
+  data.ranges.push_back(range);
+  double y_scale = 0.0;
+  for (std::size_t i = range.begin; i < range.end; ++i)
+    y_scale = std::max(y_scale, std::abs(d.y[i]));
+  data.y_scales.push_back(y_scale);
+  fit_data(data, options, rec.csv_path, fit);
+  fit.simulated = simulate_for_report(d, fit.setup, param_values(fit), options.max_substep);
   fit.train = compute_metrics(d.y, fit.simulated, range);
   fit.residual_sigma = rms_residual(d.y, fit.simulated, range);
+  return fit;
+}
+
+GreyboxFit fit_greybox_family(const std::vector<Recording>& recs, const std::string& model,
+                              const GreyboxOptions& options, int decimation) {
+  const PhenoKind kind = parse_model(model);
+  if (recs.empty()) throw InputError("grey-box family fit: no recordings given");
+  if (decimation < 1)
+    throw InputError("decimation must be at least 1, got " + std::to_string(decimation));
+  FLAGS_minloglevel = 3;
+  GreyboxFit fit;
+  fit.model = pheno_name(kind);
+  fit.setup = greybox_setup_for(recs.front(), kind);
+  FitData data;
+  for (const Recording& rec : recs) {
+    const GreyboxSetup setup = greybox_setup_for(rec, kind);
+    if (setup.motion_column != fit.setup.motion_column ||
+        setup.position_column != fit.setup.position_column ||
+        setup.field_column != fit.setup.field_column ||
+        setup.output_column != fit.setup.output_column)
+      throw InputError(rec.csv_path + ": drive/output columns differ from " +
+                       recs.front().csv_path + "; a family fit needs recordings of the same kind");
+    DriveSeries d = drive_series(rec, fit.setup, static_cast<std::size_t>(decimation));
+    const std::size_t n = d.t.size();
+    if (n < 4 * pheno_params(kind).size())
+      throw InputError(rec.csv_path + ": too few samples for model " + fit.model + " (" +
+                       std::to_string(n) + " after decimation " + std::to_string(decimation) + ")");
+    // Every recording weighs the same: its residuals are scaled by its own spread, so the cost is
+    // the sum over recordings of (1 - FIT)^2 / 2.
+    double mean = std::accumulate(d.y.begin(), d.y.end(), 0.0) / static_cast<double>(n);
+    double ss = 0.0;
+    for (double y : d.y) ss += (y - mean) * (y - mean);
+    if (!(ss > 0.0)) throw InputError(rec.csv_path + ": the output is constant");
+    data.ranges.push_back(SampleRange{0, n});
+    data.y_scales.push_back(std::sqrt(ss));
+    data.series.push_back(std::move(d));
+  }
+  fit_data(data, options, recs.front().csv_path, fit);
+  fit.train_range = SampleRange{0, 0};
   return fit;
 }
 
@@ -547,9 +752,7 @@ std::vector<double> simulate_greybox(const Recording& rec, const GreyboxFit& fit
                      fit.model + " model was fitted on");
   setup.orientation = fit.setup.orientation;
   setup.settings = fit.setup.settings;
-  std::vector<double> values;
-  for (const auto& p : fit.params) values.push_back(p.value);
-  return simulate_pheno(rec, setup, values);
+  return simulate_pheno(rec, setup, param_values(fit));
 }
 
 }  // namespace rheomag::lumped

@@ -1,7 +1,9 @@
 #pragma once
-// Grey-box (physical) identification: Bingham, LuGre, modified Bouc-Wen, Maxwell, Dahl fitted to a
-// recording with Ceres (bounded trust region, automatic differentiation through a fixed-step RK4
-// simulation), multi-start, and standard errors from the Jacobian.
+// Grey-box (physical) identification: Bingham, LuGre, modified Bouc-Wen, Maxwell, Dahl,
+// bi-viscous, hyperbolic tangent and the physically based damper model fitted to a recording (or
+// jointly to several recordings of one device) with Ceres (bounded trust region, automatic
+// differentiation through a fixed-step RK4 simulation), multi-start, and standard errors from the
+// Jacobian.
 
 #include <optional>
 #include <string>
@@ -21,6 +23,7 @@ struct GreyboxOptions {
   int max_iterations = 60;           ///< Levenberg-Marquardt iterations per start
   int threads = 0;                   ///< starts solved at once (0: one per core); same result
   double max_substep = 2.5e-4;       ///< [s] largest RK4 substep inside the fit
+  double exponential_step = 5e-3;    ///< [s] largest step of the damper model's integrator
   double eps_fraction = 1e-3;        ///< sign/|.| regularisation width as a fraction of rms motion
 };
 
@@ -59,7 +62,8 @@ struct GreyboxFit {
   bool converged = false;  ///< Ceres reported convergence for the best start
 };
 
-/// Names accepted by fit_greybox: bingham, lugre, bouc-wen, maxwell, dahl.
+/// Names accepted by fit_greybox: bingham, lugre, bouc-wen, maxwell, dahl, bi-viscous, tanh,
+/// damper.
 const std::vector<std::string>& greybox_model_names();
 
 /// True if `model` is a grey-box model name.
@@ -69,6 +73,13 @@ bool is_greybox_model(const std::string& model);
 /// InputError for an unknown model, a recording without a velocity/flow drive, or too few samples.
 GreyboxFit fit_greybox(const Recording& rec, const std::string& model,
                        const GreyboxOptions& options = {});
+
+/// Fits `model` jointly to `recs` (same drive and output columns), keeping every `decimation`-th
+/// sample: each recording is simulated from its own initial state and its residuals are divided
+/// by its own spread ||y - mean(y)||, so every recording weighs the same whatever its force
+/// level (the cost is sum (1 - FIT_r)^2 / 2). `options.train` is ignored; fit.simulated is empty.
+GreyboxFit fit_greybox_family(const std::vector<Recording>& recs, const std::string& model,
+                              const GreyboxOptions& options, int decimation);
 
 /// Free-run output of a fitted model on another recording of the same device (stiff integrator).
 std::vector<double> simulate_greybox(const Recording& rec, const GreyboxFit& fit);

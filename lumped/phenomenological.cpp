@@ -15,6 +15,12 @@ bool parse_pheno_kind(const std::string& name, PhenoKind& kind) {
     kind = PhenoKind::maxwell;
   else if (name == "dahl")
     kind = PhenoKind::dahl;
+  else if (name == "bi-viscous")
+    kind = PhenoKind::biviscous;
+  else if (name == "tanh")
+    kind = PhenoKind::tanh;
+  else if (name == "damper")
+    kind = PhenoKind::damper;
   else
     return false;
   return true;
@@ -32,6 +38,12 @@ std::string pheno_name(PhenoKind kind) {
       return "maxwell";
     case PhenoKind::dahl:
       return "dahl";
+    case PhenoKind::biviscous:
+      return "bi-viscous";
+    case PhenoKind::tanh:
+      return "tanh";
+    case PhenoKind::damper:
+      return "damper";
   }
   return "";
 }
@@ -61,7 +73,40 @@ const std::vector<PhenoParam>& pheno_params(PhenoKind kind) {
   static const std::vector<PhenoParam> dahl = {
       {"viscous", "Y/M", false}, {"dahl_force", "Y", false},  {"dahl_force_per_field", "Y/U", true},
       {"sigma", "1/X", false},   {"stiffness", "Y/X", false}, {"offset", "Y", false}};
+  static const std::vector<PhenoParam> biviscous = {
+      {"yield", "Y", false},        {"yield_per_field", "Y/U", true},
+      {"post_yield", "Y/M", false}, {"post_yield_per_field", "Y/(M U)", true},
+      {"pre_yield", "Y/M", false},  {"offset", "Y", false}};
+  static const std::vector<PhenoParam> tanh_model = {{"viscous", "Y/M", false},
+                                                     {"viscous_per_field", "Y/(M U)", true},
+                                                     {"stiffness", "Y/X", false},
+                                                     {"hysteretic", "Y", false},
+                                                     {"hysteretic_per_field", "Y/U", true},
+                                                     {"shape", "1/M", false},
+                                                     {"lag", "1", false},
+                                                     {"offset", "Y", false}};
+  static const std::vector<PhenoParam> damper = {{"yield", "Y", false},
+                                                 {"yield_per_field", "Y/U", true},
+                                                 {"yield_per_field2", "Y/U^2", true},
+                                                 {"consistency", "Y/M", false},
+                                                 {"consistency_per_field", "Y/(M U)", true},
+                                                 {"flow_index", "1", false},
+                                                 {"pre_yield_viscous", "Y/M", false},
+                                                 {"compliance_stiffness", "Y/X", false},
+                                                 {"stiffening", "1/X", false},
+                                                 {"seal_friction", "Y", false},
+                                                 {"seal_presliding", "X", false},
+                                                 {"inertance", "Y s/M", false},
+                                                 {"gas_stiffness", "Y/X", false},
+                                                 {"field_time_constant", "s", true},
+                                                 {"offset", "Y", false}};
   switch (kind) {
+    case PhenoKind::biviscous:
+      return biviscous;
+    case PhenoKind::tanh:
+      return tanh_model;
+    case PhenoKind::damper:
+      return damper;
     case PhenoKind::bingham:
       return bingham;
     case PhenoKind::lugre:
@@ -88,6 +133,11 @@ std::size_t pheno_state_count(PhenoKind kind) {
       return 1;
     case PhenoKind::dahl:
       return 1;
+    case PhenoKind::biviscous:
+    case PhenoKind::tanh:
+      return 0;
+    case PhenoKind::damper:
+      return 3;
   }
   return 0;
 }

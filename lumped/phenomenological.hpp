@@ -2,7 +2,9 @@
 // Phenomenological force/pressure models driven by motion (velocity or flow), position and a field
 // input (current or command voltage): Bingham, LuGre valve model (paper 001 eqs. 8-9), modified
 // Bouc-Wen (Spencer et al. 1997, with the first-order command filter), Maxwell (paper 004
-// eqs. 8-9) and Dahl. Right-hand sides are templates so Ceres Jets flow through them.
+// eqs. 8-9), Dahl, bi-viscous (Stanway et al. 1987), hyperbolic tangent (Kwok et al. 2006) and the
+// physically based damper model (docs/damper-model.md). Right-hand sides are templates so Ceres
+// Jets flow through them.
 //
 // Units are generic: Y = output (N or Pa), M = motion (m/s or m^3/s), X = position (m or m^3),
 // U = field input (A or V). Every sign and |.| is regularised with width `eps` (in M), see
@@ -17,7 +19,7 @@
 namespace rheomag::lumped {
 
 /// Which phenomenological model.
-enum class PhenoKind { bingham, lugre, bouc_wen, maxwell, dahl };
+enum class PhenoKind { bingham, lugre, bouc_wen, maxwell, dahl, biviscous, tanh, damper };
 
 /// Name and unit (with Y, M, X, U placeholders) of one model parameter.
 struct PhenoParam {
@@ -28,18 +30,22 @@ struct PhenoParam {
 
 /// The drive of a phenomenological model at one instant (data, never differentiated).
 struct PhenoDrive {
-  double position = 0.0;  ///< X
-  double motion = 0.0;    ///< M
-  double field = 0.0;     ///< U
+  double position = 0.0;      ///< X
+  double motion = 0.0;        ///< M
+  double field = 0.0;         ///< U
+  double acceleration = 0.0;  ///< [M/s] rate of the motion (damper model's fluid inertia)
 };
 
 /// Settings that are not fitted: regularisation width and LuGre's motion scale.
 struct PhenoSettings {
-  double eps = 1e-6;          ///< [M] width of the smooth sign/|.|
-  double motion_scale = 1.0;  ///< [M] LuGre: viscous term uses (motion / motion_scale)^alpha
+  double eps = 1e-6;            ///< [M] width of the smooth sign/|.|
+  double motion_scale = 1.0;    ///< [M] LuGre: viscous term uses (motion / motion_scale)^alpha
+  double position_scale = 1.0;  ///< [X] tanh model: width of its smooth sign(position)
+  double output_scale = 1.0;    ///< [Y] damper model: width of its smooth |force| is 1e-3 of it
 };
 
-/// Parses "bingham" | "lugre" | "bouc-wen" | "maxwell" | "dahl"; false if unknown.
+/// Parses "bingham" | "lugre" | "bouc-wen" | "maxwell" | "dahl" | "bi-viscous" | "tanh" |
+/// "damper"; false if unknown.
 bool parse_pheno_kind(const std::string& name, PhenoKind& kind);
 
 /// The canonical name of a model ("bouc-wen", ...).
@@ -92,6 +98,45 @@ enum BoucWen {
 };
 enum Maxwell { kMTau, kMVisc, kMField0, kMField1, kMShape, kMOffset };
 enum Dahl { kDVisc, kDForce0, kDForce1, kDSigma, kDStiff, kDOffset };
+enum BiViscous { kVYield0, kVYield1, kVPost0, kVPost1, kVPre, kVOffset };
+enum Tanh { kTVisc0, kTVisc1, kTStiff, kTForce0, kTForce1, kTShape, kTLag, kTOffset };
+enum Damper {
+  kDmYield0,
+  kDmYield1,
+  kDmYield2,
+  kDmVisc0,
+  kDmVisc1,
+  kDmIndex,
+  kDmPreVisc,
+  kDmStiff,
+  kDmStiffening,
+  kDmSeal,
+  kDmSealSlip,
+  kDmInertance,
+  kDmGas,
+  kDmTau,
+  kDmOffset
+};
+
+/// Damper model: rate of the valve force x[0] through the fluid/accumulator compliance. The valve
+/// passes the motion g(F) of a Herschel-Bulkley map with a pre-yield creep branch (inverse of
+/// F = sign(m) (F_y(u) + c(u) m_ref (|m| / m_ref)^n), plus F / pre_visc); the compliance's
+/// stiffness grows with the force (gas and entrained air stiffen with pressure).
+template <class T>
+T damper_force_rate(const T* p, const PhenoDrive& d, const PhenoSettings& s, const T* x) {
+  using std::pow;
+  const T& u = x[2];
+  const T& f = x[0];
+  const double w = 1e-3 * s.output_scale;
+  const T yield = p[kDmYield0] + p[kDmYield1] * u + p[kDmYield2] * u * u;
+  const T consistency = p[kDmVisc0] + p[kDmVisc1] * u;
+  const T abs_f = smooth_abs(f, w);
+  const T excess = smooth_ramp(abs_f - yield, w);
+  const T post =
+      s.motion_scale * pow(excess / (consistency * s.motion_scale) + 1e-12, 1.0 / p[kDmIndex]);
+  const T valve_motion = f / p[kDmPreVisc] + f / (abs_f + w) * post;
+  return (p[kDmStiff] + p[kDmStiffening] * abs_f) * (d.motion - valve_motion);
+}
 
 /// Bouc-Wen: rate of the internal displacement y for state x = (y, z, u_filtered).
 template <class T>
@@ -103,7 +148,49 @@ T bouc_wen_ydot(const T* p, const PhenoDrive& d, const T* x) {
   return (alpha * x[1] + c0 * d.motion + p[kWK0] * (d.position - x[0])) / (c0 + c1);
 }
 
+/// phi(x) = (1 - exp(-x)) / x, with its series near 0 (x >= 0).
+template <class T>
+T phi1(const T& x) {
+  using std::exp;
+  if (value_of(x) < 1e-6) return 1.0 - 0.5 * x;
+  return (1.0 - exp(-x)) / x;
+}
+
 }  // namespace pheno_detail
+
+/// One step of length h of the damper model from drive `a` (start) through `m` (midpoint):
+/// exponential midpoint rule (second order, stable for any h): each state's rate is linearised
+/// about the half-step predictor, and the linear equation is solved exactly over the step. The
+/// valve force's fast mode (compliance stiffness / slope of the valve map) and the seal's
+/// pre-sliding are stiff for an explicit method; this step is not limited by them.
+template <class T>
+void damper_step(const T* p, const PhenoDrive& a, const PhenoDrive& m, const PhenoSettings& s,
+                 double h, T* x) {
+  using namespace pheno_detail;
+  const double delta = 1e-4 * s.output_scale;
+  // Field and seal: linear in their own state, solved exactly with the midpoint drive.
+  const double abs_m = std::sqrt(m.motion * m.motion + s.eps * s.eps) - s.eps;
+  const T rate_u = 1.0 / p[kDmTau];
+  const T u0 = x[2];
+  const T u_half = u0 + 0.5 * h * phi1(T(0.5 * h) * rate_u) * rate_u * (m.field - u0);
+  x[2] = u0 + h * phi1(T(h) * rate_u) * rate_u * (m.field - u0);
+  const T rate_z = abs_m / p[kDmSealSlip];
+  x[1] = x[1] + h * phi1(T(h) * rate_z) * (m.motion / p[kDmSealSlip] - rate_z * x[1]);
+  // Valve force: predictor half step from the start, then the step linearised at the midpoint.
+  const auto rate = [&](const PhenoDrive& d, const T& f, const T& u) {
+    const T state[3] = {f, T(0.0), u};
+    return damper_force_rate(p, d, s, state);
+  };
+  const auto slope = [&](const PhenoDrive& d, const T& f, const T& u) {
+    const T lambda = (rate(d, f - delta, u) - rate(d, f + delta, u)) / (2.0 * delta);
+    return value_of(lambda) > 0.0 ? lambda : T(0.0);
+  };
+  const T f0 = x[0];
+  const T lambda0 = slope(a, f0, u0);
+  const T f_half = f0 + 0.5 * h * phi1(T(0.5 * h) * lambda0) * rate(a, f0, u0);
+  const T lambda_m = slope(m, f_half, u_half);
+  x[0] = f0 + h * phi1(T(h) * lambda_m) * (rate(m, f_half, u_half) + lambda_m * (f_half - f0));
+}
 
 template <class T>
 void pheno_initial_state(PhenoKind kind, const T* p, const PhenoDrive& d, const PhenoSettings& s,
@@ -125,6 +212,14 @@ void pheno_initial_state(PhenoKind kind, const T* p, const PhenoDrive& d, const 
     case PhenoKind::maxwell:
       x[0] = p[kMVisc] * d.motion +
              (p[kMField0] + p[kMField1] * d.field) * tanh(p[kMShape] * d.motion);
+      break;
+    case PhenoKind::biviscous:
+    case PhenoKind::tanh:
+      break;
+    case PhenoKind::damper:  // at rest: no valve force, seal centred, field settled
+      x[0] = T(0.0);
+      x[1] = T(0.0);
+      x[2] = T(d.field);
       break;
   }
   (void)s;
@@ -162,6 +257,14 @@ void pheno_derivatives(PhenoKind kind, const T* p, const PhenoDrive& d, const Ph
       dxdt[0] = (fd - x[0]) / p[kMTau];
       break;
     }
+    case PhenoKind::biviscous:
+    case PhenoKind::tanh:
+      break;
+    case PhenoKind::damper:
+      dxdt[0] = damper_force_rate(p, d, s, x);
+      dxdt[1] = (d.motion - abs_m * x[1]) / p[kDmSealSlip];  // Dahl pre-sliding of the seals
+      dxdt[2] = (d.field - x[2]) / p[kDmTau];                // field lag behind the drive
+      break;
   }
 }
 
@@ -169,6 +272,7 @@ template <class T>
 T pheno_output(PhenoKind kind, const T* p, const PhenoDrive& d, const PhenoSettings& s,
                const T* x) {
   using namespace pheno_detail;
+  using std::abs;
   using std::tanh;
   switch (kind) {
     case PhenoKind::bingham:
@@ -192,6 +296,24 @@ T pheno_output(PhenoKind kind, const T* p, const PhenoDrive& d, const PhenoSetti
     }
     case PhenoKind::maxwell:
       return x[0] + p[kMOffset];
+    case PhenoKind::biviscous: {  // pre-yield c_pre m below the yield motion, else Bingham
+      const T yield = p[kVYield0] + p[kVYield1] * d.field;
+      const T post = p[kVPost0] + p[kVPost1] * d.field;
+      const T yield_motion = yield / (p[kVPre] - post);
+      const T out = abs(T(d.motion)) <= yield_motion
+                        ? p[kVPre] * d.motion
+                        : post * d.motion + (d.motion > 0.0 ? yield : -yield);
+      return out + p[kVOffset];
+    }
+    case PhenoKind::tanh:  // c m + k x + F(u) tanh(beta m + delta sign(x)) + f0
+      return (p[kTVisc0] + p[kTVisc1] * d.field) * d.motion + p[kTStiff] * d.position +
+             (p[kTForce0] + p[kTForce1] * d.field) *
+                 tanh(p[kTShape] * d.motion +
+                      p[kTLag] * smooth_sign(T(d.position), 1e-2 * s.position_scale)) +
+             p[kTOffset];
+    case PhenoKind::damper:
+      return x[0] + p[kDmSeal] * x[1] + p[kDmInertance] * d.acceleration + p[kDmGas] * d.position +
+             p[kDmOffset];
   }
   return T(0.0);
 }
