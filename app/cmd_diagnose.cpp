@@ -1,5 +1,5 @@
 // rheomag diagnose: name the physics a recording shows and its baseline model lacks. The method
-// lives in optimise/diagnose_*.hpp; this file reads the recording, runs it and prints the result.
+// lives in diagnose/diagnose_*.hpp; this file reads the recording, runs it and prints the result.
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -44,6 +44,13 @@ lumped::Recording read_input(const DiagnoseCliOptions& o) {
 
 void print_summary(const diagnose::Diagnosis& d) {
   std::cout << "baseline FIT " << d.baseline_fit_percent << " %\n";
+  for (const auto& item : d.includes)
+    std::cout << "  baseline has " << item.name << ": " << item.source << "\n";
+  const auto& u = d.nuisance;
+  std::cout << "  nuisance: delay " << 1e3 * u.delay << " ms (" << u.delay_samples << " samples)";
+  if (u.preyield_flow > 0.0)
+    std::cout << ", pre-yield smoothing " << 100 * u.preyield_fraction << " % of peak flow";
+  std::cout << "\n";
   for (const auto& w : d.mismatch)
     std::cout << "  mismatch " << w.t_start << "-" << w.t_end << " s: " << 100 * w.share
               << " % of residual (" << w.regime << ")\n";
@@ -61,6 +68,10 @@ void print_summary(const diagnose::Diagnosis& d) {
     }
   }
   std::cout << "final FIT " << d.final_fit_percent << " %\n";
+  std::cout << "unexplained: " << 100 * d.unexplained.share
+            << " % of the final residual energy lies above the noise floor (noise rms "
+            << d.unexplained.noise_sigma << ", residual rms " << d.unexplained.residual_rms
+            << ")\n";
   for (const auto& note : d.notes) std::cout << "note: " << note << "\n";
 }
 
@@ -69,17 +80,22 @@ const bool registered = app::register_command([](CLI::App& root) {
   CLI::App* cmd = root.add_subcommand(
       "diagnose",
       "Find the physics a recording shows and its baseline model leaves out.\n"
-      "1. Baseline from the sidecar (rig, valve static map, coil) with stiff fluid and an ideal\n"
-      "   coil; its static parameters (yield scale, viscous resistance, force offset) are\n"
+      "1. Baseline from everything the sidecar states (rig, coil resistance and inductance,\n"
+      "   chambers, the valve's static map as a table or the FE chain of its [valve] case); its\n"
+      "   static parameters (yield scale, viscous resistance or scale, force offset) and the\n"
+      "   recording's nuisances (output delay up to +-2 samples, pre-yield smoothness) are\n"
       "   calibrated by least squares first.\n"
       "2. The residual is located in time windows tagged by regime (flow reversal, current edge,\n"
       "   steady, drift, high frequency) and correlated with the inputs.\n"
       "3. Candidates (compressibility, fluid_inertia, magnetic_hysteresis, eddy_currents,\n"
-      "   mr_response_time, coil_inductance, coil_heating, friction) are fitted on top; one is\n"
-      "   accepted only if it lowers BIC by > 10 and the error on held-out time blocks by > 3 %;\n"
+      "   mr_response_time, coil_inductance, coil_heating, friction, pre_yield) are fitted on\n"
+      "   top; one is accepted only if it lowers BIC by > 10, removes >= 10 % of the residual\n"
+      "   energy above the noise floor, has a time constant above one sample and a size\n"
+      "   parameter known to 50 %, and cuts the error on held-out time blocks by > 3 %;\n"
       "   forward selection, then a joint re-fit. Candidates that explain the data equally are\n"
       "   reported together.\n"
-      "Exit 2 for bad input (recording format, missing sidecar keys, recording too short/flat).");
+      "Exit 2 for bad input (recording format, missing sidecar keys, a [valve] case that does not\n"
+      "exist or solve, recording too short/flat).");
   cmd->add_option("recording", o->recording, "Recording CSV (fixed format; sidecar beside it)")
       ->required();
   cmd->add_option("--meta", o->meta, "Sidecar TOML to use instead of the one beside the CSV");

@@ -1,10 +1,16 @@
-// Confusion-matrix benchmark of `rheomag diagnose` (issue 5): random virtual-rig recordings, each
-// with one concealed effect (or none), random parameters, excitation, noise level, sidecar map
-// error and rig kind; the diagnosis sees only the noisy recording. Prints one line per draw as it
-// finishes, then the matrix truth x first named effect (an ambiguous first finding is its own
-// column), the share named right and the false-finding rate on clean recordings.
+// Confusion-matrix benchmark of `rheomag diagnose` (issues 5 and 13): random virtual-rig
+// recordings, each with one concealed effect, a pair of them, or none; random parameters,
+// excitation, noise level, sidecar map error and rig kind. With --nuisances 1 (the default) the
+// recordings also carry what real recorders add and is not physics: noise on the drive columns
+// (0.1-0.5 % of their spread), held or smooth drive sampling, a channel skew of 0-1 sample, a
+// pre-yield smoothing of 0.5-3 % of the peak flow, and a sidecar stating the true coil
+// inductance on half the clean voltage-driven draws. The diagnosis sees only the recording.
+// Prints one line per draw as it finishes, then the matrix truth x first named effect, the share
+// named right, the share with any false finding and the share whose final FIT is within 2 points
+// of the achievable ceiling (the truth driven by the recorded, noisy inputs).
 // Not a Google Benchmark (it takes minutes):
 //   bench_diagnose_confusion [--draws N] [--seed S] [--threads T] [--only NAME] [--csv FILE]
+//                            [--nuisances 0|1]
 
 #include <algorithm>
 #include <atomic>
@@ -38,15 +44,27 @@ using lumped::RigKind;
 const std::vector<std::string> kTruths = {
     "none",          "compressibility", "fluid_inertia", "magnetic_hysteresis",
     "eddy_currents", "coil_inductance", "coil_heating",  "mr_response_time",
-    "friction"};
+    "friction",      "pre_yield",       "pair"};
+
+/// The two field lags are one block in series: either name counts for either.
+std::string effect_class(const std::string& name) {
+  return name == "eddy_currents" || name == "mr_response_time" ? "field_lag" : name;
+}
 
 /// One random draw: the truth spec, its drive and a description of what was drawn.
 struct Draw {
   std::string truth;
+  std::vector<std::string> effects;  ///< concealed effects (two for a pair)
   int index = 0;
   lumped::RigSpec spec;
   lumped::Recording drive;
-  double noise_fraction = 0.0;  ///< noise std / output std
+  double noise_fraction = 0.0;    ///< noise std / output std
+  bool nuisances = true;          ///< drive noise, held sampling, skew, stated inductance
+  bool held = false;              ///< drives recorded as held samples
+  double skew = 0.0;              ///< [samples] drive channels sampled this much later
+  double drive_noise = 0.0;       ///< drive noise std / drive std
+  bool state_inductance = false;  ///< the sidecar states the true inductance
+  double map_error = 0.1;         ///< sidecar map off by up to this factor
   std::string description;
 };
 
@@ -54,6 +72,9 @@ struct Draw {
 struct Outcome {
   std::string truth, named, all_named, description;
   bool ambiguous = false, truth_in_ambiguous = false;
+  bool right = false;          ///< every concealed effect named (either name for the field lag)
+  bool false_finding = false;  ///< something named that was not concealed
+  double final_fit = 0.0, ceiling = 0.0;
   double seconds = 0.0;
 };
 
@@ -79,7 +100,7 @@ std::vector<RigKind> kinds_for(const std::string& truth) {
   using K = RigKind;
   if (truth == "friction") return {K::damper};
   if (truth == "coil_heating") return {K::coil_bench};
-  if (truth == "fluid_inertia") return {K::bypass_cylinder, K::damper};
+  if (truth == "fluid_inertia" || truth == "pre_yield") return {K::bypass_cylinder, K::damper};
   if (truth == "coil_inductance")
     return {K::coil_bench, K::constant_velocity_pump, K::bypass_cylinder, K::damper};
   if (truth == "none")
@@ -87,13 +108,48 @@ std::vector<RigKind> kinds_for(const std::string& truth) {
   return {K::constant_velocity_pump, K::bypass_cylinder, K::damper};
 }
 
-Draw make_draw(const std::string& truth, int index, unsigned seed) {
+/// Two different effects that can show together on one rig (pairs of the vocabulary).
+std::vector<std::string> pair_for(std::mt19937& rng) {
+  const std::vector<std::vector<std::string>> pairs = {{"friction", "mr_response_time"},
+                                                       {"friction", "compressibility"},
+                                                       {"compressibility", "eddy_currents"},
+                                                       {"fluid_inertia", "mr_response_time"},
+                                                       {"coil_inductance", "compressibility"},
+                                                       {"magnetic_hysteresis", "compressibility"},
+                                                       {"friction", "fluid_inertia"},
+                                                       {"coil_inductance", "friction"},
+                                                       {"pre_yield", "friction"},
+                                                       {"pre_yield", "mr_response_time"}};
+  return pick(rng, pairs);
+}
+
+bool uses_voltage(const std::vector<std::string>& effects) {
+  for (const auto& e : effects)
+    if (e == "coil_inductance" || e == "coil_heating") return true;
+  return false;
+}
+
+Draw make_draw(const std::string& truth, int index, unsigned seed, bool nuisances) {
   std::mt19937 rng(seed);
   Draw d;
   d.truth = truth;
   d.index = index;
+  d.nuisances = nuisances;
+  if (truth == "pair")
+    d.effects = pair_for(rng);
+  else if (truth != "none")
+    d.effects = {truth};
   auto& s = d.spec;
-  s.kind = pick(rng, kinds_for(truth));
+  // Rig kind: one where every concealed effect can show.
+  std::vector<RigKind> kinds = kinds_for(d.effects.empty() ? "none" : d.effects.front());
+  for (std::size_t e = 1; e < d.effects.size(); ++e) {
+    const auto other = kinds_for(d.effects[e]);
+    std::vector<RigKind> both;
+    for (auto k : kinds)
+      if (std::find(other.begin(), other.end(), k) != other.end()) both.push_back(k);
+    kinds = both;
+  }
+  s.kind = pick(rng, kinds);
   s.piston_area = 4.524e-4;
   s.valve.yield_current = {0.0, 0.25, 0.5, 0.75, 1.0};
   s.valve.yield_pressure = {0.0, 1.9e6, 3.6e6, 4.9e6, 5.8e6};
@@ -102,8 +158,7 @@ Draw make_draw(const std::string& truth, int index, unsigned seed) {
   if (s.kind == RigKind::damper) s.gas_force = uniform(rng, 0.0, 300.0);
   // Coil drive: voltage for coil effects and the coil bench, else a current source (and a
   // voltage-driven coil in a third of the clean hydraulic draws).
-  const bool voltage = s.kind == RigKind::coil_bench || truth == "coil_inductance" ||
-                       truth == "coil_heating" ||
+  const bool voltage = s.kind == RigKind::coil_bench || uses_voltage(d.effects) ||
                        (truth == "none" && uniform(rng, 0.0, 1.0) < 1.0 / 3.0);
   if (voltage) {
     s.driver_mode = DriverMode::voltage;
@@ -115,13 +170,17 @@ Draw make_draw(const std::string& truth, int index, unsigned seed) {
   d.drive.t = lumped::uniform_times(duration, rate);
   std::ostringstream desc;
   desc << lumped::rig_kind_name(s.kind);
+  std::vector<std::string> signals;
+  double peak_velocity = 0.0;
   if (s.kind == RigKind::constant_velocity_pump) {
     const double v = uniform(rng, 0.005, 0.02);
-    lumped::add_signal(d.drive, "velocity=constant:value=" + fmt(v));
+    signals.push_back("velocity=constant:value=" + fmt(v));
+    peak_velocity = v;
     desc << " v=" << fmt(v);
   } else if (s.kind != RigKind::coil_bench) {
     const double amp = uniform(rng, 0.01, 0.025), f = uniform(rng, 0.5, 3.0);
-    lumped::add_signal(d.drive, "displacement=sine:amplitude=" + fmt(amp) + ",frequency=" + fmt(f));
+    signals.push_back("displacement=sine:amplitude=" + fmt(amp) + ",frequency=" + fmt(f));
+    peak_velocity = 2.0 * M_PI * f * amp;
     desc << " x=" << fmt(amp) << "m f=" << fmt(f) << "Hz";
   }
   const double top = uniform(rng, 0.6, 1.0);
@@ -133,46 +192,132 @@ Draw make_draw(const std::string& truth, int index, unsigned seed) {
   std::string lv;
   const double volts_per_amp = voltage ? s.coil.resistance_20c : 1.0;
   for (double l : levels) lv += (lv.empty() ? "" : "/") + fmt(l * volts_per_amp);
-  lumped::add_signal(d.drive, std::string(voltage ? "voltage" : "current") + "=steps:levels=" + lv +
-                                  ",period=" + fmt(period));
+  signals.push_back(std::string(voltage ? "voltage" : "current") + "=steps:levels=" + lv +
+                    ",period=" + fmt(period));
+  for (const auto& sig : signals) lumped::add_signal(d.drive, sig);
   desc << (voltage ? " V=" : " I=") << lv << " P=" << fmt(period) << "s";
-  // The concealed effect.
-  if (truth == "compressibility") {
-    lumped::ChamberBlock c;
-    c.oil_volume = 2e-5;
-    c.air_volume = log_uniform(rng, 1e-7, 1e-6);
-    s.compressibility = c;
-    desc << " air=" << fmt(c.air_volume);
-  } else if (truth == "fluid_inertia") {
-    s.inertance = log_uniform(rng, 2e8, 2e9);
-    desc << " L=" << fmt(*s.inertance);
-  } else if (truth == "magnetic_hysteresis") {
-    const double a = log_uniform(rng, 2.0, 10.0), dd = uniform(rng, 0.1, 0.6);
-    s.magnetic_hysteresis = diagnose::duhem_field(a, dd);
-    desc << " a=" << fmt(a) << " d=" << fmt(dd);
-  } else if (truth == "eddy_currents") {
-    s.eddy_time_constant = log_uniform(rng, 0.01, 0.06);
-    desc << " tau=" << fmt(*s.eddy_time_constant);
-  } else if (truth == "mr_response_time") {
-    s.mr_response_time = log_uniform(rng, 0.01, 0.06);
-    desc << " tau=" << fmt(*s.mr_response_time);
-  } else if (truth == "coil_inductance") {
-    s.coil.inductance = log_uniform(rng, 0.1, 0.9);
-    desc << " L=" << fmt(s.coil.inductance);
-  } else if (truth == "coil_heating") {
-    lumped::ThermalBlock th;
-    th.thermal_resistance = log_uniform(rng, 1.0, 8.0);
-    th.thermal_time_constant = uniform(rng, 1.5, 5.0);
-    s.coil_heating = th;
-    desc << " Rth=" << fmt(th.thermal_resistance) << " tau=" << fmt(th.thermal_time_constant);
-  } else if (truth == "friction") {
-    s.coulomb_force = log_uniform(rng, 50.0, 400.0);
-    desc << " Fc=" << fmt(*s.coulomb_force);
+  // The concealed effects.
+  for (const auto& e : d.effects) {
+    if (e == "compressibility") {
+      lumped::ChamberBlock c = s.compressibility.value_or(lumped::ChamberBlock{});
+      c.oil_volume = 2e-5;
+      c.air_volume = log_uniform(rng, 5e-8, 1e-6);
+      s.compressibility = c;
+      desc << " air=" << fmt(c.air_volume);
+    } else if (e == "fluid_inertia") {
+      s.inertance = log_uniform(rng, 2e8, 2e9);
+      desc << " L=" << fmt(*s.inertance);
+    } else if (e == "magnetic_hysteresis") {
+      const double a = log_uniform(rng, 2.0, 10.0), dd = uniform(rng, 0.1, 0.6);
+      s.magnetic_hysteresis = diagnose::duhem_field(a, dd);
+      desc << " a=" << fmt(a) << " d=" << fmt(dd);
+    } else if (e == "eddy_currents") {
+      s.eddy_time_constant = log_uniform(rng, 0.008, 0.06);
+      desc << " tau=" << fmt(*s.eddy_time_constant);
+    } else if (e == "mr_response_time") {
+      s.mr_response_time = log_uniform(rng, 0.008, 0.06);
+      desc << " tau=" << fmt(*s.mr_response_time);
+    } else if (e == "coil_inductance") {
+      s.coil.inductance = log_uniform(rng, 0.05, 0.9);
+      desc << " L=" << fmt(s.coil.inductance);
+    } else if (e == "coil_heating") {
+      lumped::ThermalBlock th;
+      th.thermal_resistance = log_uniform(rng, 1.0, 8.0);
+      th.thermal_time_constant = uniform(rng, 1.5, 5.0);
+      s.coil_heating = th;
+      desc << " Rth=" << fmt(th.thermal_resistance) << " tau=" << fmt(th.thermal_time_constant);
+    } else if (e == "pre_yield") {
+      // The elastic pre-yield branch: a linear compliance V / K between the chambers.
+      lumped::ChamberBlock c = s.compressibility.value_or(lumped::ChamberBlock{});
+      c.oil_volume = 2e-5;
+      c.bulk_modulus = log_uniform(rng, 3e6, 1e8);
+      s.compressibility = c;
+      desc << " K=" << fmt(c.bulk_modulus);
+    } else if (e == "friction") {
+      s.coulomb_force = log_uniform(rng, 40.0, 400.0);
+      desc << " Fc=" << fmt(*s.coulomb_force);
+    }
   }
   d.noise_fraction = uniform(rng, 0.002, 0.015);
   desc << " noise=" << fmt(100 * d.noise_fraction) << "%";
+  if (nuisances) {
+    d.map_error = 0.15;
+    d.held = uniform(rng, 0.0, 1.0) < 0.5;
+    d.skew = uniform(rng, 0.0, 1.0) * (uniform(rng, 0.0, 1.0) < 0.5 ? -1.0 : 1.0);
+    d.drive_noise = uniform(rng, 0.001, 0.005);
+    // The recorder's static map is smoother at pre-yield than the sidecar's Bingham map.
+    if (s.kind != RigKind::coil_bench && peak_velocity > 0.0)
+      s.valve.regularisation_flow = uniform(rng, 0.005, 0.03) * s.piston_area * peak_velocity;
+    // Half of the clean voltage-driven draws have a coil inductance the sidecar states.
+    if (truth == "none" && voltage && uniform(rng, 0.0, 1.0) < 0.5) {
+      s.coil.inductance = log_uniform(rng, 0.05, 0.9);
+      d.state_inductance = true;
+      desc << " stated L=" << fmt(s.coil.inductance);
+    }
+    desc << (d.held ? " held" : " smooth") << " skew=" << fmt(d.skew)
+         << " drive_noise=" << fmt(100 * d.drive_noise) << "%"
+         << " preyield=" << fmt(s.valve.regularisation_flow);
+  }
   d.description = desc.str();
   return d;
+}
+
+/// Standard deviation of v.
+double spread(const std::vector<double>& v) {
+  double mean = 0.0, var = 0.0;
+  for (double x : v) mean += x;
+  mean /= static_cast<double>(v.size());
+  for (double x : v) var += (x - mean) * (x - mean);
+  return std::sqrt(var / static_cast<double>(v.size()));
+}
+
+/// Value of a sampled signal at time tt (linear interpolation, held at the ends).
+double at(const std::vector<double>& t, const std::vector<double>& v, double tt) {
+  if (tt <= t.front()) return v.front();
+  if (tt >= t.back()) return v.back();
+  const auto j = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), tt) - t.begin()) - 1;
+  const double w = (tt - t[j]) / (t[j + 1] - t[j]);
+  return (1.0 - w) * v[j] + w * v[j + 1];
+}
+
+/// What the recorder writes: the truth simulated on a 4x finer time base (drives smooth, or held
+/// between the recorder's samples), the output at the recorder's samples, the drives sampled
+/// `skew` samples late with noise.
+lumped::Recording record(const Draw& draw, std::mt19937& rng) {
+  if (!draw.nuisances) return lumped::simulate_rig(draw.spec, draw.drive);
+  constexpr int kFine = 4;
+  const auto& tc = draw.drive.t;
+  const double dt = tc[1] - tc[0];
+  lumped::Recording fine;
+  for (std::size_t k = 0; k + 1 < tc.size(); ++k)
+    for (int f = 0; f < kFine; ++f) fine.t.push_back(tc[k] + dt * f / kFine);
+  fine.t.push_back(tc.back());
+  for (const auto& [name, v] : draw.drive.columns) {
+    auto& out = fine.columns[name];
+    for (double tt : fine.t) {
+      // Held: the value of the last recorder sample; smooth: the drive between samples.
+      const double th =
+          draw.held ? tc.front() + dt * std::floor((tt - tc.front()) / dt + 1e-9) : tt;
+      out.push_back(at(tc, v, th));
+    }
+  }
+  const auto truth = lumped::simulate_rig(draw.spec, fine);
+  lumped::Recording rec = truth;
+  rec.t = tc;
+  for (auto& [name, v] : rec.columns) {
+    std::vector<double> coarse;
+    for (std::size_t k = 0; k < tc.size(); ++k) coarse.push_back(v[k * kFine]);
+    v = coarse;
+  }
+  for (const auto& c : rec.meta.drive) {
+    auto& v = rec.columns.at(c);
+    const auto& source = fine.columns.at(c);
+    const double sigma = draw.drive_noise * spread(draw.drive.columns.at(c));
+    std::normal_distribution<double> noise(0.0, sigma);
+    for (std::size_t k = 0; k < tc.size(); ++k)
+      v[k] = at(fine.t, source, tc[k] + draw.skew * dt) + (sigma > 0.0 ? noise(rng) : 0.0);
+  }
+  return rec;
 }
 
 /// Simulates the draw, adds noise and the sidecar map error, and runs the diagnosis.
@@ -183,43 +328,63 @@ Outcome run(const Draw& draw, unsigned seed) {
   o.description = draw.description;
   const auto started = std::chrono::steady_clock::now();
   try {
-    auto rec = lumped::simulate_rig(draw.spec, draw.drive);
+    auto rec = record(draw, rng);
     const std::string out = lumped::rig_output_column(draw.spec);
     auto& y = rec.columns.at(out);
-    double mean = 0.0, var = 0.0;
-    for (double v : y) mean += v;
-    mean /= static_cast<double>(y.size());
-    for (double v : y) var += (v - mean) * (v - mean);
-    std::normal_distribution<double> noise(
-        0.0, draw.noise_fraction * std::sqrt(var / static_cast<double>(y.size())));
+    std::normal_distribution<double> noise(0.0, draw.noise_fraction * spread(y));
     for (double& v : y) v += noise(rng);
+    // The achievable ceiling: the truth driven by the recorded (noisy, skewed) drives.
+    o.ceiling = lumped::fit_percent(y, lumped::simulate_rig(draw.spec, rec).columns.at(out));
+    const double e = draw.map_error;
     if (draw.spec.kind != RigKind::coil_bench) {
-      const double yield_error = uniform(rng, 0.9, 1.1), viscous_error = uniform(rng, 0.9, 1.1);
+      const double yield_error = uniform(rng, 1 - e, 1 + e),
+                   viscous_error = uniform(rng, 1 - e, 1 + e);
       for (double& p : rec.meta.valve.yield_pressure) p *= yield_error;
       *rec.meta.valve.viscous_resistance *= viscous_error;
       rec.meta.rig.chamber_volume = 2e-5;
     } else {
       *rec.meta.coil.resistance *= uniform(rng, 0.95, 1.05);
     }
-    rec.meta.coil.inductance.reset();
+    if (!draw.state_inductance) rec.meta.coil.inductance.reset();
     rec.csv_path = draw.truth + "_" + std::to_string(draw.index) + ".csv";
     rec.meta.sidecar_path = draw.truth + "_" + std::to_string(draw.index) + ".toml";
     const auto d = diagnose::diagnose(rec);
+    o.final_fit = d.final_fit_percent;
+    std::vector<std::string> truth_classes;
+    for (const auto& t : draw.effects) truth_classes.push_back(effect_class(t));
+    std::vector<std::string> named_classes;
     if (d.findings.empty()) {
       o.named = "none";
     } else {
       const auto& f = d.findings.front();
       o.named = diagnose::effect_name(f.effect);
       o.ambiguous = !f.ambiguous_with.empty();
-      o.truth_in_ambiguous = o.named == o.truth;
-      for (Effect e : f.ambiguous_with)
-        if (diagnose::effect_name(e) == o.truth) o.truth_in_ambiguous = true;
-      for (const auto& g : d.findings)
-        o.all_named += (o.all_named.empty() ? "" : "+") + diagnose::effect_name(g.effect);
+      o.truth_in_ambiguous =
+          std::find(draw.effects.begin(), draw.effects.end(), o.named) != draw.effects.end();
+      for (Effect a : f.ambiguous_with)
+        if (std::find(draw.effects.begin(), draw.effects.end(), diagnose::effect_name(a)) !=
+            draw.effects.end())
+          o.truth_in_ambiguous = true;
+      for (const auto& g : d.findings) {
+        o.all_named += (o.all_named.empty() ? "" : "+") + diagnose::effect_name(g.effect) + "(" +
+                       fmt(g.params.front()) + ")";
+        named_classes.push_back(effect_class(diagnose::effect_name(g.effect)));
+      }
     }
+    o.right = true;
+    for (const auto& t : truth_classes)
+      if (std::find(named_classes.begin(), named_classes.end(), t) == named_classes.end())
+        o.right = false;
+    // Anything named that was not concealed is false, and so is a second name for one
+    // concealed effect (two field lags for one time constant).
+    for (const auto& n : named_classes)
+      if (std::count(named_classes.begin(), named_classes.end(), n) >
+          std::count(truth_classes.begin(), truth_classes.end(), n))
+        o.false_finding = true;
   } catch (const std::exception& e) {
     o.named = "error";
     o.all_named = e.what();
+    o.false_finding = true;
   }
   o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return o;
@@ -229,6 +394,7 @@ Outcome run(const Draw& draw, unsigned seed) {
 
 int main(int argc, char** argv) {
   int draws = 20, threads = 1;
+  bool nuisances = true;
   unsigned seed = 2026;
   std::string only, csv;
   for (int k = 1; k + 1 < argc; k += 2) {
@@ -243,6 +409,8 @@ int main(int argc, char** argv) {
       only = v;
     else if (a == "--csv")
       csv = v;
+    else if (a == "--nuisances")
+      nuisances = std::atoi(v.c_str()) != 0;
     else {
       std::cerr << "unknown option " << a << "\n";
       return 2;
@@ -253,15 +421,17 @@ int main(int argc, char** argv) {
   for (int i = 0; i < draws; ++i)
     for (std::size_t c = 0; c < kTruths.size(); ++c)
       if (only.empty() || only == kTruths[c])
-        jobs.push_back(make_draw(
-            kTruths[c], i, seed + 1000u * static_cast<unsigned>(c) + static_cast<unsigned>(i)));
+        jobs.push_back(make_draw(kTruths[c], i,
+                                 seed + 1000u * static_cast<unsigned>(c) + static_cast<unsigned>(i),
+                                 nuisances));
   std::vector<Outcome> outcomes(jobs.size());
   std::atomic<std::size_t> next{0};
   std::mutex print;
   std::ofstream table;
   if (!csv.empty()) {
     table.open(csv);
-    table << "truth,index,named,ambiguous,truth_in_ambiguous,all_named,seconds,draw\n";
+    table << "truth,index,named,ambiguous,truth_in_ambiguous,right,false_finding,all_named,"
+             "final_fit,ceiling,seconds,draw\n";
   }
   auto worker = [&]() {
     for (std::size_t j = next++; j < jobs.size(); j = next++) {
@@ -270,11 +440,14 @@ int main(int argc, char** argv) {
       std::lock_guard<std::mutex> lock(print);
       std::cout << o.truth << " #" << jobs[j].index << " -> " << o.named
                 << (o.ambiguous ? " (ambiguous)" : "") << " [" << o.all_named << "] "
-                << fmt(o.seconds) << " s  " << o.description << std::endl;
+                << (o.right ? "right" : "MISSED") << (o.false_finding ? " FALSE" : "") << " FIT "
+                << fmt(o.final_fit) << "/" << fmt(o.ceiling) << " " << fmt(o.seconds) << " s  "
+                << o.description << std::endl;
       if (table.is_open())
         table << o.truth << ',' << jobs[j].index << ',' << o.named << ',' << o.ambiguous << ','
-              << o.truth_in_ambiguous << ",\"" << o.all_named << "\"," << o.seconds << ",\""
-              << o.description << "\"" << std::endl;
+              << o.truth_in_ambiguous << ',' << o.right << ',' << o.false_finding << ",\""
+              << o.all_named << "\"," << o.final_fit << ',' << o.ceiling << ',' << o.seconds
+              << ",\"" << o.description << "\"" << std::endl;
     }
   };
   std::vector<std::thread> pool;
@@ -287,10 +460,14 @@ int main(int argc, char** argv) {
   columns.push_back("error");
   std::map<std::string, std::map<std::string, int>> m;
   int total = 0, strict = 0, lenient = 0, clean = 0, false_findings = 0;
+  int right = 0, any_false = 0, near_ceiling = 0;
   double seconds = 0.0;
   for (const auto& o : outcomes) {
     m[o.truth][o.ambiguous ? "ambiguous" : o.named]++;
     seconds += o.seconds;
+    if (o.false_finding) ++any_false;
+    if (o.named != "error" && o.final_fit >= o.ceiling - 2.0) ++near_ceiling;
+    if (o.truth != "none" && o.right) ++right;
     if (o.truth == "none") {
       ++clean;
       if (o.named != "none") ++false_findings;
@@ -317,6 +494,14 @@ int main(int argc, char** argv) {
             << fmt(total ? 100.0 * lenient / total : 0.0) << " %)\n";
   std::cout << "clean draws: " << clean << "; false findings: " << false_findings << " ("
             << fmt(clean ? 100.0 * false_findings / clean : 0.0) << " %)\n";
+  const double all = static_cast<double>(outcomes.size());
+  std::cout << "concealed-effect draws with every concealed effect named: " << right << " / "
+            << total << " (" << fmt(total ? 100.0 * right / total : 0.0) << " %)\n";
+  std::cout << "recordings with any false finding: " << any_false << " / " << outcomes.size()
+            << " (" << fmt(all > 0 ? 100.0 * any_false / all : 0.0) << " %)\n";
+  std::cout << "final FIT within 2 points of the achievable ceiling: " << near_ceiling << " / "
+            << outcomes.size() << " (" << fmt(all > 0 ? 100.0 * near_ceiling / all : 0.0)
+            << " %)\n";
   std::cout << "diagnosis wall time: total " << fmt(seconds) << " s, mean "
             << fmt(outcomes.empty() ? 0.0 : seconds / static_cast<double>(outcomes.size()))
             << " s per recording\n";

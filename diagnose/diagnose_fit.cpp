@@ -24,22 +24,31 @@ double to_value(const ParamDef& d, double z) {
   return d.log_scale ? d.nominal * std::exp(z) : z * d.typical;
 }
 
-/// Residuals (model - measured) / output scale on the masked samples, as a Ceres cost.
+/// Residuals (model - measured) / output scale on the masked samples, as a Ceres cost. Its one
+/// parameter block holds the free parameters (internal units); held ones keep their start value.
 class SimulationCost : public ceres::CostFunction {
  public:
   SimulationCost(const DiagnosisModel& model, const std::vector<Effect>& effects,
                  const std::vector<ParamDef>& layout, const std::vector<bool>& mask, double scale,
-                 int threads)
-      : model_(model), effects_(effects), layout_(layout), scale_(scale), threads_(threads) {
+                 int threads, std::vector<std::size_t> free, std::vector<double> start)
+      : model_(model),
+        effects_(effects),
+        layout_(layout),
+        free_(std::move(free)),
+        start_(std::move(start)),
+        scale_(scale),
+        threads_(threads) {
     const auto n = model.measured().size();
     for (std::size_t k = 0; k < n; ++k)
       if (mask.empty() || mask[k]) index_.push_back(k);
     set_num_residuals(static_cast<int>(index_.size()));
-    mutable_parameter_block_sizes()->push_back(static_cast<int>(layout.size()));
+    mutable_parameter_block_sizes()->push_back(static_cast<int>(free_.size()));
   }
 
-  /// Residual vector at internal parameters z; false if the simulation fails.
-  bool residuals_at(const double* z, double* r) const {
+  /// Residual vector at free internal parameters zf; false if the simulation fails.
+  bool residuals_at(const double* zf, double* r) const {
+    std::vector<double> z = start_;
+    for (std::size_t c = 0; c < free_.size(); ++c) z[free_[c]] = zf[c];
     std::vector<double> values(layout_.size());
     for (std::size_t j = 0; j < layout_.size(); ++j) values[j] = to_value(layout_[j], z[j]);
     std::vector<double> y;
@@ -62,8 +71,8 @@ class SimulationCost : public ceres::CostFunction {
     if (!residuals_at(z, residuals)) return false;
     if (jacobians && jacobians[0]) {
       // One simulation per column; the columns are independent and share the threads.
-      const std::size_t p = layout_.size();
-      const std::size_t workers = std::min<std::size_t>(std::max(threads_, 1), p);
+      const std::size_t p = free_.size();
+      const std::size_t workers = std::min<std::size_t>(std::max<std::size_t>(threads_, 1), p);
       std::vector<char> ok(p, 1);
       auto columns = [&](std::size_t first) {
         for (std::size_t j = first; j < p; j += workers)
@@ -81,7 +90,7 @@ class SimulationCost : public ceres::CostFunction {
   /// Forward (or, where the model fails, backward) difference column j of the Jacobian.
   bool jacobian_column(const double* z, const double* residuals, std::size_t j,
                        double* jacobian) const {
-    const std::size_t p = layout_.size(), m = index_.size();
+    const std::size_t p = free_.size(), m = index_.size();
     std::vector<double> zz(z, z + p), r1(m);
     const double h = 1e-4;
     zz[j] = z[j] + h;
@@ -99,6 +108,8 @@ class SimulationCost : public ceres::CostFunction {
   const DiagnosisModel& model_;
   std::vector<Effect> effects_;
   std::vector<ParamDef> layout_;
+  std::vector<std::size_t> free_;  ///< layout indices of the free parameters
+  std::vector<double> start_;      ///< internal values of all parameters (held ones used)
   std::vector<std::size_t> index_;
   double scale_;
   int threads_ = 1;
@@ -138,13 +149,19 @@ ModelFit fit_model(const DiagnosisModel& model, const std::vector<Effect>& effec
     z[j] = std::clamp(to_internal(d, std::clamp(start[j], d.lower, d.upper)), lo[j], hi[j]);
   }
   const double scale = output_scale(model.measured());
-  auto* cost =
-      new SimulationCost(model, effects, fit.layout, settings.mask, scale, settings.threads);
+  std::vector<std::size_t> free;
+  for (std::size_t j = 0; j < p; ++j)
+    if (!(j < settings.fixed.size() && settings.fixed[j])) free.push_back(j);
+  const std::size_t nf = free.size();
+  std::vector<double> zf(nf);
+  for (std::size_t c = 0; c < nf; ++c) zf[c] = z[free[c]];
+  auto* cost = new SimulationCost(model, effects, fit.layout, settings.mask, scale,
+                                  settings.threads, free, z);
   ceres::Problem problem;
-  problem.AddResidualBlock(cost, nullptr, z.data());
-  for (std::size_t j = 0; j < p; ++j) {
-    problem.SetParameterLowerBound(z.data(), static_cast<int>(j), lo[j]);
-    problem.SetParameterUpperBound(z.data(), static_cast<int>(j), hi[j]);
+  problem.AddResidualBlock(cost, nullptr, zf.data());
+  for (std::size_t c = 0; c < nf; ++c) {
+    problem.SetParameterLowerBound(zf.data(), static_cast<int>(c), lo[free[c]]);
+    problem.SetParameterUpperBound(zf.data(), static_cast<int>(c), hi[free[c]]);
   }
   ceres::Solver::Options options;
   options.minimizer_type = ceres::TRUST_REGION;
@@ -155,9 +172,14 @@ ModelFit fit_model(const DiagnosisModel& model, const std::vector<Effect>& effec
   options.parameter_tolerance = 1e-7;
   options.logging_type = ceres::SILENT;
   options.num_threads = 1;
+  // Every parameter is bounded, so Ceres would follow each step with a projected line search
+  // whose trial points each cost a Jacobian (one simulation per parameter) - ten and more per
+  // iteration once a parameter sits at its bound. Unless asked for, the clamped step alone.
+  if (!settings.projected_line_search) options.max_num_line_search_step_size_iterations = 0;
   ceres::Solver::Summary summary;
-  ceres::Solve(options, &problem, &summary);
-  fit.converged = summary.termination_type == ceres::CONVERGENCE;
+  if (nf > 0) ceres::Solve(options, &problem, &summary);
+  fit.converged = nf == 0 || summary.termination_type == ceres::CONVERGENCE;
+  for (std::size_t c = 0; c < nf; ++c) z[free[c]] = zf[c];
 
   fit.values.resize(p);
   for (std::size_t j = 0; j < p; ++j) fit.values[j] = to_value(fit.layout[j], z[j]);
@@ -172,23 +194,52 @@ ModelFit fit_model(const DiagnosisModel& model, const std::vector<Effect>& effec
           ? model.measured().size()
           : static_cast<std::size_t>(std::count(settings.mask.begin(), settings.mask.end(), true));
 
-  // Standard errors from the Jacobian at the optimum: cov = s^2 (J^T J)^+ in internal units.
+  // Standard errors from the Jacobian at the optimum: cov = s^2 (J^T J)^-1 in internal units,
+  // over the free parameters that are not at a bound and add something independent.
   fit.standard_errors.assign(p, std::numeric_limits<double>::quiet_NaN());
   const int m = cost->num_residuals();
-  std::vector<double> r(m), jac(static_cast<std::size_t>(m) * p);
-  const double* params[] = {z.data()};
+  std::vector<double> r(m), jac(static_cast<std::size_t>(m) * nf);
+  const double* params[] = {zf.data()};
   double* jacs[] = {jac.data()};
-  if (settings.standard_errors && m > static_cast<int>(p) &&
+  if (settings.standard_errors && nf > 0 && m > static_cast<int>(nf) &&
       cost->Evaluate(params, r.data(), jacs)) {
     Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> J(
-        jac.data(), m, static_cast<int>(p));
-    const double s2 = fit.sse / (scale * scale) / static_cast<double>(m - static_cast<int>(p));
-    Eigen::MatrixXd info = J.transpose() * J;
-    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(info);
-    if (cod.rank() == static_cast<int>(p)) {
-      const Eigen::MatrixXd cov = s2 * cod.pseudoInverse();
-      for (std::size_t j = 0; j < p; ++j) {
-        const double sz = std::sqrt(std::max(cov(j, j), 0.0));
+        jac.data(), m, static_cast<int>(nf));
+    std::vector<int> interior;  // columns of J
+    for (std::size_t c = 0; c < nf; ++c) {
+      const std::size_t j = free[c];
+      const double margin = 1e-6 * std::max(hi[j] - lo[j], 1e-12);
+      if (z[j] > lo[j] + margin && z[j] < hi[j] - margin &&
+          J.col(static_cast<int>(c)).squaredNorm() > 0.0)
+        interior.push_back(static_cast<int>(c));
+    }
+    // Columns beyond the numerical rank of a column-pivoted QR are not identified: infinite
+    // standard error; the others' come from the rest.
+    Eigen::MatrixXd Ji(m, static_cast<int>(interior.size()));
+    for (std::size_t c = 0; c < interior.size(); ++c)
+      Ji.col(static_cast<int>(c)) = J.col(interior[c]);
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(Ji);
+    std::vector<int> kept;  // columns of J
+    for (int c = 0; c < static_cast<int>(interior.size()); ++c) {
+      bool independent = false;
+      for (int i = 0; i < static_cast<int>(qr.rank()); ++i)
+        if (qr.colsPermutation().indices()(i) == c) independent = true;
+      const int col = interior[static_cast<std::size_t>(c)];
+      if (independent)
+        kept.push_back(col);
+      else
+        fit.standard_errors[free[static_cast<std::size_t>(col)]] =
+            std::numeric_limits<double>::infinity();
+    }
+    if (!kept.empty()) {
+      Eigen::MatrixXd Jk(m, static_cast<int>(kept.size()));
+      for (std::size_t c = 0; c < kept.size(); ++c) Jk.col(static_cast<int>(c)) = J.col(kept[c]);
+      const double s2 =
+          fit.sse / (scale * scale) / static_cast<double>(m - static_cast<int>(kept.size()));
+      const Eigen::MatrixXd cov = s2 * (Jk.transpose() * Jk).inverse();
+      for (std::size_t c = 0; c < kept.size(); ++c) {
+        const std::size_t j = free[static_cast<std::size_t>(kept[c])];
+        const double sz = std::sqrt(std::max(cov(static_cast<int>(c), static_cast<int>(c)), 0.0));
         fit.standard_errors[j] =
             fit.layout[j].log_scale ? fit.values[j] * sz : fit.layout[j].typical * sz;
       }
@@ -197,13 +248,9 @@ ModelFit fit_model(const DiagnosisModel& model, const std::vector<Effect>& effec
   return fit;
 }
 
-std::vector<double> grid_start(const DiagnosisModel& model, const std::vector<Effect>& effects,
-                               std::vector<double> start, double* best_sse, int threads) {
-  const auto layout = model.layout(effects);
-  const std::size_t j = layout.size() - model.effect_params(effects.back()).size();
-  const auto& d = layout[j];
-  std::vector<double> grid;
-  for (double v = d.lower * 3.0; v <= d.upper; v *= 10.0) grid.push_back(v);
+std::vector<double> grid_search(const DiagnosisModel& model, const std::vector<Effect>& effects,
+                                std::vector<double> start, std::size_t j,
+                                const std::vector<double>& grid, double* best_sse, int threads) {
   std::vector<double> sse(grid.size(), std::numeric_limits<double>::infinity());
   const std::size_t workers = std::min<std::size_t>(std::max(threads, 1), grid.size());
   auto score = [&](std::size_t first) {
@@ -221,15 +268,23 @@ std::vector<double> grid_start(const DiagnosisModel& model, const std::vector<Ef
   score(0);
   for (auto& t : pool) t.join();
   double best = std::numeric_limits<double>::infinity();
-  double best_value = start[j];
   for (std::size_t g = 0; g < grid.size(); ++g)
     if (sse[g] < best) {
       best = sse[g];
-      best_value = grid[g];
+      start[j] = grid[g];
     }
-  start[j] = best_value;
   if (best_sse) *best_sse = best;
   return start;
+}
+
+std::vector<double> grid_start(const DiagnosisModel& model, const std::vector<Effect>& effects,
+                               std::vector<double> start, double* best_sse, int threads) {
+  const auto layout = model.layout(effects);
+  const std::size_t j = layout.size() - model.effect_params(effects.back()).size();
+  const auto& d = layout[j];
+  std::vector<double> grid;
+  for (double v = d.lower * 3.0; v <= d.upper; v *= 10.0) grid.push_back(v);
+  return grid_search(model, effects, std::move(start), j, grid, best_sse, threads);
 }
 
 }  // namespace rheomag::diagnose

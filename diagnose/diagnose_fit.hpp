@@ -26,6 +26,13 @@ struct FitSettings {
   std::vector<bool> mask;       ///< samples to fit; all when empty
   int threads = 1;              ///< threads sharing the Jacobian's columns (one simulation each)
   bool standard_errors = true;  ///< compute them (one more Jacobian) or leave them NaN
+  /// Parameters held at their start value (e.g. the baseline's calibrated nuisances while a
+  /// candidate is screened); empty: all free.
+  std::vector<bool> fixed;
+  /// Follow each clamped step with Ceres' projected line search (a Jacobian per trial point:
+  /// costly once a parameter sits at a bound, but it keeps the short fits on half the data of
+  /// the held-out check from jumping to another optimum).
+  bool projected_line_search = false;
 };
 
 /// Fits `effects` on top of the baseline, starting from `start` (SI values in the order of
@@ -37,6 +44,14 @@ ModelFit fit_model(const DiagnosisModel& model, const std::vector<Effect>& effec
 /// Sum of squared residuals of `prediction` on the samples of `mask` (all when empty).
 double masked_sse(const std::vector<double>& measured, const std::vector<double>& prediction,
                   const std::vector<bool>& mask);
+
+/// `start` with parameter j set to the value of `grid` where the model's squared error is least
+/// (returned in `best_sse` when given; models that cannot be simulated are skipped). The grid
+/// points share `threads` threads.
+std::vector<double> grid_search(const DiagnosisModel& model, const std::vector<Effect>& effects,
+                                std::vector<double> start, std::size_t j,
+                                const std::vector<double>& grid, double* best_sse = nullptr,
+                                int threads = 1);
 
 /// Best start for `effects.back()`'s first parameter: a decade grid over its bounds with the
 /// other values held at `start`; returns `start` with that parameter replaced and, in

@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "core/error.hpp"
+#include "diagnose/diagnose_noise.hpp"
 
 namespace rheomag::diagnose {
 
@@ -32,6 +33,8 @@ std::string effect_name(Effect effect) {
       return "mr_response_time";
     case Effect::friction:
       return "friction";
+    case Effect::pre_yield:
+      return "pre_yield";
   }
   return "";
 }
@@ -53,6 +56,10 @@ bool has(const std::vector<std::string>& list, const std::string& name) {
 DiagnosisModel::DiagnosisModel(const lumped::Recording& rec) : rec_(rec) {
   const auto& meta = rec.meta;
   const std::string where = meta.sidecar_path.empty() ? std::string("sidecar") : meta.sidecar_path;
+  auto include = [&](const std::string& name, double value, const std::string& unit,
+                     const std::string& source) {
+    includes_.push_back({name, value, unit, source});
+  };
   if (!meta.rig.kind)
     throw InputError(where +
                      ": [rig] kind is not given; expected one of constant_velocity_pump, "
@@ -69,6 +76,8 @@ DiagnosisModel::DiagnosisModel(const lumped::Recording& rec) : rec_(rec) {
     base_.voltage_column = has(meta.drive, "voltage") ? "voltage" : "command";
     auto gain = meta.rig.extra.find("driver_gain");
     base_.driver.gain = gain != meta.rig.extra.end() ? gain->second : 1.0;
+    if (gain != meta.rig.extra.end())
+      include("driver_gain", gain->second, "V/V", "sidecar [rig] driver_gain");
     if (!meta.coil.resistance)
       throw InputError(where +
                        ": [coil] resistance is missing; the baseline of a voltage-driven "
@@ -80,16 +89,38 @@ DiagnosisModel::DiagnosisModel(const lumped::Recording& rec) : rec_(rec) {
   } else {
     // No coil input recorded: the field is taken as constant and the static map's top current
     // stands for it (the calibrated yield scale absorbs the actual level).
-    if (meta.valve.yield_current.empty())
+    if (meta.valve.yield_current.empty() && meta.valve.case_file.empty())
       throw InputError(where +
                        ": [recording] drive names no coil input (current, current_cmd, "
                        "voltage or command) and [valve] has no yield_current table");
     base_.driver_mode = DriverMode::current_source;
-    rec_.columns["current"].assign(rec.t.size(), meta.valve.yield_current.back());
+    rec_.columns["current"].assign(
+        rec.t.size(), meta.valve.yield_current.empty() ? 1.0 : meta.valve.yield_current.back());
     constant_field_ = true;
   }
-  if (meta.coil.resistance) base_.coil.resistance_20c = *meta.coil.resistance;
-  base_.coil.inductance = 0.0;  // ideal coil
+  const bool voltage_driven = base_.driver_mode == DriverMode::voltage;
+  if (meta.coil.resistance) {
+    base_.coil.resistance_20c = *meta.coil.resistance;
+    include("coil_resistance", *meta.coil.resistance, "ohm",
+            voltage_driven ? "sidecar [coil] resistance (turns voltage into current)"
+                           : "sidecar [coil] resistance (no effect: the current is imposed)");
+  }
+  // Everything the sidecar states is in the baseline: a stated inductance makes the coil an
+  // L-R circuit, and coil_inductance is then no longer a candidate.
+  base_.coil.inductance = 0.0;
+  if (meta.coil.inductance && *meta.coil.inductance > 0.0) {
+    if (voltage_driven) base_.coil.inductance = *meta.coil.inductance;
+    include("coil_inductance", *meta.coil.inductance, "H",
+            voltage_driven ? "sidecar [coil] inductance (L-R coil)"
+                           : "sidecar [coil] inductance (no effect: the current is imposed)");
+  }
+  const auto& t = rec.t;
+  if (t.size() >= 2) {
+    std::vector<double> dt(t.size() - 1);
+    for (std::size_t k = 0; k + 1 < t.size(); ++k) dt[k] = t[k + 1] - t[k];
+    std::nth_element(dt.begin(), dt.begin() + static_cast<std::ptrdiff_t>(dt.size() / 2), dt.end());
+    sample_interval_ = dt[dt.size() / 2];
+  }
   if (base_.kind != RigKind::coil_bench) {
     if (!has(meta.drive, "velocity"))
       throw InputError(where + ": [recording] drive must include velocity for a " + kind_name +
@@ -99,27 +130,42 @@ DiagnosisModel::DiagnosisModel(const lumped::Recording& rec) : rec_(rec) {
                        ": [rig] piston_area is missing; the baseline needs it to turn "
                        "velocity into flow");
     base_.piston_area = *meta.rig.piston_area;
-    if (meta.valve.yield_current.empty() || meta.valve.yield_pressure.empty()) {
-      if (!meta.valve.case_file.empty())
-        throw InputError(where + ": [valve] case = \"" + meta.valve.case_file +
-                         "\": diagnose needs the static map (yield_current, yield_pressure, "
-                         "viscous_resistance); run the FE chain and give the map");
+    include("piston_area", base_.piston_area, "m^2", "sidecar [rig] piston_area");
+    for (double v : rec_.column("velocity"))
+      peak_flow_ = std::max(peak_flow_, std::abs(v) * base_.piston_area);
+    if (!meta.valve.yield_current.empty() && !meta.valve.yield_pressure.empty()) {
+      if (!meta.valve.viscous_resistance)
+        throw InputError(where + ": [valve] viscous_resistance is missing; the baseline needs it");
+      base_.valve.yield_current = meta.valve.yield_current;
+      base_.valve.yield_pressure = meta.valve.yield_pressure;
+      base_.valve.viscous_resistance = *meta.valve.viscous_resistance;
+      include("static_map", 0.0, "",
+              "sidecar [valve] yield_current/yield_pressure/viscous_resistance (Bingham table, "
+              "scale calibrated)" +
+                  std::string(meta.valve.case_file.empty()
+                                  ? ""
+                                  : "; the table is used, [valve] case is not run"));
+    } else if (!meta.valve.case_file.empty()) {
+      chain_map(where);
+    } else {
       throw InputError(where +
-                       ": [valve] yield_current and yield_pressure are missing; the "
-                       "baseline needs the valve's static map");
+                       ": [valve] yield_current and yield_pressure (or an FE case) are "
+                       "missing; the baseline needs the valve's static map");
     }
-    if (!meta.valve.viscous_resistance)
-      throw InputError(where + ": [valve] viscous_resistance is missing; the baseline needs it");
-    base_.valve.yield_current = meta.valve.yield_current;
-    base_.valve.yield_pressure = meta.valve.yield_pressure;
-    base_.valve.viscous_resistance = *meta.valve.viscous_resistance;
     if (meta.rig.chamber_volume) {
       chamber_volume_ = *meta.rig.chamber_volume;
       chamber_volume_given_ = true;
+      stiff_or_compliant_chambers();
     }
     if (base_.kind == RigKind::damper) {
       base_.rod_area = meta.rig.rod_area.value_or(0.0);
       base_.gas_force = meta.rig.gas_force.value_or(0.0);
+      if (meta.rig.gas_force)
+        include("gas_force", *meta.rig.gas_force, "N",
+                "sidecar [rig] gas_force (start of the calibrated force_offset)");
+      if (meta.rig.rod_area)
+        include("rod_area", *meta.rig.rod_area, "m^2",
+                "sidecar [rig] rod_area (stated; the lumped damper's flow uses piston_area only)");
     }
   }
   output_ = lumped::rig_output_column(base_);
@@ -132,13 +178,81 @@ DiagnosisModel::DiagnosisModel(const lumped::Recording& rec) : rec_(rec) {
     if (o->second != 1.0 && o->second != -1.0)
       throw InputError(where + ": [rig] orientation must be 1 or -1");
     for (double& y : measured_) y *= o->second;
+    include("orientation", o->second, "", "sidecar [rig] orientation");
   }
-  for (const auto& c : lumped::rig_drive_columns(base_)) (void)rec_.column(c);
+  for (const auto& c : lumped::rig_drive_columns(base_)) {
+    const auto& u = rec_.column(c);
+    if (!constant_field_ || c != "current") drive_noise_[c] = noise_sigma(u);
+  }
+  // A noisy velocity is smoothed before the model sees it: the inertance reads its slope, which
+  // white noise of std s makes noisy by sqrt(2) s / dt (errors in variables).
+  if (base_.kind != RigKind::coil_bench) {
+    const auto& v = rec_.column("velocity");
+    const auto [vmin, vmax] = std::minmax_element(v.begin(), v.end());
+    if (drive_noise_["velocity"] > kNoisyDrive * (*vmax - *vmin)) {
+      auto smooth = savitzky_golay(v, sample_interval_, kVelocityFilterHalfWidth);
+      rec_.columns["velocity"] = std::move(smooth.values);
+      velocity_filter_bandwidth_ = smooth.bandwidth;
+    }
+  }
+  // The pre-yield smoothness is a nuisance only where the flow reverses (beyond its noise).
+  if (base_.kind != RigKind::coil_bench) {
+    const auto& v = rec_.column("velocity");
+    const auto [vmin, vmax] = std::minmax_element(v.begin(), v.end());
+    const double floor = 5.0 * drive_noise_["velocity"];
+    smoothing_nuisance_ =
+        *vmin < -std::max(floor, 0.01 * *vmax) && *vmax > std::max(floor, 0.01 * -*vmin);
+  }
   const double mean = std::accumulate(measured_.begin(), measured_.end(), 0.0) /
                       static_cast<double>(measured_.size());
   double var = 0.0;
   for (double y : measured_) var += (y - mean) * (y - mean);
   output_rms_ = std::max(std::sqrt(var / static_cast<double>(measured_.size())), 1e-300);
+}
+
+void DiagnosisModel::chain_map(const std::string& where) {
+  // The FE chain (field -> yield stress along the gaps -> exact gap flow), tabulated once over
+  // the recording's current and flow range; its yield and viscous parts are calibrated.
+  base_.valve.case_file = rec_.meta.valve.case_file;
+  base_.valve.regularisation_flow = 1e-3 * std::max(peak_flow_, 1e-12);
+  try {
+    base_ = lumped::with_chain_map(base_, rec_);
+  } catch (const InputError& e) {
+    throw InputError(where + ": [valve] case = \"" + base_.valve.case_file +
+                     "\" cannot be used as the baseline: " + e.what());
+  } catch (const std::exception& e) {
+    throw InputError(where + ": [valve] case = \"" + base_.valve.case_file +
+                     "\" does not solve: " + e.what());
+  }
+  fe_chain_ = true;
+  includes_.push_back({"static_map", 0.0, "",
+                       "sidecar [valve] case = \"" + base_.valve.case_file +
+                           "\" (FE chain tabulated on " +
+                           std::to_string(base_.valve.chain->current.size()) + " currents x " +
+                           std::to_string(base_.valve.chain->flow.size()) +
+                           " flows; yield and viscous scales calibrated)"});
+}
+
+void DiagnosisModel::stiff_or_compliant_chambers() {
+  // The oil's own compliance (bulk modulus 1.5 GPa) makes a lag R C_oil / 2 between the two
+  // chambers. Shorter than a tenth of a sample it is the stiff fluid of the baseline.
+  lumped::ChamberBlock oil;
+  oil.oil_volume = chamber_volume_;
+  const double resistance =
+      fe_chain_ ? base_.valve.chain->viscous_resistance : base_.valve.viscous_resistance;
+  const double lag = 0.5 * resistance * oil.capacitance(oil.precharge);
+  if (lag >= 0.1 * sample_interval_) {
+    base_.compressibility = oil;
+    includes_.push_back({"chamber_volume", chamber_volume_, "m^3",
+                         "sidecar [rig] chamber_volume (oil compliance simulated: lag " +
+                             std::to_string(1e3 * lag) + " ms)"});
+  } else {
+    includes_.push_back({"chamber_volume", chamber_volume_, "m^3",
+                         "sidecar [rig] chamber_volume (oil compliance lag " +
+                             std::to_string(1e3 * lag) +
+                             " ms < 0.1 sample: stiff fluid; the compressibility candidate adds "
+                             "air to it)"});
+  }
 }
 
 lumped::DuhemBlock duhem_field(double a, double d) {
@@ -155,10 +269,14 @@ std::vector<Effect> DiagnosisModel::applicable_effects() const {
   std::vector<Effect> out;
   if (base_.kind != RigKind::coil_bench) {
     out.push_back(Effect::compressibility);
-    // Inertia needs acceleration: not on a constant-velocity drive.
+    // The pre-yield branch shows where the flow reverses and the plug re-forms.
+    if (smoothing_nuisance_) out.push_back(Effect::pre_yield);
+    // Inertia needs acceleration: not on a constant-velocity drive (a velocity that moves only
+    // by its noise is constant).
     const auto& v = rec_.column("velocity");
     const auto [vmin, vmax] = std::minmax_element(v.begin(), v.end());
-    if (*vmax - *vmin > 1e-6 * std::max(std::abs(*vmax), std::abs(*vmin)))
+    const double noise = drive_noise_.count("velocity") ? drive_noise_.at("velocity") : 0.0;
+    if (*vmax - *vmin > std::max(10.0 * noise, 1e-6 * std::max(std::abs(*vmax), std::abs(*vmin))))
       out.push_back(Effect::fluid_inertia);
     out.push_back(Effect::mr_response_time);
     out.push_back(Effect::eddy_currents);
@@ -168,7 +286,8 @@ std::vector<Effect> DiagnosisModel::applicable_effects() const {
       out.push_back(Effect::magnetic_hysteresis);
   }
   if (base_.driver_mode == DriverMode::voltage) {
-    out.push_back(Effect::coil_inductance);
+    // A stated inductance is in the baseline already.
+    if (!(base_.coil.inductance > 0.0)) out.push_back(Effect::coil_inductance);
     out.push_back(Effect::coil_heating);
   }
   if (base_.kind == RigKind::damper) out.push_back(Effect::friction);
@@ -180,15 +299,34 @@ std::vector<ParamDef> DiagnosisModel::static_params() const {
   if (base_.kind == RigKind::coil_bench) {
     const double r = base_.coil.resistance_20c;
     p.push_back({"coil_resistance", r, 0.2 * r, 5.0 * r, true, 1.0});
-    return p;
+  } else {
+    p.push_back({"yield_scale", 1.0, 0.05, 20.0, false, 1.0});
+    if (fe_chain_) {
+      p.push_back({"viscous_scale", 1.0, 1e-2, 1e2, true, 1.0});
+    } else {
+      const double rv = base_.valve.viscous_resistance;
+      p.push_back({"viscous_resistance", rv, rv * 1e-2, rv * 1e2, true, 1.0});
+    }
+    if (base_.kind == RigKind::damper)
+      p.push_back({"force_offset", base_.gas_force, base_.gas_force - 10.0 * output_rms_,
+                   base_.gas_force + 10.0 * output_rms_, false, output_rms_});
   }
-  p.push_back({"yield_scale", 1.0, 0.05, 20.0, false, 1.0});
-  const double rv = base_.valve.viscous_resistance;
-  p.push_back({"viscous_resistance", rv, rv * 1e-2, rv * 1e2, true, 1.0});
-  if (base_.kind == RigKind::damper)
-    p.push_back({"force_offset", base_.gas_force, base_.gas_force - 10.0 * output_rms_,
-                 base_.gas_force + 10.0 * output_rms_, false, output_rms_});
+  // Nuisances: a delay of up to two samples between the output and the drives (channel skew,
+  // and a zero-order-held drive, which acts as half a sample), and the static map's pre-yield
+  // smoothness (width of its plug switch, a fraction of the peak flow).
+  const double dt = sample_interval_;
+  p.push_back({"delay", 0.0, -kMaxDelaySamples * dt, kMaxDelaySamples * dt, false, dt});
+  if (smoothing_nuisance_) {
+    const double q = peak_flow_;
+    p.push_back({"preyield_flow",
+                 std::clamp(base_.valve.regularisation_flow, 1e-5 * q, kMaxPreyieldFraction * q),
+                 1e-5 * q, kMaxPreyieldFraction * q, true, 1.0});
+  }
   return p;
+}
+
+std::size_t DiagnosisModel::nuisance_count() const {
+  return smoothing_nuisance_ ? 2 : 1;
 }
 
 std::vector<ParamDef> DiagnosisModel::effect_params(Effect effect) const {
@@ -219,6 +357,12 @@ std::vector<ParamDef> DiagnosisModel::effect_params(Effect effect) const {
     case Effect::friction:
       return {
           {"coulomb_force", 0.05 * output_rms_, 1e-6 * output_rms_, 10.0 * output_rms_, true, 1.0}};
+    case Effect::pre_yield: {
+      // Linear compliance per chamber [m^3/Pa], from the oil's own (V / 1.5 GPa) to that of a
+      // 0.1 MPa gas (an elastic plug softer than any fluid column).
+      const double bulk = lumped::ChamberBlock{}.bulk_modulus, oil = chamber_volume_ / bulk;
+      return {{"compliance", 100.0 * oil, oil, oil * bulk / 1e5, true, 1.0}};
+    }
     case Effect::magnetic_hysteresis: {
       // Duhem in field-equivalent amperes: a [1/A] (a large a closes the loop), d [-] the
       // reversible fraction of the slope; the loop's half width is (1 - d) / a.
@@ -249,9 +393,15 @@ RigSpec DiagnosisModel::spec(const std::vector<Effect>& effects,
     s.coil.resistance_20c = values.at(k++);
   } else {
     s.valve.yield_scale = values.at(k++);
-    s.valve.viscous_resistance = values.at(k++);
+    if (fe_chain_)
+      s.valve.viscous_scale = values.at(k++);
+    else
+      s.valve.viscous_resistance = values.at(k++);
     if (s.kind == RigKind::damper) s.gas_force = values.at(k++);
   }
+  ++k;  // delay: applied to the output (predict)
+  if (smoothing_nuisance_) s.valve.regularisation_flow = values.at(k++);
+  double linear_compliance = 0.0;
   for (Effect e : effects) {
     switch (e) {
       case Effect::compressibility: {
@@ -287,22 +437,56 @@ RigSpec DiagnosisModel::spec(const std::vector<Effect>& effects,
         s.magnetic_hysteresis = duhem_field(values.at(k), values.at(k + 1));
         k += 2;
         break;
+      case Effect::pre_yield:
+        linear_compliance = values.at(k++);
+        break;
     }
+  }
+  // The pre-yield branch is a linear compliance between the chambers: the oil's bulk modulus
+  // softened to V / C (any air of the compressibility candidate stays on top of it).
+  if (linear_compliance > 0.0) {
+    lumped::ChamberBlock chamber = s.compressibility.value_or(lumped::ChamberBlock{});
+    chamber.oil_volume = chamber_volume_;
+    chamber.bulk_modulus = chamber_volume_ / linear_compliance;
+    s.compressibility = chamber;
   }
   return s;
 }
 
+std::vector<double> DiagnosisModel::delayed(std::vector<double> y,
+                                            const std::vector<double>& values) const {
+  const double delay = values.at(static_params().size() - nuisance_count());
+  if (delay == 0.0) return y;
+  // y(t - delay) by linear interpolation between samples (held at the ends).
+  const auto& t = rec_.t;
+  std::vector<double> out(y.size());
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    const double tk = t[k] - delay;
+    auto it = std::upper_bound(t.begin(), t.end(), tk);
+    if (it == t.begin()) {
+      out[k] = y.front();
+    } else if (it == t.end()) {
+      out[k] = y.back();
+    } else {
+      const auto j = static_cast<std::size_t>(it - t.begin()) - 1;
+      const double w = (tk - t[j]) / (t[j + 1] - t[j]);
+      out[k] = (1.0 - w) * y[j] + w * y[j + 1];
+    }
+  }
+  return out;
+}
+
 std::vector<double> DiagnosisModel::predict(const std::vector<Effect>& effects,
                                             const std::vector<double>& values) const {
-  const auto sim = lumped::simulate_rig(spec(effects, values), rec_);
-  return sim.columns.at(output_);
+  auto sim = lumped::simulate_rig(spec(effects, values), rec_);
+  return delayed(std::move(sim.columns.at(output_)), values);
 }
 
 std::vector<double> DiagnosisModel::predict_column(const std::vector<Effect>& effects,
                                                    const std::vector<double>& values,
                                                    const std::string& column) const {
-  const auto sim = lumped::simulate_rig(spec(effects, values), rec_);
-  return sim.columns.at(column);
+  auto sim = lumped::simulate_rig(spec(effects, values), rec_);
+  return delayed(std::move(sim.columns.at(column)), values);
 }
 
 }  // namespace rheomag::diagnose

@@ -1,8 +1,11 @@
 #pragma once
-// The models the diagnosis compares with a recording: the baseline rig of the sidecar (stiff fluid,
-// ideal coil, calibrated static map) plus any set of candidate physics, each switched on in the
-// lumped rig (lumped/rig_model.hpp) with a few named SI parameters.
+// The models the diagnosis compares with a recording: the baseline rig of the sidecar (everything
+// it states, a calibrated static map from its table or its FE case, and the recording's
+// nuisances: a delay between output and drives, the static map's pre-yield smoothness) plus any
+// set of candidate physics, each switched on in the lumped rig (lumped/rig_model.hpp) with a few
+// named SI parameters.
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -20,11 +23,29 @@ enum class Effect {
   coil_inductance,
   coil_heating,
   mr_response_time,
-  friction
+  friction,
+  pre_yield  ///< the MR fluid's elastic pre-yield branch: a linear compliance before the plug
+             ///< yields
 };
 
 /// Name of an effect in the diagnosis output ("compressibility", ...).
 std::string effect_name(Effect effect);
+
+/// Largest delay between output and drives the baseline calibrates [samples]: channel skew and
+/// a drive recorded as held samples (half a sample) are recording nuisances, not physics.
+inline constexpr double kMaxDelaySamples = 2.0;
+
+/// Widest plug switch of the static map the baseline calibrates, as a fraction of the peak flow:
+/// a recorder's valve smoother at pre-yield than the Bingham map within this is a nuisance; what
+/// lies beyond is left to the pre_yield candidate.
+inline constexpr double kMaxPreyieldFraction = 0.03;
+
+/// A drive whose white noise exceeds this fraction of its range is noisy (see kVelocity...).
+inline constexpr double kNoisyDrive = 1e-4;
+
+/// Half width [samples] of the cubic Savitzky-Golay filter applied to a noisy velocity
+/// (diagnose_noise.hpp); the bandwidth it gives at the recording's rate is reported.
+inline constexpr std::size_t kVelocityFilterHalfWidth = 8;
 
 /// b2 [1/A] of the diagnosis's Duhem candidate: small, so f(i) = tanh(b2 i) / b2 is the current
 /// itself and the saturation stays in the calibrated valve map.
@@ -41,6 +62,14 @@ inline constexpr int kDiagnosisGridSubsteps = 1;
 /// The Duhem block of the magnetic_hysteresis candidate: field-equivalent current h with
 /// dh/dt = a |di/dt| (i - h) + d di/dt (paper 004 eqs. 2-3 with b1 b2 = 1, b2 -> 0).
 lumped::DuhemBlock duhem_field(double a, double d);
+
+/// One thing the baseline contains, and where it came from (reported as baseline.includes).
+struct BaselineItem {
+  std::string name;    ///< e.g. "coil_inductance"
+  double value = 0.0;  ///< SI (0 for non-numeric items such as the valve case)
+  std::string unit;    ///< SI unit of value ("" when dimensionless or not numeric)
+  std::string source;  ///< e.g. "sidecar [coil] inductance", with how it is used
+};
 
 /// One fitted parameter: its SI name, start value and bounds; log-scaled parameters are fitted as
 /// log(value / nominal) so that very different magnitudes share one trust region.
@@ -63,8 +92,12 @@ class DiagnosisModel {
   /// effects only when the coil is voltage driven).
   std::vector<Effect> applicable_effects() const;
 
-  /// Static (calibrated) parameters of the baseline: yield_scale, viscous_resistance, ...
+  /// Static (calibrated) parameters of the baseline: yield_scale, viscous_resistance (or
+  /// viscous_scale of an FE-chain map), force_offset, and the nuisances delay and preyield_flow.
   std::vector<ParamDef> static_params() const;
+
+  /// Number of static parameters that are nuisances (the last ones of static_params()).
+  std::size_t nuisance_count() const;
 
   /// Parameters an effect adds, with starting values scaled to this recording.
   std::vector<ParamDef> effect_params(Effect effect) const;
@@ -75,7 +108,7 @@ class DiagnosisModel {
   /// The rig spec for parameter values `values` (in the order of layout(effects)).
   lumped::RigSpec spec(const std::vector<Effect>& effects, const std::vector<double>& values) const;
 
-  /// Free-run model output at the recording's sample times.
+  /// Free-run model output at the recording's sample times, shifted by the delay nuisance.
   std::vector<double> predict(const std::vector<Effect>& effects,
                               const std::vector<double>& values) const;
 
@@ -98,6 +131,16 @@ class DiagnosisModel {
   bool chamber_volume_given() const { return chamber_volume_given_; }
   /// True when the recording has no coil input and the field is taken as constant.
   bool constant_field() const { return constant_field_; }
+  /// What the baseline contains from the sidecar (or the model it was given).
+  const std::vector<BaselineItem>& includes() const { return includes_; }
+  /// [s] median sample interval.
+  double sample_interval() const { return sample_interval_; }
+  /// [m^3/s] largest |piston flow| of the recording (0 on a coil bench).
+  double peak_flow() const { return peak_flow_; }
+  /// Standard deviation of the white noise on each drive column (SI).
+  const std::map<std::string, double>& drive_noise() const { return drive_noise_; }
+  /// [Hz] -3 dB bandwidth of the filter applied to a noisy velocity (0: used as recorded).
+  double velocity_filter_bandwidth() const { return velocity_filter_bandwidth_; }
 
  private:
   lumped::Recording rec_;
@@ -108,6 +151,20 @@ class DiagnosisModel {
   bool chamber_volume_given_ = false;
   bool constant_field_ = false;
   double output_rms_ = 1.0;
+  double sample_interval_ = 1.0;
+  double peak_flow_ = 0.0;
+  double velocity_filter_bandwidth_ = 0.0;
+  bool smoothing_nuisance_ = false;  ///< the flow reverses: the pre-yield smoothness is calibrated
+  bool fe_chain_ = false;  ///< the static map is the FE chain of [valve] case  ///< the flow
+                           ///< reverses: the pre-yield smoothness is calibrated
+  std::vector<BaselineItem> includes_;
+  std::map<std::string, double> drive_noise_;
+  /// Tabulates the FE chain of [valve] case as the static map (InputError naming it if it fails).
+  void chain_map(const std::string& where);
+  /// Puts the stated chambers' oil compliance in the baseline when it is not negligible.
+  void stiff_or_compliant_chambers();
+  /// Shifts `y` (at the recording's times) by the delay in `values`: y(t - delay).
+  std::vector<double> delayed(std::vector<double> y, const std::vector<double>& values) const;
 };
 
 }  // namespace rheomag::diagnose

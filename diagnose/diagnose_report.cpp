@@ -178,6 +178,33 @@ std::string diagnosis_html(const Diagnosis& d) {
     }
     o << "</table>\n";
   }
+  o << "<h2>Unexplained</h2>\n<p>" << num(100 * d.unexplained.share, 3)
+    << " % of the final residual energy lies above the white-noise floor (noise rms "
+    << num(d.unexplained.noise_sigma) << ", residual rms " << num(d.unexplained.residual_rms) << " "
+    << unit << "; that is " << num(100 * d.unexplained.baseline_share, 3)
+    << " % of the baseline's residual energy): no candidate explains it.</p>\n";
+  o << "<h2>What the baseline contained</h2>\n<table><tr><th>item</th><th>value</th>"
+       "<th>source</th></tr>\n";
+  for (const auto& item : d.includes)
+    o << "<tr><td>" << escape(item.name) << "</td><td>"
+      << (item.unit.empty() && item.value == 0.0 ? std::string("&ndash;")
+                                                 : num(item.value) + " " + escape(item.unit))
+      << "</td><td>" << escape(item.source) << "</td></tr>\n";
+  const auto& u = d.final_nuisance;
+  o << "</table>\n<h2>Recording nuisances (calibrated, not physics)</h2>\n<table>"
+    << "<tr><td>delay of the output behind the drives</td><td>" << num(1e3 * u.delay) << " ms ("
+    << num(u.delay_samples, 2) << " samples): " << escape(u.sampling) << "</td></tr>\n";
+  if (u.preyield_flow > 0.0)
+    o << "<tr><td>pre-yield smoothness of the static map</td><td>plug switch width "
+      << num(u.preyield_flow) << " m^3/s (" << num(100 * u.preyield_fraction, 2)
+      << " % of the peak flow)</td></tr>\n";
+  if (u.velocity_filter_bandwidth > 0.0)
+    o << "<tr><td>noisy velocity smoothed (cubic Savitzky-Golay, zero phase)</td><td>-3 dB at "
+      << num(u.velocity_filter_bandwidth) << " Hz</td></tr>\n";
+  for (const auto& [column, sigma] : u.drive_noise)
+    o << "<tr><td>noise on drive " << escape(column) << "</td><td>" << num(sigma)
+      << " (rms, SI)</td></tr>\n";
+  o << "</table>\n";
   o << "<h2>Measured, baseline and final model</h2>\n"
     << svg_plot("measured vs baseline vs final", ylabel, d.t,
                 {{"measured", "#999", &d.measured},

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "core/error.hpp"
+#include "diagnose/diagnose_noise.hpp"
 #include "lumped/metrics.hpp"
 
 namespace rheomag::diagnose {
@@ -101,6 +102,17 @@ void check_informative(const DiagnosisModel& model) {
                      "diagnose");
 }
 
+/// The baseline's nuisances held (true) in the layout of `effects`: while candidates are
+/// fitted and screened, the recording's timing and pre-yield smoothness stay as calibrated; the
+/// held-out folds and the final joint re-fit free them (a fold fitted with them held can land
+/// in another optimum and score a real effect as useless).
+std::vector<bool> nuisances_held(const DiagnosisModel& model, const std::vector<Effect>& effects) {
+  std::vector<bool> held(model.layout(effects).size(), false);
+  const std::size_t n_static = model.static_params().size();
+  for (std::size_t j = n_static - model.nuisance_count(); j < n_static; ++j) held[j] = true;
+  return held;
+}
+
 std::vector<bool> block_mask(std::size_t n, int blocks, bool even) {
   std::vector<bool> mask(n);
   for (std::size_t k = 0; k < n; ++k) {
@@ -123,6 +135,7 @@ double heldout_sse(const DiagnosisModel& model, const ModelFit& full, int blocks
       s.max_iterations = iterations;
       s.threads = threads > 1 ? std::max(threads / 2, 1) : 1;
       s.standard_errors = false;
+      s.projected_line_search = true;
       const auto f = fit_model(model, full.effects, full.values, s);
       auto other = s.mask;
       other.flip();
@@ -216,6 +229,14 @@ std::string evidence_for(Effect e, const Diagnosis& d, const ModelFit& fit) {
         << "); a Coulomb force of " << fmt(value("coulomb_force")) << " N explains it";
       break;
     }
+    case Effect::pre_yield:
+      o << fmt(100 * regime_share(d.mismatch, "flow reversal"), 2)
+        << " % of the residual energy sits at flow reversals, where the measured output rolls "
+           "over smoothly instead of jumping with the Bingham map: the fluid deforms elastically "
+           "before it yields; a linear compliance of "
+        << fmt(value("compliance")) << " m^3/Pa per chamber (the same at every amplitude, unlike "
+        << "air) explains it";
+      break;
     case Effect::magnetic_hysteresis: {
       double memory = 0.0;
       for (const auto& l : st.loops)
@@ -244,6 +265,10 @@ std::string separating_measurement(Effect a, Effect b) {
     return "both are one first-order lag between coil current and yield stress; measure the "
            "flux in the gap (search coil or Hall probe): eddy currents delay the flux behind the "
            "current, a slow MR response does not; or repeat with a laminated core";
+  if (pair(Effect::compressibility, Effect::pre_yield))
+    return "repeat at two amplitudes: entrained air stiffens as the pressure rises (isothermal "
+           "compliance V/p falls with the pressure), the elastic pre-yield branch does not; a "
+           "chamber pressure transducer shows air's curved pressure-volume path directly";
   if (pair(Effect::compressibility, Effect::fluid_inertia))
     return "change the frequency: a compliance lag shrinks with stiffer fluid and grows with the "
            "pressure swing, inertia grows with the square of the frequency";
@@ -258,6 +283,131 @@ std::string separating_measurement(Effect a, Effect b) {
            "flux loop directly";
   return "excite the device at several frequencies and amplitudes: the two effects scale "
          "differently with rate and amplitude";
+}
+
+/// A Duhem loop must be wider than this many noise standard deviations of the current.
+constexpr double kLoopNoiseRatio = 10.0;
+
+/// Most candidates tried for acceptance at one forward step (each costs a held-out check).
+constexpr std::size_t kMaxTries = 3;
+
+double size_relative_se(const DiagnosisModel& model, const ModelFit& fit, int threads);
+double resolved_time_constant(const DiagnosisModel& model, const ModelFit& fit);
+
+/// Why a candidate fit that lowered BIC is still not accepted ("" if nothing speaks against it
+/// before the held-out check): it removes too small a share of the residual energy above the
+/// noise floor (`share` returns the share), its time constant is shorter than a sample, or its
+/// size parameter is not identified.
+std::string rejection(const DiagnosisModel& model, const ModelFit& current, const ModelFit& fit,
+                      Effect effect, double delta_bic, double floor_sse,
+                      const DiagnoseOptions& options, double& share) {
+  const std::string head = effect_name(effect) + " lowered BIC by " + fmt(delta_bic);
+  // Practical significance: a material share of the residual energy above the noise floor.
+  const double excess = current.sse - floor_sse;
+  share = excess > 0.0 ? (current.sse - fit.sse) / excess : 0.0;
+  if (share < options.min_share)
+    return head + " but removed only " + fmt(100 * share, 2) +
+           " % of the residual energy above the noise floor: not accepted";
+  // A time constant shorter than one sample interval cannot be told from the recording's own
+  // timing (channel skew, held drives), which the delay nuisance already absorbs.
+  if (const double tau = resolved_time_constant(model, fit);
+      tau > 0.0 && tau < model.sample_interval())
+    return head + " with a time constant of " + fmt(1e3 * tau) +
+           " ms, shorter than one sample interval (" + fmt(1e3 * model.sample_interval()) +
+           " ms): not told apart from the recording's timing; not accepted";
+  // A hysteresis loop narrower than ten noise standard deviations of the current is what a
+  // Duhem block does to a noisy current (it follows the noise and low-passes it), not a loop.
+  if (effect == Effect::magnetic_hysteresis && model.drive_noise().count("current")) {
+    const std::size_t j = fit.layout.size() - 2;
+    const double half_width = (1.0 - fit.values[j + 1]) / fit.values[j];
+    const double noise = model.drive_noise().at("current");
+    if (half_width < kLoopNoiseRatio * noise)
+      return head + " with a loop half width (1 - d)/a of " + fmt(half_width) + " A, less than " +
+             fmt(kLoopNoiseRatio, 2) + " times the current's noise (" + fmt(noise) +
+             " A): not told apart from the noise; not accepted";
+  }
+  // Identifiability: the effect's size parameter known to a relative standard error below
+  // max_relative_se.
+  const double rse = size_relative_se(model, fit, options.threads);
+  if (!(rse < options.max_relative_se))
+    return head + " but its " + model.effect_params(effect).front().name +
+           " is not identified (relative standard error " +
+           (std::isfinite(rse) ? fmt(100 * rse, 2) + " %" : std::string("unbounded")) +
+           "): not accepted";
+  return "";
+}
+
+/// Static start values; the pre-yield smoothness (when calibrated) from a decade grid, since a
+/// plug switch much narrower than a sample's flow step leaves the error flat in it.
+std::vector<double> nuisance_start(const DiagnosisModel& model, int threads) {
+  const auto layout = model.static_params();
+  std::vector<double> start;
+  for (const auto& p : layout) start.push_back(p.nominal);
+  const std::size_t j = layout.size() - 1;
+  if (layout[j].name != "preyield_flow") return start;
+  std::vector<double> grid;
+  for (double v = layout[j].lower; v <= layout[j].upper * 1.0001; v *= std::sqrt(10.0))
+    grid.push_back(v);
+  return grid_search(model, {}, std::move(start), j, grid, nullptr, threads);
+}
+
+/// The nuisances of a fitted model.
+Nuisance nuisance_of(const DiagnosisModel& model, const ModelFit& fit) {
+  Nuisance u;
+  u.drive_noise = model.drive_noise();
+  u.velocity_filter_bandwidth = model.velocity_filter_bandwidth();
+  for (std::size_t j = 0; j < model.static_params().size(); ++j) {
+    if (fit.layout[j].name == "delay") u.delay = fit.values[j];
+    if (fit.layout[j].name == "preyield_flow") u.preyield_flow = fit.values[j];
+  }
+  u.delay_samples = u.delay / model.sample_interval();
+  if (model.peak_flow() > 0.0) u.preyield_fraction = u.preyield_flow / model.peak_flow();
+  const double frac = std::abs(u.delay_samples);
+  u.sampling = frac < 0.25
+                   ? "output and drives aligned (smooth, linearly interpolated drives)"
+                   : std::string(u.delay_samples > 0 ? "output behind" : "output ahead of") +
+                         " the drives by " + fmt(frac, 2) +
+                         " samples: channel skew, or drives recorded as held samples "
+                         "(a zero-order hold acts as half a sample); calibrated, not "
+                         "physics";
+  return u;
+}
+
+/// The time constant [s] the last effect of `fit` adds (field lags; L/R of a coil inductance),
+/// 0 for effects that are not a time constant.
+double resolved_time_constant(const DiagnosisModel& model, const ModelFit& fit) {
+  const Effect e = fit.effects.back();
+  const double size = fit.values[fit.layout.size() - model.effect_params(e).size()];
+  if (e == Effect::eddy_currents || e == Effect::mr_response_time) return size;
+  if (e == Effect::coil_inductance)
+    return size / model.spec(fit.effects, fit.values).coil.resistance_20c;
+  return 0.0;
+}
+
+/// Relative standard error of the size parameter (the first) of the last effect of `fit`.
+double size_relative_se(const DiagnosisModel& model, const ModelFit& fit, int threads) {
+  FitSettings s;
+  s.max_iterations = 0;
+  s.threads = threads;
+  s.fixed = nuisances_held(model, fit.effects);
+  const auto f = fit_model(model, fit.effects, fit.values, s);
+  const std::size_t j = f.layout.size() - model.effect_params(f.effects.back()).size();
+  const double v = std::abs(f.values[j]);
+  return v > 0.0 ? f.standard_errors[j] / v : std::numeric_limits<double>::infinity();
+}
+
+/// Share of the residual energy above the white-noise floor n sigma^2.
+Unexplained unexplained_of(const std::vector<double>& residual, double baseline_sse, double sigma) {
+  Unexplained u;
+  double sse = 0.0;
+  for (double r : residual) sse += r * r;
+  const auto n = static_cast<double>(residual.size());
+  u.noise_sigma = sigma;
+  u.residual_rms = std::sqrt(sse / n);
+  const double above = std::max(sse - n * sigma * sigma, 0.0);
+  u.share = sse > 0.0 ? above / sse : 0.0;
+  u.baseline_share = baseline_sse > 0.0 ? above / baseline_sse : 0.0;
+  return u;
 }
 
 }  // namespace
@@ -293,13 +443,14 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
   const std::size_t n = y.size();
 
   // 1. Baseline: calibrate the static parameters.
-  std::vector<double> start;
-  for (const auto& p : model.static_params()) start.push_back(p.nominal);
+  std::vector<double> start = nuisance_start(model, options.threads);
   FitSettings calib;
   calib.max_iterations = 50;
   calib.threads = options.threads;
   d.baseline = fit_model(model, {}, start, calib);
   d.baseline_fit_percent = fit_percent_of(y, d.baseline.prediction);
+  d.includes = model.includes();
+  d.nuisance = nuisance_of(model, d.baseline);
   stage("baseline calibration");
 
   // 2. Locate.
@@ -308,6 +459,10 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
   d.mismatch = locate_mismatch(model.recording(), residual);
   d.baseline_stats =
       residual_statistics(model.recording(), rec.meta.drive, y, d.baseline.prediction);
+  // The noise floor: the white part of the baseline's residual (output sensor noise and drive
+  // noise the static map passes through); no candidate can explain it.
+  const double sigma = noise_sigma(residual);
+  const double floor_sse = static_cast<double>(n) * sigma * sigma;
 
   // 3. Name: forward selection.
   ModelFit current = d.baseline;
@@ -363,7 +518,9 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
                               since(run_start), "screened out (no decade of its parameter helps)"});
           continue;
         }
-        auto f = fit_model(model, effects, s, settings);
+        auto candidate_settings = settings;
+        candidate_settings.fixed = nuisances_held(model, effects);
+        auto f = fit_model(model, effects, s, candidate_settings);
         const double db = bic_now - bic(f.sse, n, f.values.size());
         if (options.progress)
           options.progress({"step " + std::to_string(step + 1) + " " + effect_name(c), 0.0, 0.0,
@@ -381,31 +538,55 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
     std::stable_sort(tried.begin(), tried.end(),
                      [](const Tried& a, const Tried& b) { return a.delta_bic > b.delta_bic; });
     const auto ruled_out = prefer_by_measured_current(model, tried);
-    const auto& best = tried.front();
-    if (best.delta_bic <= options.bic_margin) break;
+    // The best candidate that passes every test is accepted; one that fails is noted and the
+    // next best (by BIC) is tried, up to kMaxTries of them.
     const int cv_iterations = std::max(options.max_iterations / 3, 5);
-    const double held_now = held_current >= 0.0 ? held_current
-                                                : heldout_sse(model, current, options.blocks,
-                                                              cv_iterations, options.threads);
-    const double held_new =
-        heldout_sse(model, best.fit, options.blocks, cv_iterations, options.threads);
-    stage("held-out check of " + effect_name(best.effect));
-    const double gain = held_now > 0 ? 1.0 - held_new / held_now : 0.0;
-    if (gain < options.heldout_margin) {
-      d.notes.push_back(effect_name(best.effect) + " lowered BIC by " + fmt(best.delta_bic) +
-                        " but cut the held-out error by only " + fmt(100 * gain, 2) +
-                        " %: not accepted");
+    std::vector<Effect> rejected;
+    double gain = 0.0, share = 0.0, held_new = 0.0;
+    std::size_t accepted = tried.size();
+    for (std::size_t i = 0; i < tried.size() && i < kMaxTries; ++i) {
+      const auto& c = tried[i];
+      if (c.delta_bic <= options.bic_margin) break;
+      const std::string why =
+          rejection(model, current, c.fit, c.effect, c.delta_bic, floor_sse, options, share);
+      if (!why.empty()) {
+        d.notes.push_back(why);
+        rejected.push_back(c.effect);
+        continue;
+      }
+      const double held_now = held_current >= 0.0 ? held_current
+                                                  : heldout_sse(model, current, options.blocks,
+                                                                cv_iterations, options.threads);
+      held_current = held_now;
+      held_new = heldout_sse(model, c.fit, options.blocks, cv_iterations, options.threads);
+      stage("held-out check of " + effect_name(c.effect));
+      gain = held_now > 0 ? 1.0 - held_new / held_now : 0.0;
+      if (gain < options.heldout_margin) {
+        d.notes.push_back(effect_name(c.effect) + " lowered BIC by " + fmt(c.delta_bic) +
+                          " but cut the held-out error by only " + fmt(100 * gain, 2) +
+                          " %: not accepted");
+        rejected.push_back(c.effect);
+        continue;
+      }
+      accepted = i;
       break;
     }
+    if (accepted == tried.size()) break;
+    std::swap(tried[0], tried[accepted]);
+    const auto& best = tried.front();
     Finding f;
     f.effect = best.effect;
     f.fit_percent = fit_percent_of(y, best.fit.prediction);
     f.delta_bic = best.delta_bic;
     f.heldout_gain = gain;
+    f.share = share;
     const double reduction = current.sse - best.fit.sse;
     for (std::size_t i = 1; i < tried.size(); ++i)
-      if (std::find(ruled_out.begin(), ruled_out.end(), tried[i].effect) != ruled_out.end() &&
-          tried[i].effect != best.effect) {
+      if (std::find(rejected.begin(), rejected.end(), tried[i].effect) != rejected.end()) {
+        continue;  // failed a test of its own: not an equally good explanation
+      } else if (std::find(ruled_out.begin(), ruled_out.end(), tried[i].effect) !=
+                     ruled_out.end() &&
+                 tried[i].effect != best.effect) {
         f.ruled_out_by_current.push_back(tried[i].effect);
       } else if (tried[i].fit.sse - best.fit.sse < 0.05 * reduction) {
         f.ambiguous_with.push_back(tried[i].effect);
@@ -419,15 +600,19 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
     held_current = held_new;
   }
 
-  // Re-fit all accepted effects together. The last forward step already fitted them all jointly;
-  // with one effect whose fit converged there is nothing left to polish.
+  // Re-fit all accepted effects together, with the nuisances free again (they were held while
+  // the candidates were compared); where that does not improve, keep the last forward step's fit
+  // (with its standard errors).
   if (!d.findings.empty()) {
-    const bool polish = d.findings.size() > 1 || !current.converged;
     FitSettings final_settings;
-    final_settings.max_iterations = polish ? 2 * options.max_iterations : 0;
+    final_settings.max_iterations = 2 * options.max_iterations;
     final_settings.threads = options.threads;
     auto refit = fit_model(model, current.effects, current.values, final_settings);
-    if (refit.sse <= current.sse || !polish) current = std::move(refit);
+    if (refit.sse > current.sse) {
+      final_settings.max_iterations = 0;
+      refit = fit_model(model, current.effects, current.values, final_settings);
+    }
+    current = std::move(refit);
   }
   stage("joint re-fit");
   d.final_fit = current;
@@ -435,6 +620,8 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
   d.final_stats = residual_statistics(model.recording(), rec.meta.drive, y, current.prediction);
   for (std::size_t k = 0; k < n; ++k) residual[k] = y[k] - current.prediction[k];
   d.final_mismatch = locate_mismatch(model.recording(), residual);
+  d.unexplained = unexplained_of(residual, d.baseline.sse, sigma);
+  d.final_nuisance = nuisance_of(model, current);
   std::size_t offset = model.static_params().size();
   for (auto& f : d.findings) {
     for (const auto& p : model.effect_params(f.effect)) {
@@ -461,6 +648,23 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
   return d;
 }
 
+namespace {
+
+nlohmann::json nuisance_json(const Nuisance& u) {
+  nlohmann::json j = {{"delay", u.delay},
+                      {"delay_samples", u.delay_samples},
+                      {"sampling", u.sampling},
+                      {"drive_noise", u.drive_noise},
+                      {"velocity_filter_bandwidth", u.velocity_filter_bandwidth}};
+  if (u.preyield_flow > 0.0) {
+    j["preyield_flow"] = u.preyield_flow;
+    j["preyield_fraction_of_peak_flow"] = u.preyield_fraction;
+  }
+  return j;
+}
+
+}  // namespace
+
 nlohmann::json diagnosis_json(const Diagnosis& d) {
   using nlohmann::json;
   auto params_of = [](const ModelFit& f, std::size_t from, std::size_t to) {
@@ -472,7 +676,15 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
   json out;
   out["recording"] = d.recording;
   out["baseline"] = {{"fit_percent", d.baseline_fit_percent},
-                     {"params", params_of(d.baseline, 0, n_static)}};
+                     {"params", params_of(d.baseline, 0, n_static)},
+                     {"includes", json::array()},
+                     {"nuisance", nuisance_json(d.nuisance)}};
+  for (const auto& item : d.includes)
+    out["baseline"]["includes"].push_back(
+        {{"name", item.name},
+         {"value", item.unit.empty() && item.value == 0.0 ? json() : json(item.value)},
+         {"unit", item.unit},
+         {"source", item.source}});
   out["mismatch"] = json::array();
   for (const auto& w : d.mismatch)
     out["mismatch"].push_back({{"t_start", w.t_start},
@@ -489,9 +701,13 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
     }
     if (f.effect == Effect::compressibility && !f.params.empty())
       p["hydraulic_capacitance"] = f.params[0] / 1e5;  // isothermal air at the 1e5 Pa precharge
-    json e = {{"name", effect_name(f.effect)}, {"params", p},
-              {"standard_errors", u},          {"fit_percent", f.fit_percent},
-              {"delta_bic", f.delta_bic},      {"heldout_gain", f.heldout_gain},
+    json e = {{"name", effect_name(f.effect)},
+              {"params", p},
+              {"standard_errors", u},
+              {"fit_percent", f.fit_percent},
+              {"delta_bic", f.delta_bic},
+              {"heldout_gain", f.heldout_gain},
+              {"share_of_residual_above_noise", f.share},
               {"evidence", f.evidence}};
     if (!f.ruled_out_by_current.empty()) {
       e["ruled_out_by_measured_current"] = json::array();
@@ -506,7 +722,12 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
     out["missing_physics"].push_back(e);
   }
   out["final"] = {{"fit_percent", d.final_fit_percent},
-                  {"params", params_of(d.final_fit, 0, d.final_fit.values.size())}};
+                  {"params", params_of(d.final_fit, 0, d.final_fit.values.size())},
+                  {"nuisance", nuisance_json(d.final_nuisance)}};
+  out["unexplained"] = {{"share_of_residual", d.unexplained.share},
+                        {"share_of_baseline_residual", d.unexplained.baseline_share},
+                        {"noise_floor_rms", d.unexplained.noise_sigma},
+                        {"residual_rms", d.unexplained.residual_rms}};
   json stats;
   stats["whiteness"] = {{"lag1_autocorrelation", d.baseline_stats.lag1_autocorrelation},
                         {"ljung_box_q", d.baseline_stats.ljung_box_q},

@@ -2,6 +2,7 @@
 // The diagnosis of one recording: calibrate the baseline, locate the mismatch, forward-select
 // candidate physics (held-out blocks + BIC), re-fit all accepted effects together.
 
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -19,6 +20,10 @@ struct DiagnoseOptions {
   int max_effects = 3;           ///< most effects forward selection may accept
   double bic_margin = 10.0;      ///< a candidate must lower BIC by more than this
   double heldout_margin = 0.03;  ///< ... and cut the held-out squared error by this fraction
+  /// ... and remove this share of the residual energy above the noise floor (practical
+  /// significance)
+  double min_share = 0.1;
+  double max_relative_se = 0.5;  ///< ... with its size parameter identified to this rel. error
   int blocks = 8;                ///< alternating time blocks for the two-fold held-out check
   int max_iterations = 15;       ///< Levenberg-Marquardt iterations per fit
   ProgressCallback progress;     ///< told each stage and candidate fit with its time (or none)
@@ -43,11 +48,31 @@ struct Finding {
   double fit_percent = 0.0;             ///< FIT% once this effect was added
   double delta_bic = 0.0;
   double heldout_gain = 0.0;  ///< fraction by which the held-out squared error fell
+  double share = 0.0;         ///< share of the residual energy above the noise floor it removed
   std::string evidence;
   std::vector<Effect> ambiguous_with;  ///< candidates that explain the data almost equally
   std::string separating_measurement;  ///< what would tell them apart
   /// candidates that fit the output as well but not the measured coil current
   std::vector<Effect> ruled_out_by_current;
+};
+
+/// The nuisances calibrated in the baseline (never named as physics).
+struct Nuisance {
+  double delay = 0.0;          ///< [s] output behind the drives (negative: ahead)
+  double delay_samples = 0.0;  ///< the same in sample intervals
+  std::string sampling;        ///< what the delay says about the drive's sampling convention
+  double preyield_flow = 0.0;  ///< [m^3/s] width of the static map's plug switch (0: not fitted)
+  double preyield_fraction = 0.0;             ///< preyield_flow / peak flow
+  std::map<std::string, double> drive_noise;  ///< column -> white-noise std (SI)
+  double velocity_filter_bandwidth = 0.0;     ///< [Hz] filter on a noisy velocity (0: none)
+};
+
+/// What the residual of the final model still holds that no candidate explains.
+struct Unexplained {
+  double noise_sigma = 0.0;     ///< white-noise std of the output's residual (SI)
+  double residual_rms = 0.0;    ///< rms residual of the final model (SI)
+  double share = 0.0;           ///< share of the final residual energy above the noise floor
+  double baseline_share = 0.0;  ///< the same energy as a share of the baseline's residual
 };
 
 /// The whole diagnosis.
@@ -58,6 +83,8 @@ struct Diagnosis {
   std::vector<double> measured;  ///< the measured output
   ModelFit baseline;
   double baseline_fit_percent = 0.0;
+  std::vector<BaselineItem> includes;  ///< what the baseline contained
+  Nuisance nuisance;                   ///< as calibrated in the baseline
   std::vector<MismatchWindow> mismatch;
   ResidualStats baseline_stats;
   std::vector<CandidateScore> candidates;
@@ -66,6 +93,8 @@ struct Diagnosis {
   double final_fit_percent = 0.0;
   ResidualStats final_stats;
   std::vector<MismatchWindow> final_mismatch;
+  Nuisance final_nuisance;  ///< the nuisances as re-fitted with the findings
+  Unexplained unexplained;
   std::vector<std::string> notes;
 };
 

@@ -281,8 +281,37 @@ class RigSystem : public OdeSystem {
       i_mr_ = -1, i_p1_ = -1, i_p2_ = -1, i_flow_ = -1;
 };
 
-/// The spec with its valve's chain map tabulated (once, over the drive's current and flow range)
-/// when the valve is an FE case.
+/// Steps per sample interval of the fixed grid: spec.grid_substeps, and grid_edge_substeps where a
+/// drive input changes by more than 5 % of its range within one interval (a current or command
+/// edge, whose transient and ramp a single step would smear) and by more than ten times its
+/// median change per interval (so that a drive's noise, e.g. on a constant velocity, is no edge).
+std::vector<int> grid_of(const RigSpec& spec, const DriveInputs& in) {
+  const auto& t = *in.t;
+  // Compliance and inertance together make an LC circuit that rings at kHz with oil: one step
+  // per sample would damp that ringing away, grid_edge_substeps everywhere follow it.
+  const int base = spec.compressibility && spec.inertance
+                       ? std::max(spec.grid_substeps, spec.grid_edge_substeps)
+                       : spec.grid_substeps;
+  std::vector<int> steps(t.size() - 1, base);
+  for (const auto* column : in.columns) {
+    if (!column) continue;
+    const auto [lo, hi] = std::minmax_element(column->begin(), column->end());
+    std::vector<double> change(t.size() - 1);
+    for (std::size_t k = 0; k + 1 < t.size(); ++k)
+      change[k] = std::abs((*column)[k + 1] - (*column)[k]);
+    const auto mid = change.begin() + static_cast<std::ptrdiff_t>(change.size() / 2);
+    std::nth_element(change.begin(), mid, change.end());
+    const double jump = std::max(0.05 * (*hi - *lo), 10.0 * *mid);
+    if (!(jump > 0.0)) continue;
+    for (std::size_t k = 0; k + 1 < t.size(); ++k)
+      if (std::abs((*column)[k + 1] - (*column)[k]) > jump)
+        steps[k] = std::max(base, spec.grid_edge_substeps);
+  }
+  return steps;
+}
+
+}  // namespace
+
 RigSpec with_chain_map(const RigSpec& spec, const Recording& drive) {
   RigSpec s = spec;
   if (s.valve.case_file.empty() || s.valve.chain || s.kind == RigKind::coil_bench) return s;
@@ -303,31 +332,6 @@ RigSpec with_chain_map(const RigSpec& spec, const Recording& drive) {
   s.valve.chain = tabulate_valve_chain(s.valve.case_file, i_max > 0.0 ? 1.05 * i_max : 1.0, q_max);
   return s;
 }
-
-/// Steps per sample interval of the fixed grid: spec.grid_substeps, and grid_edge_substeps where a
-/// drive input changes by more than 5 % of its range within one interval (a current or command
-/// edge, whose transient and ramp a single step would smear).
-std::vector<int> grid_of(const RigSpec& spec, const DriveInputs& in) {
-  const auto& t = *in.t;
-  // Compliance and inertance together make an LC circuit that rings at kHz with oil: one step
-  // per sample would damp that ringing away, grid_edge_substeps everywhere follow it.
-  const int base = spec.compressibility && spec.inertance
-                       ? std::max(spec.grid_substeps, spec.grid_edge_substeps)
-                       : spec.grid_substeps;
-  std::vector<int> steps(t.size() - 1, base);
-  for (const auto* column : in.columns) {
-    if (!column) continue;
-    const auto [lo, hi] = std::minmax_element(column->begin(), column->end());
-    const double jump = 0.05 * (*hi - *lo);
-    if (!(jump > 0.0)) continue;
-    for (std::size_t k = 0; k + 1 < t.size(); ++k)
-      if (std::abs((*column)[k + 1] - (*column)[k]) > jump)
-        steps[k] = std::max(base, spec.grid_edge_substeps);
-  }
-  return steps;
-}
-
-}  // namespace
 
 Recording simulate_rig(const RigSpec& spec_in, const Recording& drive) {
   if (drive.t.size() < 2) throw InputError("simulate: the drive needs at least 2 samples");

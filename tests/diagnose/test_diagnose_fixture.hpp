@@ -57,6 +57,8 @@ inline VirtualRecording make_recording(lumped::RigSpec truth, const lumped::Reco
   v.noise_ceiling = lumped::fit_percent(v.noisy.column(out), clean.column(out));
   for (double& p : v.noisy.meta.valve.yield_pressure) p *= 1.1;
   if (v.noisy.meta.valve.viscous_resistance) *v.noisy.meta.valve.viscous_resistance *= 0.9;
+  // A concealed coil inductance is not stated (a stated one is part of the baseline).
+  v.noisy.meta.coil.inductance.reset();
   // The sidecar names the chamber volume whether or not the truth had compliance.
   if (truth.kind != lumped::RigKind::coil_bench) v.noisy.meta.rig.chamber_volume = 2e-5;
   v.noisy.meta.sidecar_path = "virtual.toml";
