@@ -1,0 +1,123 @@
+// The `rheomag shear` command and `rheomag flow --wall-velocity / --kind slit`: JSON values
+// against the library, exit code 2 on bad input. Runs the built CLI (RHEOMAG_BINARY).
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "fluid/mixed_mode.hpp"
+#include "fluid/shear_mode.hpp"
+
+using namespace rheomag::fluid;
+
+namespace {
+
+struct CliRun {
+  int exit_code = -1;
+  std::string out;
+};
+
+CliRun run(const std::string& args) {
+  const std::string command = std::string(RHEOMAG_BINARY) + " " + args + " 2>/dev/null";
+  CliRun result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return result;
+  std::array<char, 512> buffer{};
+  while (fgets(buffer.data(), buffer.size(), pipe)) result.out += buffer.data();
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+double json_number(const std::string& json, const std::string& key) {
+  const std::regex pattern("\"" + key + "\": *([-+0-9.eE]+)");
+  std::smatch match;
+  if (!std::regex_search(json, match, pattern)) {
+    ADD_FAILURE() << "key " << key << " missing in " << json;
+    return NAN;
+  }
+  return std::stod(match[1]);
+}
+
+}  // namespace
+
+// Reference: the library call with the same inputs (the CLI prints 12 significant digits).
+TEST(CmdShear, DrumAndDiscJson) {
+  const CliRun drum =
+      run("shear --kind drum --r-in 0.02 --r-out 0.021 --length 0.03 --tau-y 2e4 --viscosity 0.1 "
+          "--speed 10 --json");
+  ASSERT_EQ(drum.exit_code, 0) << drum.out;
+  const ShearTorque t =
+      drum_torque(DrumGeometry{0.02, 0.021, 0.03}, GapRheology{2e4, 0.1, 1.0}, 10.0);
+  EXPECT_NEAR(json_number(drum.out, "torque") / t.torque, 1.0, 1e-10);
+  EXPECT_NEAR(json_number(drum.out, "torque_yield") / t.torque_yield, 1.0, 1e-9);
+  EXPECT_NEAR(json_number(drum.out, "torque_viscous") / t.torque_viscous, 1.0, 1e-10);
+  EXPECT_NEAR(json_number(drum.out, "yielded_fraction"), t.yielded_fraction, 1e-11);
+  const CliRun disc =
+      run("shear --kind disc --r-in 0.01 --r-out 0.05 --gap 1e-3 --faces 2 --tau-y 3e4 "
+          "--viscosity 0.1 --speed -50 --json");
+  ASSERT_EQ(disc.exit_code, 0) << disc.out;
+  const ShearTorque d =
+      disc_torque(DiscGeometry{0.01, 0.05, 1e-3, 2}, GapRheology{3e4, 0.1, 1.0}, -50.0);
+  EXPECT_NEAR(json_number(disc.out, "torque") / d.torque, 1.0, 1e-10);
+  EXPECT_LT(json_number(disc.out, "torque"), 0.0);
+  EXPECT_EQ(json_number(disc.out, "yielded_fraction"), 1.0);
+}
+
+// Reference: fluid::slit_mixed_mode / annulus_mixed_mode with the same inputs; the regime name.
+TEST(CmdShear, FlowWithWallVelocityAndSlit) {
+  const CliRun slit =
+      run("flow --kind slit --gap 1e-3 --width 0.05 --length 0.02 --tau-y 2e4 --viscosity 0.1 "
+          "--flow 1e-7 --wall-velocity 0.1 --json");
+  ASSERT_EQ(slit.exit_code, 0) << slit.out;
+  const MixedModeDrop s =
+      slit_mixed_mode(SlitGeometry{1e-3, 0.05, 0.02}, GapRheology{2e4, 0.1, 1.0}, 0.1, 1e-7);
+  EXPECT_NEAR(json_number(slit.out, "dp"), s.drop.dp, 1e-10 * std::abs(s.drop.dp));
+  EXPECT_NEAR(json_number(slit.out, "wall_velocity"), 0.1, 1e-15);
+  EXPECT_NE(slit.out.find("\"regime\": \"" + std::string(kMixedRegimeNames.name(s.regime)) + "\""),
+            std::string::npos)
+      << slit.out;
+  // A negative flow with a moving wall is a direction; dp may come out negative.
+  const CliRun back = run(
+      "flow --kind annular --gap 1e-3 --length 0.02 --radius 0.0195 --tau-y 2e4 --viscosity 0.1 "
+      "--flow -1e-6 --wall-velocity -0.1 --json");
+  ASSERT_EQ(back.exit_code, 0) << back.out;
+  EXPECT_LT(json_number(back.out, "dp"), 0.0);
+}
+
+TEST(CmdShear, BadInputExitsTwo) {
+  for (const std::string& args : std::vector<std::string>{
+           "shear --kind drum --r-in 0.02 --r-out 0.02 --length 0.03 --tau-y 1 --viscosity 0.1 "
+           "--speed 1",
+           "shear --kind drum --r-in 0.03 --r-out 0.02 --length 0.03 --tau-y 1 --viscosity 0.1 "
+           "--speed 1",
+           "shear --kind drum --r-in 0.02 --r-out 0.03 --length 0.03 --tau-y 1 --viscosity -0.1 "
+           "--speed 1",
+           "shear --kind drum --r-in 0.02 --r-out 0.03 --tau-y 1 --viscosity 0.1 --speed 1",
+           "shear --kind disc --r-in 0.01 --r-out 0.05 --gap 0 --tau-y 1 --viscosity 0.1 --speed 1",
+           "shear --kind disc --r-in 0.01 --r-out 0.05 --gap -1e-3 --tau-y 1 --viscosity 0.1 "
+           "--speed 1",
+           "shear --kind disc --r-in 0.01 --r-out 0.05 --gap 1e-3 --length 1 --tau-y 1 --viscosity "
+           "0.1 --speed 1",
+           "shear --kind cone --r-in 0.01 --r-out 0.05 --tau-y 1 --viscosity 0.1 --speed 1",
+           "flow --kind slit --gap 1e-3 --length 0.02 --tau-y 1 --viscosity 0.1 --flow 1e-6",
+           "flow --kind slit --gap 1e-3 --width 0.05 --length 0.02 --radius 0.01 --tau-y 1 "
+           "--viscosity 0.1 --flow 1e-6",
+           "flow --kind radial --gap 1e-3 --r-in 0.01 --r-out 0.02 --tau-y 1 --viscosity 0.1 "
+           "--flow 1e-6 --wall-velocity 0.1",
+           "flow --kind annular --gap 1e-3 --length 0.02 --radius 0.02 --tau-y 1 --viscosity 0.1 "
+           "--flow 1e-6 --wall-velocity 0.1 --model approx",
+           "flow --kind slit --gap 1e-3 --width 0.05 --length 0.02 --tau-y 1 --viscosity -0.1 "
+           "--flow 1e-6 --wall-velocity 0.1",
+       }) {
+    const CliRun r = run(args);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_TRUE(r.out.empty()) << args << " printed " << r.out;
+  }
+}
