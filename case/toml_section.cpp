@@ -90,6 +90,21 @@ double TomlSection::number_or(std::string_view key, double fallback) const {
   return number(key).value_or(fallback);
 }
 
+std::vector<double> TomlSection::numbers(std::string_view key) const {
+  const toml::node* n = node(key);
+  if (!n) return {};
+  const toml::array* array = n->as_array();
+  if (!array) return {*number(key)};
+  std::vector<double> out;
+  for (const toml::node& item : *array) {
+    const std::optional<double> value = item.value<double>();
+    if (!value || !std::isfinite(*value))
+      fail(key, "expected a number or a list of finite numbers");
+    out.push_back(*value);
+  }
+  return out;
+}
+
 double TomlSection::positive(std::string_view key) const {
   const std::optional<double> value = number(key);
   if (!value) fail(key, "missing; expected a positive number");

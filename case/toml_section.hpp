@@ -32,6 +32,9 @@ class TomlSection {
   std::optional<double> number(std::string_view key) const;
   /// A finite number, `fallback` when absent.
   double number_or(std::string_view key, double fallback) const;
+  /// A finite number or a list of finite numbers (`key = 1.0` or `key = [1.0, 2.0]`), empty
+  /// when absent; InputError otherwise.
+  std::vector<double> numbers(std::string_view key) const;
   /// A finite number > 0 (required); InputError otherwise.
   double positive(std::string_view key) const;
   /// A finite number > 0, `fallback` when absent.

@@ -22,60 +22,13 @@
 
 namespace rheomag::fluid {
 
-namespace {
-
-void check_samples(const GapFieldSamples& field, double start, double end, const char* what) {
-  const auto& x = field.position;
-  if (x.size() != field.b.size())
-    throw InputError(std::string(what) + ": " + std::to_string(x.size()) + " positions but " +
-                     std::to_string(field.b.size()) + " flux densities");
-  if (x.size() < 2) throw InputError(std::string(what) + ": needs at least 2 field samples");
-  const double slack = 1e-9 * (end - start);
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    if (!std::isfinite(x[i]) || !std::isfinite(field.b[i]))
-      throw InputError(std::string(what) + ": field sample " + std::to_string(i) +
-                       " is not finite");
-    if (x[i] < start - slack || x[i] > end + slack)
-      throw InputError(std::string(what) + ": field sample " + std::to_string(i) +
-                       " lies outside the gap");
-    if (i > 0 && !(x[i] > x[i - 1]))
-      throw InputError(std::string(what) + ": field sample positions must increase strictly");
-  }
-}
-
-/// int_start^end f ds with f known at the samples: trapezoid between samples, constant ends.
-double integrate_samples(const std::vector<double>& x, const std::vector<double>& f, double start,
-                         double end) {
-  double sum = f.front() * (x.front() - start) + f.back() * (end - x.back());
-  for (std::size_t i = 1; i < x.size(); ++i) sum += 0.5 * (f[i] + f[i - 1]) * (x[i] - x[i - 1]);
-  return sum;
-}
-
-/// Linear interpolation of the samples at `at` (held constant outside).
-double interpolate(const std::vector<double>& x, const std::vector<double>& f, double at) {
-  if (at <= x.front()) return f.front();
-  if (at >= x.back()) return f.back();
-  std::size_t i = 1;
-  while (x[i] < at) ++i;
-  const double w = (at - x[i - 1]) / (x[i] - x[i - 1]);
-  return f[i - 1] + w * (f[i] - f[i - 1]);
-}
-
-std::vector<double> magnitudes(const std::vector<double>& b) {
-  std::vector<double> out(b.size());
-  for (std::size_t i = 0; i < b.size(); ++i) out[i] = std::abs(b[i]);
-  return out;
-}
-
-}  // namespace
-
 FieldCoupledDrop annular_gap_in_field(const AnnulusGeometry& g, const GapFieldSamples& field,
                                       const Fluid& fluid, double flow) {
   validate(g);
   validate_flow(0.0, fluid.viscosity, flow);
-  check_samples(field, 0.0, g.length, "annular gap field");
+  check_field_samples(field, 0.0, g.length, "annular gap field");
   const auto& x = field.position;
-  const std::vector<double> b = magnitudes(field.b);
+  const std::vector<double> b = sample_magnitudes(field.b);
   const AnnulusGeometry unit{g.gap, g.radius, 1.0};  // dp of unit length = the gradient
   std::vector<double> gradient(x.size());
   for (std::size_t i = 0; i < x.size(); ++i)
@@ -84,7 +37,7 @@ FieldCoupledDrop annular_gap_in_field(const AnnulusGeometry& g, const GapFieldSa
   out.b_average = integrate_samples(x, b, 0.0, g.length) / g.length;
   out.average_b = annulus_bingham(g, fluid.yield_stress(out.b_average), fluid.viscosity, flow);
   const GapPressureDrop middle = annulus_bingham(
-      g, fluid.yield_stress(interpolate(x, b, 0.5 * g.length)), fluid.viscosity, flow);
+      g, fluid.yield_stress(interpolate_samples(x, b, 0.5 * g.length)), fluid.viscosity, flow);
   out.integrated.dp = integrate_samples(x, gradient, 0.0, g.length);
   out.integrated.dp_viscous = out.average_b.dp_viscous;
   out.integrated.dp_yield = out.integrated.dp - out.integrated.dp_viscous;
@@ -97,9 +50,9 @@ FieldCoupledDrop radial_gap_in_field(const RadialGeometry& g, const GapFieldSamp
                                      const Fluid& fluid, double flow) {
   validate(g);
   validate_flow(0.0, fluid.viscosity, flow);
-  check_samples(field, g.r_in, g.r_out, "radial gap field");
+  check_field_samples(field, g.r_in, g.r_out, "radial gap field");
   const auto& r = field.position;
-  const std::vector<double> b = magnitudes(field.b);
+  const std::vector<double> b = sample_magnitudes(field.b);
   // Yield part of dp/dr = c(Bi(r)) tau_y(r) / h at each sample (viscous part exact below).
   std::vector<double> yield_gradient(r.size());
   for (std::size_t i = 0; i < r.size(); ++i) {
@@ -112,7 +65,7 @@ FieldCoupledDrop radial_gap_in_field(const RadialGeometry& g, const GapFieldSamp
   out.b_average = integrate_samples(r, b, g.r_in, g.r_out) / (g.r_out - g.r_in);
   out.average_b = radial_bingham(g, fluid.yield_stress(out.b_average), fluid.viscosity, flow);
   const double r_mean = 0.5 * (g.r_in + g.r_out);
-  const double tau_mean = fluid.yield_stress(interpolate(r, b, r_mean));
+  const double tau_mean = fluid.yield_stress(interpolate_samples(r, b, r_mean));
   out.integrated.dp_viscous = out.average_b.dp_viscous;
   out.integrated.dp_yield = integrate_samples(r, yield_gradient, g.r_in, g.r_out);
   out.integrated.dp = out.integrated.dp_viscous + out.integrated.dp_yield;

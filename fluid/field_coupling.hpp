@@ -5,17 +5,11 @@
 
 #include <vector>
 
+#include "fluid/field_samples.hpp"
 #include "fluid/fluid.hpp"
 #include "fluid/gap.hpp"
 
 namespace rheomag::fluid {
-
-/// Flux density sampled along a gap's mid-line in the flow direction.
-struct GapFieldSamples {
-  std::vector<double> position;  ///< annular: axial distance from the gap start [m];
-                                 ///< radial: radius [m]; strictly increasing
-  std::vector<double> b;         ///< flux density magnitude driving tau_y (normal component) [T]
-};
 
 /// A gap's pressure drop both ways.
 struct FieldCoupledDrop {

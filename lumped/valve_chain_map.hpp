@@ -27,7 +27,9 @@ struct ChainMapTable {
   T yield_at(std::size_t k, const T& i) const;
 };
 
-/// Evaluates `case_file` with valve::ValveChain at `currents` x `flows` once and returns the table
+/// Evaluates `case_file` with valve::ValveChain (a damper piston case, one with a [damper] table:
+/// valve::DamperChain, its force minus the gas force over the piston area) at `currents` x
+/// `flows` once and returns the table
 /// (currents from 0 to max_current, flows log-spaced from 1e-3 to 1.5 times max_flow). Throws
 /// InputError if the case cannot be read or has no valve.
 std::shared_ptr<const ChainMapTable> tabulate_valve_chain(const std::string& case_file,

@@ -1,8 +1,5 @@
-// Solved valve: segment geometry from the gap rectangle in the meridian plane (GapResult
-// mid-line and area): annular: mean radius = mid-line r, length = its z extent, clearance =
-// area / length; radial: r_in..r_out = the mid-line's r extent (r_in raised to [valve]
-// inlet_radius), clearance = area / (r_out - r_in). |B_n| (B_r annular, B_z radial) is sampled at
-// kSamples mid-line points (cell centres of a uniform split) and fed to field_coupling.
+// Solved valve: the gaps' geometry and mid-line |B_n| from sample_gaps (sampled_gaps.hpp; radial
+// gaps start at [valve] inlet_radius), fed to field_coupling, then passages and losses.
 
 #include "valve/solved_valve.hpp"
 
@@ -18,30 +15,6 @@
 namespace rheomag::valve {
 
 namespace {
-
-constexpr int kSamples = 101;
-
-fluid::GapFieldSamples sample_gap(const magnetostatics::MagnetostaticSolver& solver,
-                                  const magnetostatics::Solution& solution,
-                                  const magnetostatics::GapResult& gap, double start_offset) {
-  fluid::GapFieldSamples field;
-  const double dr = gap.line_end.r - gap.line_start.r, dz = gap.line_end.z - gap.line_start.z;
-  const double length = std::hypot(dr, dz);
-  const bool annular = gap.kind == mesh::GapKind::annular;
-  for (int i = 0; i < kSamples; ++i) {
-    const double t = (i + 0.5) / kSamples;
-    const mesh::Point p{gap.line_start.r + t * dr, gap.line_start.z + t * dz};
-    std::array<double, 2> b{};
-    if (!magnetostatics::flux_density_at(solver, solution, p, gap.region, b)) continue;
-    const double position = annular ? t * length : p.r;
-    if (!annular && position < start_offset) continue;
-    field.position.push_back(position);
-    field.b.push_back(std::abs(annular ? b[0] : b[1]));
-  }
-  if (field.position.size() < 2)
-    throw InputError("gap \"" + gap.name + "\": fewer than 2 mid-line field samples found");
-  return field;
-}
 
 /// Bounding box (r_min, r_max, z_min, z_max) of the mesh elements of the region named `name`.
 std::array<double, 4> region_box(const magnetostatics::MagnetostaticSolver& solver,
@@ -152,30 +125,11 @@ SolvedValve::SolvedValve(const magnetostatics::MagnetostaticSolver& solver,
   double b_sum = 0.0;
   std::size_t b_count = 0;
   min_clearance_ = INFINITY;
-  for (const auto& result : results.gaps) {
-    Gap gap;
-    gap.name = result.name;
-    gap.annular = result.kind == mesh::GapKind::annular;
-    gap.field = sample_gap(solver, solution, result, gap.annular ? 0.0 : options_.inlet_radius);
+  gaps_ = sample_gaps(solver, solution, results, options_.inlet_radius);
+  for (const SampledGap& gap : gaps_) {
     for (double b : gap.field.b) b_sum += b;
     b_count += gap.field.b.size();
-    const double dr = std::abs(result.line_end.r - result.line_start.r);
-    const double dz = std::abs(result.line_end.z - result.line_start.z);
-    if (gap.annular) {
-      gap.annulus = fluid::AnnulusGeometry{result.area / dz, result.line_start.r, dz};
-      min_clearance_ = std::min(min_clearance_, gap.annulus.gap);
-    } else {
-      const double r_in =
-          std::max(std::min(result.line_start.r, result.line_end.r), options_.inlet_radius);
-      const double r_out = std::max(result.line_start.r, result.line_end.r);
-      if (!(r_in > 0.0))
-        throw InputError("gap \"" + result.name +
-                         "\" starts on the axis: set [valve] inlet_radius (m) to the radius "
-                         "where the flow enters it");
-      gap.radial = fluid::RadialGeometry{result.area / dr, r_in, r_out};
-      min_clearance_ = std::min(min_clearance_, gap.radial.gap);
-    }
-    gaps_.push_back(std::move(gap));
+    min_clearance_ = std::min(min_clearance_, gap.annular ? gap.annulus.gap : gap.radial.gap);
   }
   b_average_ = b_sum / static_cast<double>(b_count);
   for (const fluid::Passage& passage : options_.passages)
@@ -193,7 +147,7 @@ double SolvedValve::section_area(const fluid::MinorLoss& loss) const {
         throw InputError(what + " is radial: give radius (m) where the velocity is taken");
       return fluid::passage_area(p, loss.radius);
     }
-  for (const Gap& gap : gaps_) {
+  for (const SampledGap& gap : gaps_) {
     if (gap.name != loss.section) continue;
     if (gap.annular) return 2.0 * std::numbers::pi * gap.annulus.radius * gap.annulus.gap;
     if (!(loss.radius >= gap.radial.r_in && loss.radius <= gap.radial.r_out))
@@ -222,7 +176,7 @@ ValvePoint SolvedValve::evaluate(double flow, bool zero_field) const {
     point.inductance = inductance_;
     point.incremental_inductance = incremental_;
   }
-  for (const Gap& gap : gaps_) {
+  for (const SampledGap& gap : gaps_) {
     SegmentResult segment;
     segment.name = gap.name;
     fluid::GapFieldSamples field = gap.field;

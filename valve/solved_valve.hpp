@@ -12,6 +12,7 @@
 #include "magnetostatics/results.hpp"
 #include "magnetostatics/solver.hpp"
 #include "valve/coil.hpp"
+#include "valve/sampled_gaps.hpp"
 #include "valve/valve_chain.hpp"
 
 namespace rheomag::valve {
@@ -47,20 +48,13 @@ class SolvedValve {
   double min_clearance() const { return min_clearance_; }
 
  private:
-  struct Gap {
-    std::string name;
-    bool annular = true;
-    fluid::AnnulusGeometry annulus;
-    fluid::RadialGeometry radial;
-    fluid::GapFieldSamples field;
-  };
   struct Loss {
     fluid::MinorLoss loss;
     double area = 0.0;  ///< of the named section [m^2]
   };
   ValvePoint evaluate(double flow, bool zero_field) const;
   double section_area(const fluid::MinorLoss& loss) const;
-  std::vector<Gap> gaps_;
+  std::vector<SampledGap> gaps_;
   std::vector<fluid::Passage> passages_;  ///< dimensions resolved
   std::vector<Loss> losses_;
   fluid::Fluid fluid_;

@@ -12,9 +12,7 @@
 
 #include "case/toml_section.hpp"
 #include "core/error.hpp"
-#include "magnetostatics/domain.hpp"
-#include "magnetostatics/results.hpp"
-#include "mesh/mesher.hpp"
+#include "valve/field_solve.hpp"
 #include "valve/solved_valve.hpp"
 
 namespace rheomag::valve {
@@ -59,14 +57,7 @@ ValveChain::ValveChain(const cases::Case& c, ValveOptions options) : options_(st
   if (std::none_of(c.problem.geometry.regions.begin(), c.problem.geometry.regions.end(),
                    [](const mesh::RegionSeed& r) { return r.gap != mesh::GapKind::none; }))
     throw InputError(where + ": the case has no fluid gap");
-  // As magnetostatics::solve_problem, without its solve at the case's currents.
-  cases::Problem closed = magnetostatics::close_domain(c.problem);
-  mesh::MeshOptions mesh_options;
-  mesh_options.order = closed.order;
-  mesh_options.min_gap_elements = closed.min_gap_elements;
-  mesh::Mesh mesh = mesh::generate_mesh(closed.geometry, mesh_options);
-  solver_ =
-      std::make_unique<magnetostatics::MagnetostaticSolver>(std::move(closed), std::move(mesh));
+  solver_ = make_device_solver(c);
   coil_ = coil_spec(*solver_, options_);
 }
 
@@ -78,16 +69,9 @@ std::vector<ValvePoint> ValveChain::evaluate(const std::vector<double>& currents
     if (!(std::isfinite(flow) && flow > 0.0))
       throw InputError("valve: flow rates must be > 0 m^3/s");
   std::vector<ValvePoint> points;
-  const std::size_t circuits = solver_->problem().circuits.size();
   for (double current : currents) {
-    if (!std::isfinite(current)) throw InputError("valve: currents must be finite");
-    std::vector<double> per_circuit(circuits, 0.0);
-    for (std::size_t k = 1; k < circuits; ++k)
-      per_circuit[k] = solver_->problem().circuits[k].current;
-    per_circuit[0] = current;
-    const auto solution = solver_->solve(per_circuit);
-    const auto results = magnetostatics::compute_results(*solver_, solution);
-    const SolvedValve valve(*solver_, solution, results, fluid_, options_);
+    const DeviceField field = solve_at_current(*solver_, current);
+    const SolvedValve valve(*solver_, field.solution, field.results, fluid_, options_);
     for (double flow : flows) points.push_back(valve.point(flow));
   }
   return points;

@@ -1,0 +1,107 @@
+// Brake from a case (brake.hpp): annular gap regions are drums (the inner wall turns, the outer
+// is fixed), radial gap regions are single sheared disc faces; torques add.
+
+#include "valve/brake.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "case/toml_section.hpp"
+#include "core/error.hpp"
+#include "valve/field_solve.hpp"
+#include "valve/solved_valve.hpp"
+
+namespace rheomag::valve {
+
+BrakeOptions read_brake_options(const cases::Case& c) {
+  BrakeOptions o;
+  const cases::TomlSection top(c.table, "", c.source.string());
+  const auto brake = top.table("brake");
+  if (!brake) return o;
+  brake->allow_only({"speed", "inner_radius"});
+  o.inner_radius = brake->non_negative_or("inner_radius", 0.0);
+  o.speeds = brake->numbers("speed");
+  return o;
+}
+
+SolvedBrake::SolvedBrake(const magnetostatics::MagnetostaticSolver& solver,
+                         const magnetostatics::Solution& solution,
+                         const magnetostatics::Results& results, const fluid::Fluid& fluid,
+                         const BrakeOptions& options)
+    : fluid_(fluid) {
+  gaps_ = sample_gaps(solver, solution, results, options.inner_radius, "[brake] inner_radius");
+  if (gaps_.empty())
+    throw InputError(solver.problem().geometry.source + ": the brake case has no fluid gap");
+  if (!results.circuits.empty()) {
+    current_ = results.circuits.front().current;
+    inductance_ = results.circuits.front().inductance;
+  }
+}
+
+BrakePoint SolvedBrake::point(double speed) const {
+  if (!std::isfinite(speed)) throw InputError("brake: speeds must be finite");
+  BrakePoint p;
+  p.current = current_;
+  p.speed = speed;
+  p.inductance = inductance_;
+  double yielded_area = 0.0, area = 0.0;
+  for (const SampledGap& gap : gaps_) {
+    BrakeGapResult result;
+    result.name = gap.name;
+    double wetted = 0.0;
+    if (gap.annular) {
+      result.kind = "drum";
+      const fluid::DrumGeometry g{gap.annulus.inner(), gap.annulus.outer(), gap.annulus.length};
+      result.torque = fluid::drum_in_field(g, gap.field, fluid_, speed);
+      wetted = 2.0 * std::numbers::pi * g.r_in * g.length;
+    } else {
+      result.kind = "disc";
+      const fluid::DiscGeometry g{gap.radial.r_in, gap.radial.r_out, gap.radial.gap, 1};
+      result.torque = fluid::disc_in_field(g, gap.field, fluid_, speed);
+      wetted = std::numbers::pi * (g.r_out * g.r_out - g.r_in * g.r_in);
+    }
+    double sum = 0.0;
+    for (double b : gap.field.b) sum += b;
+    result.b_average = sum / static_cast<double>(gap.field.b.size());
+    p.torque.torque += result.torque.torque;
+    p.torque.torque_yield += result.torque.torque_yield;
+    p.torque.torque_viscous += result.torque.torque_viscous;
+    p.torque.breakaway_torque += result.torque.breakaway_torque;
+    yielded_area += result.torque.yielded_fraction * wetted;
+    area += wetted;
+    p.gaps.push_back(std::move(result));
+  }
+  p.torque.yielded_fraction = yielded_area / area;
+  return p;
+}
+
+BrakeChain::BrakeChain(const cases::Case& c, BrakeOptions options)
+    : options_(std::move(options)), valve_options_(read_valve_options(c)) {
+  const std::string where = c.source.string();
+  fluid_ = case_fluid(c);
+  if (c.problem.circuits.empty()) throw InputError(where + ": the case has no coil circuit");
+  solver_ = make_device_solver(c);
+  coil_ = coil_spec(*solver_, valve_options_);
+}
+
+std::vector<BrakePoint> BrakeChain::evaluate(const std::vector<double>& currents,
+                                             const std::vector<double>& speeds) {
+  if (currents.empty() || speeds.empty())
+    throw InputError("brake: needs at least one current and one speed");
+  std::vector<BrakePoint> points;
+  for (double current : currents) {
+    const DeviceField field = solve_at_current(*solver_, current);
+    const SolvedBrake brake(*solver_, field.solution, field.results, fluid_, options_);
+    for (double w : speeds) points.push_back(brake.point(w));
+  }
+  return points;
+}
+
+CoilProperties BrakeChain::coil(double current, double inductance) const {
+  if (valve_options_.wire.empty())
+    throw InputError("brake: the coil resistance needs the wire: set [valve] wire in the case");
+  return coil_properties(coil_, current, inductance);
+}
+
+}  // namespace rheomag::valve
