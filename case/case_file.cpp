@@ -191,11 +191,10 @@ TemplateValues read_template(const TomlSection& geometry, const ValveTemplate& v
 
 }  // namespace
 
-Case parse_case(const toml::table& table, const std::string& source,
-                const MaterialLibrary& library) {
+Case parse_case(toml::table table, const std::string& source, const MaterialLibrary& library) {
   Case result;
   result.source = source;
-  result.table = table;
+  result.table = std::move(table);
   const TomlSection top(result.table, "", source);
   std::vector<std::string_view> known{"case",   "solver",   "geometry",
                                       "region", "material", "circuit"};

@@ -54,8 +54,10 @@ struct Case {
   CaseInput input;                ///< the typed values `problem` was built from
 };
 
-/// Parses a case document (`source` names it in messages); InputError on any bad input.
-Case parse_case(const toml::table& table, const std::string& source,
+/// Parses a case document (`source` names it in messages); InputError on any bad input. The
+/// table is taken by value: a document parsed from text keeps its line numbers for messages
+/// only while it is moved, not copied (toml++ copies drop them).
+Case parse_case(toml::table table, const std::string& source,
                 const MaterialLibrary& library = MaterialLibrary::standard());
 
 /// Parses case text (`source` names it in messages); InputError on any bad input.

@@ -322,7 +322,7 @@ Case with(const Case& base, const std::vector<CaseEdit>& edits) {
         break;
     }
   }
-  if (reread) return parse_case(c.table, c.source.string(), *base.input.library);
+  if (reread) return parse_case(std::move(c.table), c.source.string(), *base.input.library);
   if (!only_currents(edits)) build_case(c);
   return c;
 }

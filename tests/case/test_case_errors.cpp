@@ -8,6 +8,7 @@
 #include <string>
 
 #include "case/case_file.hpp"
+#include "case/case_sections.hpp"
 #include "core/error.hpp"
 
 using namespace rheomag::cases;
@@ -194,6 +195,8 @@ TEST(CaseErrors, UnreadableFile) {
 
 // Sections of later links pass through and stay readable from Case::table.
 TEST(CaseErrors, LaterLinkSectionsPassThrough) {
+  // In the program the fluid layer registers [fluid]; this test links only the case layer.
+  register_case_section("fluid");
   const Case c = parse_case(valid + "[fluid]\nmodel = \"bingham\"\n", "ok.toml");
   EXPECT_EQ(c.table["fluid"]["model"].value_or(std::string()), "bingham");
 }

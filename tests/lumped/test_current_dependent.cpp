@@ -40,7 +40,7 @@ Recording sine_recording(double f, double current) {
   rec.columns["force"] = std::vector<double>(x.size(), 0.0);
   rec.meta.drive = {"displacement", "velocity", "current"};
   rec.meta.output = "force";
-  rec.meta.rig.kind = lumped::RigKind::damper;
+  rec.meta.rig.kind = rheomag::lumped::RigKind::damper;
   rec.csv_path = "sine_" + std::to_string(f) + "Hz_" + std::to_string(current) + "A.csv";
   return rec;
 }

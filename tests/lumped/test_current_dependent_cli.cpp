@@ -61,7 +61,7 @@ void write_lugre_recording(const std::string& path, double f, double current) {
   rec.columns["force"] = std::vector<double>(x.size(), 0.0);  // simulate_pheno reads the column
   rec.meta.drive = {"displacement", "velocity", "current"};
   rec.meta.output = "force";
-  rec.meta.rig.kind = lumped::RigKind::damper;
+  rec.meta.rig.kind = rheomag::lumped::RigKind::damper;
   GreyboxSetup setup = greybox_setup_for(rec, PhenoKind::lugre);
   setup.settings.eps = 1e-4;
   setup.settings.motion_scale = 0.05;

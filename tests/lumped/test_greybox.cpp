@@ -32,7 +32,7 @@ Recording synthetic_recording(double duration, double dt) {
   rec.columns["force"] = std::vector<double>(rec.t.size(), 0.0);
   rec.meta.drive = {"displacement", "velocity", "current"};
   rec.meta.output = "force";
-  rec.meta.rig.kind = lumped::RigKind::damper;
+  rec.meta.rig.kind = rheomag::lumped::RigKind::damper;
   rec.csv_path = "synthetic.csv";
   return rec;
 }

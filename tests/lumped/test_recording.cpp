@@ -67,7 +67,7 @@ TEST_F(RecordingFiles, ReadsAnyColumnOrderCommentsAndIgnoresUnknown) {
   EXPECT_DOUBLE_EQ(rec.column("velocity")[2], 0.03);
   EXPECT_EQ(rec.columns.count("extra"), 0u);
   EXPECT_EQ(rec.meta.output, "pressure");
-  EXPECT_EQ(rec.meta.rig.kind, lumped::RigKind::bypass_cylinder);
+  EXPECT_EQ(rec.meta.rig.kind, rheomag::lumped::RigKind::bypass_cylinder);
   EXPECT_DOUBLE_EQ(*rec.meta.rig.piston_area, 4.524e-4);
   EXPECT_DOUBLE_EQ(rec.meta.valve.yield_pressure[1], 5.8e6);
   EXPECT_DOUBLE_EQ(*rec.meta.coil.resistance, 8.9);
@@ -83,7 +83,7 @@ TEST_F(RecordingFiles, WriteThenReadIsIdentical) {
   rec.meta.description = "round trip";
   rec.meta.drive = {"velocity", "current"};
   rec.meta.output = "pressure";
-  rec.meta.rig.kind = lumped::RigKind::bypass_cylinder;
+  rec.meta.rig.kind = rheomag::lumped::RigKind::bypass_cylinder;
   rec.meta.rig.piston_area = 4.524e-4;
   rec.meta.valve.yield_current = {0.0, 1.0};
   rec.meta.valve.yield_pressure = {0.0, 5.8e6};
@@ -156,7 +156,7 @@ TEST(SharedRecordings, MrdamperParses) {
   EXPECT_EQ(rec.t.size(), 3499u);
   EXPECT_NEAR(rec.t[1] - rec.t[0], 0.005, 1e-12);
   EXPECT_EQ(rec.meta.output, "force");
-  EXPECT_EQ(rec.meta.rig.kind, lumped::RigKind::damper);
+  EXPECT_EQ(rec.meta.rig.kind, rheomag::lumped::RigKind::damper);
 }
 
 TEST(SharedRecordings, ExcerptKeepsColumnsTimesAndSidecar) {

@@ -52,7 +52,7 @@ TEST(Simulate, CliRoundTrip) {
   EXPECT_EQ(rec.t.size(), 1500u);
   EXPECT_EQ(rec.meta.output, "pressure");
   EXPECT_EQ(rec.meta.drive, (std::vector<std::string>{"velocity", "current"}));
-  EXPECT_EQ(rec.meta.rig.kind, lumped::RigKind::bypass_cylinder);
+  EXPECT_EQ(rec.meta.rig.kind, rheomag::lumped::RigKind::bypass_cylinder);
   EXPECT_NEAR(*rec.meta.rig.piston_area, 4.524e-4, 1e-7);  // paper 001: 452.4 mm^2
 
   Recording drive;

@@ -53,6 +53,6 @@ TEST(SolvedValve, EqualsValveChainAndGivesTheZeroFieldPath) {
   EXPECT_GT(valve.b_average(), 0.1);
   const auto spec = valve::coil_spec(*solved.solver, options);
   EXPECT_EQ(spec.turns, chain.turns());
-  EXPECT_EQ(spec.wire_diameter, fluid::wire_diameter("AWG 24"));
+  EXPECT_EQ(spec.wire_diameter, cases::wire_diameter("AWG 24"));
   EXPECT_THROW(valve.point(0.0), InputError);
 }
