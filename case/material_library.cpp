@@ -46,7 +46,7 @@ LibraryMaterial read_material(const TomlSection& section) {
   Material& m = result.magnetic;
   m.name = section.required_string("name");
   m.source = section.string("source").value_or("");
-  m.conductivity = section.non_negative_or("conductivity", 0.0);
+  if (section.has("conductivity")) m.conductivity = section.non_negative_or("conductivity", 0.0);
   if (section.has("bh") && section.has("mu_r"))
     section.fail("mu_r", "give either mu_r (linear) or bh (B-H table), not both");
   if (section.has("bh")) {

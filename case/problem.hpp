@@ -23,7 +23,7 @@ struct Material {
   std::string name;
   double mu_r = 1.0;          ///< relative permeability when `bh` is empty
   std::vector<BhPoint> bh;    ///< B-H table, B ascending from (0, 0); empty = linear
-  double conductivity = 0.0;  ///< electrical conductivity [S/m] (for eddy-current estimates)
+  std::optional<double> conductivity;  ///< electrical conductivity [S/m]; empty: not stated
   std::string source;         ///< where the data come from
 };
 

@@ -472,4 +472,30 @@ Eigen::VectorXd Assembler::circuit_source(int c) const {
   return source;
 }
 
+SparseMatrix Assembler::region_matrix(const std::vector<double>& region_coefficient,
+                                      bool curl) const {
+  SparseMatrix matrix = pattern_;
+  double* values = matrix.valuePtr();
+  const int m = mesh_.nodes_per_triangle();
+  ElementQuadrature q;
+  for (int e = 0; e < static_cast<int>(mesh_.triangles.size()); ++e) {
+    const double c = region_coefficient.at(mesh_.region[e]);
+    if (c == 0.0) continue;
+    quadrature(e, q);
+    const int* offsets = &element_offsets_[static_cast<std::size_t>(e) * m * m];
+    for (int p = 0; p < q.points; ++p) {
+      const double w = c * q.weight[p];
+      for (int i = 0; i < m; ++i) {
+        for (int j = 0; j < m; ++j) {
+          const int k = offsets[i * m + j];
+          if (k < 0) continue;
+          values[k] += w * (curl ? q.g_r[p][i] * q.g_r[p][j] + q.g_z[p][i] * q.g_z[p][j]
+                                 : q.n[p][i] * q.n[p][j]);
+        }
+      }
+    }
+  }
+  return matrix;
+}
+
 }  // namespace rheomag::magnetostatics

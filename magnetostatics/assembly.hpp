@@ -81,6 +81,10 @@ class Assembler {
   /// energy(a) restricted to the patch's triangles and edges [J] (differences between two `a`
   /// that agree outside patch.dofs equal those of energy).
   double patch_energy(const Patch& patch, const Eigen::VectorXd& a) const;
+  /// Lower triangle (the pattern of pattern()) of a constant-coefficient matrix over the free
+  /// dofs: integral c N_i N_j dV (`curl` false: a mass matrix) or integral c G_i . G_j dV
+  /// (`curl` true: as the linear stiffness), c = region_coefficient[region of the triangle].
+  SparseMatrix region_matrix(const std::vector<double>& region_coefficient, bool curl) const;
   /// True when some material has a B-H curve.
   bool nonlinear() const;
 

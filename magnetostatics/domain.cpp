@@ -20,6 +20,7 @@ int air_material(cases::Problem& p) {
   cases::Material air;
   air.name = "air";
   air.mu_r = 1.0;
+  air.conductivity = 0.0;
   air.source = "vacuum permeability (air: mu_r - 1 ~ 4e-7)";
   p.materials.push_back(air);
   return static_cast<int>(p.materials.size()) - 1;

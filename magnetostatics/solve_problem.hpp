@@ -20,6 +20,11 @@ struct SolveResult {
 };
 
 /// close_domain -> mesh::generate_mesh (order Problem::order, Problem::min_gap_elements) ->
+/// MagnetostaticSolver, without a solve (for callers that choose their own currents).
+std::unique_ptr<MagnetostaticSolver> make_solver(const cases::Problem& problem,
+                                                 const SolveOptions& options = {});
+
+/// close_domain -> mesh::generate_mesh (order Problem::order, Problem::min_gap_elements) ->
 /// MagnetostaticSolver -> solve at the Problem's circuit currents -> compute_results.
 /// Throws InputError for bad input and ConvergenceError if Newton fails.
 SolveResult solve_problem(const cases::Problem& problem, const SolveOptions& options = {});

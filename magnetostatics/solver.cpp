@@ -114,6 +114,12 @@ Eigen::VectorXd MagnetostaticSolver::free_to_nodes(const Eigen::VectorXd& x) con
   return a;
 }
 
+Eigen::VectorXd MagnetostaticSolver::nodes_to_free(const Eigen::VectorXd& a) const {
+  Eigen::VectorXd x(dofs_.free_count());
+  for (int d = 0; d < dofs_.free_count(); ++d) x[d] = a[dofs_.node_of_dof[d]];
+  return x;
+}
+
 void MagnetostaticSolver::prepare_jacobian(const Eigen::VectorXd& a_nodes) {
   if (linear_ && factorized_linear_) {
     factor_current_ = true;

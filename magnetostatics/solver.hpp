@@ -84,6 +84,10 @@ class MagnetostaticSolver {
   Eigen::VectorXd residual(const Eigen::VectorXd& a, const std::vector<double>& currents) const;
   /// Lower-triangular exact tangent dR/dA (free dofs) at nodal A.
   SparseMatrix tangent(const Eigen::VectorXd& a) const;
+  /// Nodal values of A from the free dofs `x` (prescribed values at the other nodes).
+  Eigen::VectorXd free_to_nodes(const Eigen::VectorXd& x) const;
+  /// The free dofs' values of nodal `a`.
+  Eigen::VectorXd nodes_to_free(const Eigen::VectorXd& a) const;
   /// Number of numeric factorisations done so far (symbolic analysis is done once).
   int factorizations() const { return factorizations_; }
   /// Conjugate-gradient iterations done with a reused factorisation so far.
@@ -101,7 +105,6 @@ class MagnetostaticSolver {
   class System;
   Solution solve_with(const std::vector<double>& currents, const Eigen::VectorXd* initial_guess,
                       bool incremental);
-  Eigen::VectorXd free_to_nodes(const Eigen::VectorXd& x) const;
   void prepare_jacobian(const Eigen::VectorXd& a_nodes);
   void factorize_tangent();
   Eigen::VectorXd solve_jacobian(const Eigen::VectorXd& rhs, double tolerance,

@@ -73,7 +73,7 @@ TEST(FemmImport, PotCoreFieldByField) {
   EXPECT_EQ(p.geometry.regions[4].name, "Air_2");
   const Material& iron = p.materials[p.regions[0].material];
   EXPECT_EQ(iron.bh.size(), 38u);  // the 38 points of the AISI 1010 curve, (0, 0) included
-  EXPECT_DOUBLE_EQ(iron.conductivity, 5.8e6);
+  EXPECT_DOUBLE_EQ(iron.conductivity.value_or(0.0), 5.8e6);
   EXPECT_EQ(p.regions[1].turns, 200.0);
   EXPECT_EQ(p.regions[1].circuit, 0);
   ASSERT_EQ(p.circuits.size(), 1u);

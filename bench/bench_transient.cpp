@@ -1,0 +1,76 @@
+// Benchmarks of the transient solver on the annular reference valve (cases/annular_valve.toml,
+// paper 000): the 0.5 s response to a voltage step at the default mesh with adaptive steps
+// (target < 5 s wall), and the cost against the number of dofs (element order 1 / 2, 8 instead of 4
+// elements across the gaps) and of equal steps. Counters: dofs, steps, Newton iterations,
+// factorisations.
+
+#include <benchmark/benchmark.h>
+
+#include <memory>
+
+#include "case/case_file.hpp"
+#include "magnetostatics/solve_problem.hpp"
+#include "transient/transient_solver.hpp"
+
+namespace {
+
+using namespace rheomag;
+
+const cases::Case& valve_case() {
+  static const cases::Case c = cases::load_case(RHEOMAG_SOURCE_DIR "/cases/annular_valve.toml");
+  return c;
+}
+
+/// The valve's voltage step: 4.8 V on its ~4.8 Ohm winding (about 1 A, the paper's current).
+transient::TransientOptions voltage_step(int steps) {
+  transient::TransientOptions o;
+  o.drive = transient::Drive::voltage;
+  o.value = 4.8;
+  o.resistance = 4.8;
+  o.duration = 0.5;
+  o.steps = steps;
+  return o;
+}
+
+/// One run per iteration on a solver built once (meshing and setup excluded).
+void run(benchmark::State& state, int order, int gap_elements, int steps) {
+  cases::Problem problem = valve_case().problem;
+  problem.order = order;
+  problem.min_gap_elements = gap_elements;
+  auto statics = magnetostatics::make_solver(problem);
+  transient::TransientSolver solver(*statics, transient::eddy_coefficients(statics->problem(), {}));
+  transient::TransientResult last;
+  for (auto _ : state) last = solver.run(voltage_step(steps));
+  state.counters["dofs"] = last.dofs;
+  state.counters["steps"] = last.steps;
+  state.counters["newton"] = last.newton_iterations;
+  state.counters["factorisations"] = last.factorizations;
+  state.counters["t90_ms"] = last.t90 ? *last.t90 * 1e3 : -1.0;
+}
+
+void BM_AnnularValveVoltageStep(benchmark::State& state) {
+  run(state, 2, 4, 0);
+}
+void BM_AnnularValveOrder1(benchmark::State& state) {
+  run(state, 1, 4, 0);
+}
+void BM_AnnularValveRefined(benchmark::State& state) {
+  run(state, 2, 8, 0);
+}
+void BM_AnnularValveEqualSteps(benchmark::State& state) {
+  run(state, 2, 4, static_cast<int>(state.range(0)));
+}
+
+BENCHMARK(BM_AnnularValveVoltageStep)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK(BM_AnnularValveOrder1)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK(BM_AnnularValveRefined)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK(BM_AnnularValveEqualSteps)
+    ->Arg(25)
+    ->Arg(50)
+    ->Arg(100)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
+
+}  // namespace
+
+BENCHMARK_MAIN();

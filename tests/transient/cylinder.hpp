@@ -1,0 +1,78 @@
+#pragma once
+// Test helper: a conducting cylinder of radius a in a long solenoid (1-D in r): structured
+// r-z mesh of the cylinder and a thin winding around it, natural boundaries (H_t = 0 outside
+// an ideal solenoid, B_r = 0 on the ends), and the analytic flux after a current step.
+
+#include <boost/math/special_functions/bessel.hpp>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "case/problem.hpp"
+#include "core/constants.hpp"
+#include "mesh/mesh.hpp"
+#include "tests/magnetostatics/structured_mesh.hpp"
+
+namespace rheomag::test {
+
+/// The reference: mu_r = 1000, sigma = 5 MS/m, a = 10 mm; a winding of `turns` over
+/// a length `length` just outside it.
+struct Cylinder {
+  double mu_r = 1000.0, sigma = 5e6, a = 0.01, length = 0.002, turns = 10.0;
+  double winding = 0.0005;  ///< radial thickness of the winding [m]
+  /// tau_1 = mu sigma a^2 / j_1^2 [s] (108.6 ms for the defaults).
+  double tau1() const {
+    const double j1 = boost::math::cyl_bessel_j_zero(0.0, 1);
+    return kMu0 * mu_r * sigma * a * a / (j1 * j1);
+  }
+  /// Phi(t) / Phi_inf = 1 - sum_n 4 / j_n^2 exp(-j_n^2 t / (mu sigma a^2)) (Carslaw & Jaeger,
+  /// diffusion into a cylinder at a suddenly changed surface value), 2000 terms.
+  double relative_flux(double t) const {
+    static const std::vector<double> zeros = [] {
+      std::vector<double> j;
+      for (int n = 1; n <= 2000; ++n) j.push_back(boost::math::cyl_bessel_j_zero(0.0, n));
+      return j;
+    }();
+    const double d = kMu0 * mu_r * sigma * a * a;
+    double sum = 0.0;
+    for (double j : zeros) sum += 4.0 / (j * j) * std::exp(-j * j * t / d);
+    return 1.0 - sum;
+  }
+  /// Time at which relative_flux reaches `fraction` (bisection to 1e-12 relative).
+  double time_to(double fraction) const {
+    double lo = 0.0, hi = 20.0 * tau1();
+    while (hi - lo > 1e-12 * hi) {
+      const double mid = 0.5 * (lo + hi);
+      (relative_flux(mid) < fraction ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+  }
+
+  /// Problem of regions {cylinder, winding}; `bh` non-empty makes the cylinder nonlinear.
+  cases::Problem problem(std::vector<cases::BhPoint> bh = {}) const {
+    cases::Problem p;
+    p.symmetry = cases::Symmetry::axisymmetric;
+    p.outer = cases::OuterBoundary::none;
+    p.order = 2;
+    p.geometry.source = "cylinder test";
+    cases::Material iron{"iron", mu_r, std::move(bh), sigma, "test"};
+    cases::Material winding_material{"winding", 1.0, {}, 0.0, "test"};
+    p.materials = {iron, winding_material};
+    p.circuits = {{"coil", 0.0}};
+    mesh::RegionSeed cylinder, coil;
+    cylinder.name = "cylinder";
+    coil.name = "winding";
+    p.geometry.regions = {cylinder, coil};
+    p.regions = {{0, -1, 0.0}, {1, 0, turns}};
+    return p;
+  }
+  /// P2 mesh: `radial` elements in the cylinder (graded towards r = a by `grading` per cell),
+  /// 2 in the winding, one layer in z.
+  mesh::Mesh mesh(int radial, double grading = 0.9) const {
+    const auto r = join(graded(0.0, a, radial, grading), uniform(a, a + winding, 2));
+    return structured_mesh(r, uniform(0.0, length, 1), 2,
+                           [this](double rc, double) { return rc < a ? 0 : 1; });
+  }
+};
+
+}  // namespace rheomag::test

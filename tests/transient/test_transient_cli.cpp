@@ -1,0 +1,95 @@
+// `rheomag transient` on the bundled annular valve: JSON keys, the voltage step's physics and
+// energy balance, and the exit codes of bad input.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace {
+
+const std::string kCases = std::string(RHEOMAG_SOURCE_DIR) + "/cases/";
+
+/// Runs the CLI; returns the exit code, stdout (+ stderr when `merge`) in `out`.
+int run_cli(const std::string& arguments, std::string& out, bool merge = false) {
+  const std::string command =
+      std::string(RHEOMAG_BINARY) + " transient " + arguments + (merge ? " 2>&1" : " 2>/dev/null");
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return -1;
+  std::array<char, 4096> buffer{};
+  out.clear();
+  while (std::fgets(buffer.data(), buffer.size(), pipe)) out += buffer.data();
+  return WEXITSTATUS(pclose(pipe));
+}
+
+/// A copy of a bundled case with `extra` appended (a temporary file).
+std::string case_with(const std::string& name, const std::string& extra, const std::string& tag) {
+  std::ifstream in(kCases + name);
+  std::stringstream text;
+  text << in.rdbuf() << "\n" << extra << "\n";
+  const auto path = std::filesystem::temp_directory_path() / ("rheomag_transient_" + tag + ".toml");
+  std::ofstream(path) << text.str();
+  return path.string();
+}
+
+// Paper 000's valve (600 turns AWG 24, ~4.8 Ohm from the winding) on a 4.8 V step: the current
+// tends to V / R; the flux linkage's t63 < t90 within the run; the gaps' B_avg grows from 0;
+// the midpoint scheme's energy balance holds to 1e-6 of the run's energy (docs/transient.md).
+TEST(TransientCli, AnnularValveVoltageStep) {
+  std::string out;
+  ASSERT_EQ(run_cli(kCases + "annular_valve.toml --voltage 4.8 --duration 0.4 --json --quiet", out),
+            0)
+      << out;
+  const auto j = nlohmann::json::parse(out);
+  for (const char* key : {"time", "current", "flux_linkage", "gaps", "t63", "t90", "eddy_loss",
+                          "steps", "newton_iterations", "seconds", "energy"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  const auto n = j["time"].size();
+  EXPECT_EQ(j["current"].size(), n);
+  EXPECT_EQ(j["flux_linkage"].size(), n);
+  ASSERT_FALSE(j["gaps"].empty());
+  EXPECT_EQ(j["gaps"][0]["B_avg"].size(), n);
+  EXPECT_EQ(j["gaps"][0]["B_avg"][0].get<double>(), 0.0);
+  EXPECT_GT(j["gaps"][0]["B_avg"][n - 1].get<double>(), 0.5);  // ~0.7 T at 1 A (case header)
+  const double resistance = j["resistance"], final_current = j["final_current"];
+  EXPECT_NEAR(resistance, 4.8, 0.5);
+  EXPECT_DOUBLE_EQ(final_current, 4.8 / resistance);
+  ASSERT_TRUE(j["t63"].is_number() && j["t90"].is_number());
+  EXPECT_GT(j["t63"].get<double>(), 0.0);
+  EXPECT_GT(j["t90"].get<double>(), j["t63"].get<double>());
+  EXPECT_LT(j["t90"].get<double>(), 0.4);
+  EXPECT_LT(j["energy"]["total_error"].get<double>(), 1e-6);
+  EXPECT_LT(j["energy"]["max_step_error"].get<double>(), 1e-6);
+  EXPECT_GT(j["eddy_loss"].get<double>(), 0.0);
+}
+
+TEST(TransientCli, BadInputExitsWithTwo) {
+  std::string out;
+  const std::string valve = kCases + "annular_valve.toml";
+  EXPECT_EQ(run_cli(valve + " --current 1 --duration 0", out, true), 2) << out;
+  EXPECT_NE(out.find("duration"), std::string::npos) << out;
+  EXPECT_EQ(run_cli(valve + " --current 1 --duration -1", out, true), 2) << out;
+  EXPECT_EQ(run_cli(valve + " --current 1 --voltage 2 --duration 0.1", out, true), 2) << out;
+  EXPECT_EQ(run_cli(valve + " --duration 0.1", out, true), 2) << out;
+  // No wire and no resistance: a voltage step cannot be driven.
+  EXPECT_EQ(run_cli(kCases + "radial_valve.toml --voltage 12 --duration 0.1", out, true), 2) << out;
+  EXPECT_NE(out.find("resistance"), std::string::npos) << out;
+  // A steel without a stated conductivity.
+  const std::string no_sigma =
+      case_with("annular_valve.toml", "[[material]]\nname = \"AISI 1010\"\nmu_r = 1000\n", "sigma");
+  EXPECT_EQ(run_cli(no_sigma + " --current 1 --duration 0.1", out, true), 2) << out;
+  EXPECT_NE(out.find("conductivity"), std::string::npos) << out;
+  const std::string negative =
+      case_with("annular_valve.toml",
+                "[[material]]\nname = \"AISI 1010\"\nmu_r = 1000\nconductivity = -1\n", "negative");
+  EXPECT_EQ(run_cli(negative + " --current 1 --duration 0.1", out, true), 2) << out;
+  EXPECT_NE(out.find("conductivity"), std::string::npos) << out;
+}
+
+}  // namespace

@@ -1,0 +1,120 @@
+#include "transient/report.hpp"
+
+#include "transient/lag_fit.hpp"
+
+#include <cstdio>
+#include <sstream>
+#include <vector>
+
+namespace rheomag::transient {
+namespace {
+
+nlohmann::json optional_time(const std::optional<double>& t) {
+  return t ? nlohmann::json(*t) : nlohmann::json(nullptr);
+}
+
+/// Two first-order lags fitted to a response after the step (null when it does not change).
+nlohmann::json lags_json(const TransientResult& r, const std::vector<double>& values, double end) {
+  const std::vector<double> time(r.time.begin() + 1, r.time.end());
+  const std::vector<double> after(values.begin() + 1, values.end());
+  if (end == values.front() || time.size() < 5) return nullptr;
+  nlohmann::json out = nlohmann::json::array();
+  for (const Lag& lag : fit_lags(time, after, values.front(), end, 2))
+    out.push_back({{"weight", lag.weight}, {"time_constant", lag.time_constant}});
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json transient_json(const TransientResult& r, const TransientOptions& o) {
+  nlohmann::json gaps = nlohmann::json::array();
+  for (const GapSeries& g : r.gaps)
+    gaps.push_back({{"name", g.name},
+                    {"B_avg", g.b_avg},
+                    {"B_final", g.final_b},
+                    {"t63", optional_time(g.t63)},
+                    {"t90", optional_time(g.t90)},
+                    {"lags", lags_json(r, g.b_avg, g.final_b)}});
+  const EnergyBalance& e = r.energy;
+  return {{"drive", kDriveNames.name(o.drive)},
+          {"value", o.value},
+          {"from", o.from_current},
+          {"resistance", o.resistance},
+          {"scheme", kTimeSchemeNames.name(o.scheme)},
+          {"duration", o.duration},
+          {"time", r.time},
+          {"current", r.current},
+          {"flux_linkage", r.flux_linkage},
+          {"eddy_power", r.eddy_power},
+          {"gaps", gaps},
+          {"final_current", r.final_current},
+          {"final_flux_linkage", r.final_flux_linkage},
+          {"t63", optional_time(r.t63)},
+          {"t90", optional_time(r.t90)},
+          {"lags", lags_json(r, r.flux_linkage, r.final_flux_linkage)},
+          {"eddy_loss", e.eddy_loss},
+          {"copper_loss", e.copper_loss},
+          {"energy",
+           {{"source", e.source},
+            {"stored_change", e.stored_change},
+            {"eddy_loss", e.eddy_loss},
+            {"copper_loss", e.copper_loss},
+            {"step_energy", e.step_energy},
+            {"max_step_error", e.max_step_error},
+            {"total_error", e.total_error}}},
+          {"steps", r.steps},
+          {"rejected_steps", r.rejected_steps},
+          {"newton_iterations", r.newton_iterations},
+          {"factorizations", r.factorizations},
+          {"dofs", r.dofs},
+          {"seconds", r.seconds}};
+}
+
+std::string transient_summary(const TransientResult& r, const TransientOptions& o) {
+  std::ostringstream out;
+  char line[200];
+  auto ms = [](const std::optional<double>& t) {
+    char text[32];
+    if (!t) return std::string("not reached");
+    std::snprintf(text, sizeof text, "%.4g ms", *t * 1e3);
+    return std::string(text);
+  };
+  out << (o.drive == Drive::voltage ? "voltage" : "current") << " step to " << o.value
+      << (o.drive == Drive::voltage ? " V" : " A") << " from " << o.from_current << " A";
+  if (o.resistance > 0.0) out << ", coil resistance " << o.resistance << " Ohm";
+  out << "\nsteady state after the step: " << r.final_current << " A, flux linkage "
+      << r.final_flux_linkage * 1e3 << " mWb\n"
+      << "flux linkage t63 " << ms(r.t63) << ", t90 " << ms(r.t90) << "\n";
+  for (const GapSeries& g : r.gaps)
+    out << "gap " << g.name << " mean |B| -> " << g.final_b * 1e3 << " mT: t63 " << ms(g.t63)
+        << ", t90 " << ms(g.t90) << "\n";
+  std::snprintf(line, sizeof line,
+                "energy [J]: source %.6g = stored %.6g + eddy %.6g + copper %.6g (worst step "
+                "balance %.2g)\n",
+                r.energy.source, r.energy.stored_change, r.energy.eddy_loss, r.energy.copper_loss,
+                r.energy.max_step_error);
+  out << line;
+  out << r.steps << " steps (" << r.rejected_steps << " rejected), " << r.newton_iterations
+      << " Newton iterations, " << r.dofs << " dofs, " << r.seconds << " s\n\n";
+  out << "    t [ms]     i [A]  lambda [mWb]";
+  for (const GapSeries& g : r.gaps) out << "  " << g.name << " |B| [mT]";
+  out << "\n";
+  const std::size_t rows = r.time.size(), stride = rows > 21 ? (rows + 19) / 20 : 1;
+  std::vector<std::size_t> shown;
+  for (std::size_t k = 0; k < rows; k += stride) shown.push_back(k);
+  if (!shown.empty() && shown.back() + 1 != rows) shown.push_back(rows - 1);
+  for (std::size_t k : shown) {
+    std::snprintf(line, sizeof line, "%10.4g %9.4g %13.5g", r.time[k] * 1e3, r.current[k],
+                  r.flux_linkage[k] * 1e3);
+    out << line;
+    for (const GapSeries& g : r.gaps) {
+      std::snprintf(line, sizeof line, "  %*.4g", static_cast<int>(g.name.size()) + 11,
+                    g.b_avg[k] * 1e3);
+      out << line;
+    }
+    out << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace rheomag::transient

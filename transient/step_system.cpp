@@ -1,0 +1,145 @@
+#include "transient/step_system.hpp"
+
+#include "core/error.hpp"
+#include "magnetostatics/preconditioned_cg.hpp"
+#include "magnetostatics/serial_openmp.hpp"
+
+namespace rheomag::transient {
+
+using magnetostatics::SparseMatrix;
+
+StepSystem::StepSystem(const StepOperators& ops, Setup setup)
+    : ops_(ops), setup_(std::move(setup)), n_(static_cast<int>(setup_.x0.size())) {
+  if (setup_.jump) setup_.points = {{1.0, 1.0}};
+  for (const auto& [s, w] : setup_.points) s_bar_ += w * s;
+}
+
+Eigen::VectorXd StepSystem::nodes(const Eigen::VectorXd& x_free) const {
+  return ops_.statics->free_to_nodes(x_free);
+}
+
+double StepSystem::mean_current(const Eigen::VectorXd& x) const {
+  if (!setup_.voltage) return setup_.value;
+  return setup_.i0 + s_bar_ * (x[n_] - setup_.i0);
+}
+
+double StepSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r) {
+  // The step matrix is assembled with the residual: Newton factorises at the x of its last
+  // accepted residual, and a tangent costs little more than a residual in the same pass.
+  const auto& assembler = ops_.statics->assembler();
+  const Eigen::VectorXd delta = x.head(n_) - setup_.x0;
+  const double i_bar = mean_current(x);
+  r.resize(x.size());
+  Eigen::VectorXd field = Eigen::VectorXd::Zero(n_), part;
+  k_ = assembler.pattern();
+  SparseMatrix tangent = assembler.pattern();
+  Eigen::Map<Eigen::VectorXd> values(k_.valuePtr(), k_.nonZeros());
+  const Eigen::Map<const Eigen::VectorXd> t_values(tangent.valuePtr(), tangent.nonZeros());
+  for (const auto& [s, w] : setup_.points) {
+    assembler.assemble(nodes(setup_.x0 + s * delta), part, &tangent);
+    field += w * part;
+    values += (w * s) * t_values;
+  }
+  field -= i_bar * *ops_.drive_source + *ops_.other_source;
+  if (setup_.jump) {
+    // Conducting dofs stay put: their equations are x = x0, their rows and columns the identity.
+    const auto& frozen = *ops_.conducting;
+    for (int d = 0; d < n_; ++d)
+      if (frozen[d]) field[d] = delta[d];
+    for (int col = 0; col < n_; ++col) {
+      for (SparseMatrix::InnerIterator it(k_, col); it; ++it) {
+        if (frozen[it.row()] || frozen[col]) it.valueRef() = it.row() == col ? 1.0 : 0.0;
+      }
+    }
+  } else {
+    field += (ops_.mass->selfadjointView<Eigen::Lower>() * delta +
+              ops_.micro->selfadjointView<Eigen::Lower>() * delta) /
+             setup_.h;
+    values += (Eigen::Map<const Eigen::VectorXd>(ops_.mass->valuePtr(), ops_.mass->nonZeros()) +
+               Eigen::Map<const Eigen::VectorXd>(ops_.micro->valuePtr(), ops_.micro->nonZeros())) /
+              setup_.h;
+  }
+  residual_x_ = x;
+  r.head(n_) = field;
+  if (setup_.voltage) {
+    r[n_] = s_bar_ * (setup_.h * (setup_.value - setup_.resistance * mean_current(x)) -
+                      ops_.drive_source->dot(delta));
+  }
+  return r.norm();
+}
+
+void StepSystem::factorize() {
+  StepOperators::Factor& kept = *ops_.factor;
+  kept.valid = false;
+  {
+    const magnetostatics::SerialOpenMp serial;
+    ops_.cholesky->factorize(k_);
+  }
+  ++factorizations_;
+  if (ops_.cholesky->info() != Eigen::Success)
+    throw ConvergenceError(
+        "CHOLMOD factorisation of the time-step matrix failed (not positive "
+        "definite, " +
+        std::to_string(n_) + " unknowns)");
+  kept.values = Eigen::Map<const Eigen::VectorXd>(k_.valuePtr(), k_.nonZeros());
+  kept.valid = true;
+  reuse_ = false;
+  if (setup_.voltage) {
+    const magnetostatics::SerialOpenMp serial;
+    kept.k_inv_f = ops_.cholesky->solve(*ops_.drive_source);
+  }
+}
+
+void StepSystem::factorize_jacobian(const Eigen::VectorXd& x) {
+  if (residual_x_.size() != x.size() || residual_x_ != x) {
+    Eigen::VectorXd r;
+    residual(x, r);
+  }
+  const StepOperators::Factor& kept = *ops_.factor;
+  const Eigen::Map<const Eigen::VectorXd> values(k_.valuePtr(), k_.nonZeros());
+  const double change = kept.valid ? (values - kept.values).norm() : 0.0;
+  if (!kept.valid || change > kRefactorChange * kept.values.norm()) {
+    factorize();
+  } else {
+    reuse_ = change > 0.0;  // equal values: the kept factor is this matrix's
+  }
+  if (setup_.voltage) {
+    k_inv_f_ = reuse_ ? solve_k(*ops_.drive_source, 1e-12) : ops_.factor->k_inv_f;
+  }
+}
+
+Eigen::VectorXd StepSystem::solve_k(const Eigen::VectorXd& rhs, double tolerance) {
+  const magnetostatics::SerialOpenMp serial;
+  if (reuse_) {
+    Eigen::VectorXd x;
+    const magnetostatics::CgResult cg =
+        magnetostatics::preconditioned_cg(k_, *ops_.cholesky, rhs, tolerance,
+                                          magnetostatics::MagnetostaticSolver::kReuseIterations, x);
+    if (cg.converged && x.allFinite()) return x;
+    factorize();  // the kept factor was too far from this matrix
+    if (setup_.voltage) k_inv_f_ = ops_.factor->k_inv_f;
+  }
+  Eigen::VectorXd x = ops_.cholesky->solve(rhs);
+  if (ops_.cholesky->info() != Eigen::Success || !x.allFinite())
+    throw ConvergenceError("CHOLMOD triangular solve of the time-step matrix failed");
+  return x;
+}
+
+Eigen::VectorXd StepSystem::solve_jacobian(const Eigen::VectorXd& rhs, double tolerance) {
+  // [[K, -s F], [-s F^T, -s^2 h R]] [dx; di] = [b1; b2] by the Schur complement on di:
+  // dx = K^-1 b1 + s di K^-1 F, di = -(b2 + s F^T K^-1 b1) / (s^2 (F^T K^-1 F + h R)).
+  const bool reused = reuse_;
+  Eigen::VectorXd u = solve_k(rhs.head(n_), tolerance);
+  if (reused && !reuse_ && setup_.voltage) u = solve_k(rhs.head(n_), tolerance);  // refactorised
+  if (!setup_.voltage) return u;
+  const Eigen::VectorXd& f = *ops_.drive_source;
+  const double s = s_bar_;
+  const double schur = s * s * (f.dot(k_inv_f_) + setup_.h * setup_.resistance);
+  const double di = -(rhs[n_] + s * f.dot(u)) / schur;
+  Eigen::VectorXd out(rhs.size());
+  out.head(n_) = u + (s * di) * k_inv_f_;
+  out[n_] = di;
+  return out;
+}
+
+}  // namespace rheomag::transient

@@ -1,0 +1,49 @@
+#pragma once
+// What a transient run is asked to do: the drive of the first circuit, the time span, the time
+// scheme and step control.
+
+#include <functional>
+
+#include "core/enum_names.hpp"
+#include "core/progress.hpp"
+#include "magnetostatics/newton.hpp"
+
+namespace rheomag::transient {
+
+/// How the first circuit is driven after the step at t = 0.
+enum class Drive {
+  current,  ///< ideal current source: i(t) = value for t > 0
+  voltage,  ///< ideal voltage source through the coil resistance: V = R i + dlambda/dt
+};
+
+/// Time discretisation of sigma dA/dt + curl(nu curl A) = J_s.
+enum class TimeScheme {
+  /// Continuous Galerkin cG(1) in time (the implicit midpoint / average-vector-field rule):
+  /// second order, A-stable, and its discrete energy balance is exact (docs/transient.md).
+  midpoint,
+  backward_euler,  ///< first order, L-stable (strong damping of unresolved fast modes)
+};
+
+/// Text names of Drive and TimeScheme (CLI, JSON).
+inline constexpr EnumNames<Drive, 2> kDriveNames{
+    {{{Drive::current, "current"}, {Drive::voltage, "voltage"}}}};
+inline constexpr EnumNames<TimeScheme, 2> kTimeSchemeNames{
+    {{{TimeScheme::midpoint, "midpoint"}, {TimeScheme::backward_euler, "backward_euler"}}}};
+
+/// Settings of one step-response run.
+struct TransientOptions {
+  Drive drive = Drive::current;
+  double from_current = 0.0;  ///< steady state before the step [A]
+  double value = 0.0;         ///< after the step: current [A] or supply voltage [V]
+  double duration = 0.0;      ///< simulated time after the step [s] (> 0)
+  int steps = 0;              ///< > 0: that many equal steps; 0: adaptive steps
+  double tolerance = 1e-4;    ///< adaptive: local error of lambda per step / its total change
+  double max_step = 0.0;      ///< adaptive: largest step [s]; 0 = duration / 50
+  double first_step = 0.0;    ///< adaptive: first step [s]; 0 = duration * 1e-4
+  double resistance = 0.0;    ///< first circuit's resistance [Ohm] (required for a voltage step)
+  TimeScheme scheme = TimeScheme::midpoint;
+  magnetostatics::NewtonOptions newton;  ///< Newton at every step (local corrections unused)
+  ProgressCallback progress;             ///< one report per accepted step
+};
+
+}  // namespace rheomag::transient

@@ -1,0 +1,300 @@
+#include "transient/transient_solver.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "magnetostatics/serial_openmp.hpp"
+#include "transient/gap_flux.hpp"
+#include "transient/step_system.hpp"
+
+namespace rheomag::transient {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+void check_options(const TransientOptions& o, const std::string& where) {
+  auto fail = [&](const std::string& what) { throw InputError(where + ": " + what); };
+  if (!(o.duration > 0.0) || !std::isfinite(o.duration))
+    fail("duration must be a finite time > 0 s");
+  if (!std::isfinite(o.value) || !std::isfinite(o.from_current))
+    fail("the step's current or voltage and the initial current must be finite");
+  if (o.drive == Drive::voltage && !(o.resistance > 0.0 && std::isfinite(o.resistance)))
+    fail("a voltage step needs the coil resistance > 0 Ohm (a wire in the case, or a resistance)");
+  if (!(o.resistance >= 0.0) || !std::isfinite(o.resistance)) fail("resistance must be >= 0 Ohm");
+  if (o.steps < 0) fail("steps must be >= 0 (0: adaptive)");
+  if (!(o.tolerance > 0.0) || !std::isfinite(o.tolerance)) fail("tolerance must be > 0");
+  if (!(o.max_step >= 0.0) || !(o.first_step >= 0.0)) fail("step limits must be >= 0 s");
+}
+
+/// (s, w) points of the scheme on the step [0, 1].
+std::vector<std::pair<double, double>> scheme_points(TimeScheme scheme, bool linear) {
+  if (scheme == TimeScheme::backward_euler) return {{1.0, 1.0}};
+  if (linear) return {{0.5, 1.0}};        // the midpoint rule integrates R(A(s)) . dA exactly here
+  const double d = 0.5 * std::sqrt(0.6);  // 3-point Gauss-Legendre on [0, 1]
+  return {{0.5 - d, 5.0 / 18.0}, {0.5, 8.0 / 18.0}, {0.5 + d, 5.0 / 18.0}};
+}
+
+/// Value at `t` of the polynomial through the last `count` samples (t_k, v_k).
+double extrapolate(const std::vector<double>& t, const std::vector<double>& v, int count,
+                   double at) {
+  const int n = static_cast<int>(t.size());
+  double sum = 0.0;
+  for (int j = n - count; j < n; ++j) {
+    double l = 1.0;
+    for (int m = n - count; m < n; ++m)
+      if (m != j) l *= (at - t[m]) / (t[j] - t[m]);
+    sum += l * v[j];
+  }
+  return sum;
+}
+
+}  // namespace
+
+std::optional<double> rise_time(const std::vector<double>& time, const std::vector<double>& values,
+                                double start, double end, double fraction) {
+  if (end == start || time.size() != values.size()) return std::nullopt;
+  const double target = start + fraction * (end - start);
+  const double sign = end > start ? 1.0 : -1.0;
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (sign * (values[k] - target) < 0.0) continue;
+    if (k == 0 || values[k] == values[k - 1]) return time[k];
+    return time[k - 1] +
+           (target - values[k - 1]) / (values[k] - values[k - 1]) * (time[k] - time[k - 1]);
+  }
+  return std::nullopt;
+}
+
+TransientSolver::TransientSolver(magnetostatics::MagnetostaticSolver& statics,
+                                 EddyCoefficients eddy)
+    : statics_(statics), eddy_(std::move(eddy)) {
+  const cases::Problem& problem = statics_.problem();
+  if (problem.circuits.empty())
+    throw InputError(problem.geometry.source + ": the case has no circuit to drive");
+  if (eddy_.sigma.size() != problem.regions.size() || eddy_.kappa.size() != problem.regions.size())
+    throw InputError(problem.geometry.source + ": eddy coefficients for " +
+                     std::to_string(eddy_.sigma.size()) + " regions, the problem has " +
+                     std::to_string(problem.regions.size()));
+  const auto& assembler = statics_.assembler();
+  mass_ = assembler.region_matrix(eddy_.sigma, false);
+  micro_ = assembler.region_matrix(eddy_.kappa, true);
+  drive_source_ = statics_.nodes_to_free(statics_.circuit_source(0));
+  other_source_ = Eigen::VectorXd::Zero(drive_source_.size());
+  for (std::size_t c = 1; c < problem.circuits.size(); ++c)
+    other_source_ += problem.circuits[c].current *
+                     statics_.nodes_to_free(statics_.circuit_source(static_cast<int>(c)));
+  const mesh::Mesh& m = statics_.mesh();
+  const magnetostatics::DofMap& dofs = statics_.dofs();
+  conducting_.assign(dofs.free_count(), 0);
+  for (std::size_t e = 0; e < m.triangles.size(); ++e) {
+    const int region = m.region[e];
+    if (eddy_.sigma[region] == 0.0 && eddy_.kappa[region] == 0.0) continue;
+    for (int i = 0; i < m.nodes_per_triangle(); ++i) {
+      const int d = dofs.dof_of_node[m.triangles[e][i]];
+      if (d >= 0) conducting_[d] = 1;
+    }
+  }
+  if (dofs.free_count() > 0) {
+    const magnetostatics::SerialOpenMp serial;
+    cholesky_.analyzePattern(assembler.pattern());
+    if (cholesky_.info() != Eigen::Success)
+      throw ConvergenceError("CHOLMOD symbolic analysis of the time-step matrix failed");
+  }
+}
+
+TransientResult TransientSolver::run(const TransientOptions& options,
+                                     const StateCallback& on_state) {
+  const auto start = Clock::now();
+  const cases::Problem& problem = statics_.problem();
+  check_options(options, problem.geometry.source);
+  const auto& assembler = statics_.assembler();
+  const bool voltage = options.drive == Drive::voltage;
+  const bool adaptive = options.steps == 0;
+  const int n = statics_.dofs().free_count();
+  const double duration = options.duration;
+
+  // Steady states before and long after the step.
+  std::vector<double> currents;
+  for (const cases::Circuit& c : problem.circuits) currents.push_back(c.current);
+  currents[0] = options.from_current;
+  const magnetostatics::Solution before = statics_.solve(currents);
+  TransientResult result;
+  result.dofs = n;
+  result.final_current = voltage ? options.value / options.resistance : options.value;
+  currents[0] = result.final_current;
+  const magnetostatics::Solution after = statics_.solve(currents, &before.a);
+  result.final_flux_linkage = after.flux_linkage[0];
+
+  const std::vector<int> gap_ids = gap_regions(statics_);
+  const std::vector<double> final_b = region_mean_b(statics_, gap_ids, after.a);
+  for (std::size_t g = 0; g < gap_ids.size(); ++g)
+    result.gaps.push_back(
+        {problem.geometry.regions[gap_ids[g]].name, gap_ids[g], {}, final_b[g], {}, {}});
+  Eigen::VectorXd x = statics_.nodes_to_free(before.a);
+  double current = options.from_current;
+  double w_now = assembler.energy(before.a);
+  auto flux_linkage = [&](const Eigen::VectorXd& a) { return statics_.circuit_source(0).dot(a); };
+  auto record = [&](double t, const Eigen::VectorXd& a, const Eigen::VectorXd& rate,
+                    double eddy_power) {
+    result.time.push_back(t);
+    result.current.push_back(current);
+    result.flux_linkage.push_back(flux_linkage(a));
+    result.eddy_power.push_back(eddy_power);
+    const std::vector<double> b = region_mean_b(statics_, gap_ids, a);
+    for (std::size_t g = 0; g < b.size(); ++g) result.gaps[g].b_avg.push_back(b[g]);
+    if (on_state) on_state({t, current, a, rate});
+  };
+  record(0.0, before.a, Eigen::VectorXd::Zero(before.a.size()), 0.0);
+
+  StepOperators::Factor factor;
+  StepOperators ops{&statics_,      &mass_,       &micro_,    &drive_source_,
+                    &other_source_, &conducting_, &cholesky_, &factor};
+  const double reference_current =
+      std::max({std::abs(options.from_current), std::abs(result.final_current), 1e-3});
+  const double scale = std::max(drive_source_.norm(), 1e-300) * reference_current;
+  magnetostatics::NewtonOptions newton = options.newton;
+  newton.local_iterations = 0;
+
+  // A current step: the non-conducting part of the field follows at once.
+  if (!voltage) {
+    StepSystem jump(ops, {x, current, 0.0, false, options.value, options.resistance, true, {}});
+    Eigen::VectorXd y = x;
+    result.newton_iterations += magnetostatics::newton_solve(jump, y, scale, newton).iterations;
+    result.factorizations += jump.factorizations();
+    x = y;
+    current = options.value;
+    const Eigen::VectorXd a = statics_.free_to_nodes(x);
+    const double w = assembler.energy(a);
+    result.energy.step_energy = w - w_now;
+    w_now = w;
+    record(0.0, a, Eigen::VectorXd::Zero(a.size()), 0.0);
+  }
+
+  const auto points = scheme_points(options.scheme, !assembler.nonlinear());
+  const int order = options.scheme == TimeScheme::midpoint ? 2 : 1;
+  const double max_step = options.max_step > 0.0 ? options.max_step : duration / 50.0;
+  double h =
+      adaptive ? std::min(options.first_step > 0.0 ? options.first_step : duration * 1e-4, max_step)
+               : duration / options.steps;
+  const double min_step = duration * 1e-10;
+  const double lambda_change =
+      std::max(std::abs(result.final_flux_linkage - result.flux_linkage.front()),
+               1e-12 * std::abs(result.final_flux_linkage) + 1e-300);
+  // History since t = 0+ for the error estimate and the predictor.
+  std::vector<double> hist_t{0.0}, hist_lambda{result.flux_linkage.back()};
+  Eigen::VectorXd x_previous;
+  double h_previous = 0.0;
+  double worst_imbalance = 0.0;  // largest |source - dW - losses| of a step [J]
+  double t = 0.0;
+  while (t < duration * (1.0 - 1e-12)) {
+    h = std::min(h, duration - t);
+    StepSystem step(ops,
+                    {x, current, h, voltage, options.value, options.resistance, false, points});
+    Eigen::VectorXd y(voltage ? n + 1 : n);
+    y.head(n) = x;
+    if (x_previous.size()) y.head(n) += (h / h_previous) * (x - x_previous);
+    if (voltage) y[n] = current;
+    magnetostatics::NewtonReport report;
+    try {
+      report = magnetostatics::newton_solve(step, y, scale, newton);
+    } catch (const ConvergenceError& e) {
+      result.factorizations += step.factorizations();
+      if (adaptive && h > 4.0 * min_step) {
+        h *= 0.25;
+        ++result.rejected_steps;
+        continue;
+      }
+      std::ostringstream msg;
+      msg << "time step from t = " << t << " s to " << t + h << " s did not converge: " << e.what();
+      throw ConvergenceError(msg.str());
+    }
+    result.newton_iterations += report.iterations;
+    result.factorizations += step.factorizations();
+    const Eigen::VectorXd a = statics_.free_to_nodes(y.head(n));
+    const double lambda = flux_linkage(a);
+    double growth = 2.0;
+    if (adaptive) {
+      const int count = static_cast<int>(hist_t.size());
+      if (count >= order + 1) {
+        const double predicted = extrapolate(hist_t, hist_lambda, order + 1, t + h);
+        const double error = std::abs(lambda - predicted) / lambda_change;
+        growth = std::clamp(
+            0.9 * std::pow(options.tolerance / std::max(error, 1e-300), 1.0 / (order + 1)), 0.25,
+            2.0);
+        if (error > options.tolerance && h > 4.0 * min_step) {
+          h *= std::min(growth, 0.5);
+          ++result.rejected_steps;
+          continue;
+        }
+      } else {
+        growth = 1.0;
+      }
+    }
+    // Energy bookkeeping of the accepted step (exact for the midpoint scheme: docs/transient.md).
+    const Eigen::VectorXd delta = y.head(n) - x;
+    const double i_bar = step.mean_current(y);
+    const double eddy = delta.dot(mass_.selfadjointView<Eigen::Lower>() * delta +
+                                  micro_.selfadjointView<Eigen::Lower>() * delta) /
+                        h;
+    const double copper = options.resistance * i_bar * i_bar * h;
+    const double other_work = other_source_.dot(delta);
+    const double source = (voltage ? options.value * i_bar * h
+                                   : i_bar * (lambda - result.flux_linkage.back()) + copper) +
+                          other_work;
+    const double w = assembler.energy(a);
+    const double stored = w - w_now;
+    worst_imbalance = std::max(worst_imbalance, std::abs(source - stored - eddy - copper));
+    result.energy.source += source;
+    result.energy.stored_change += stored;
+    result.energy.eddy_loss += eddy;
+    result.energy.copper_loss += copper;
+    w_now = w;
+
+    x_previous = x;
+    h_previous = h;
+    x = y.head(n);
+    if (voltage) current = y[n];
+    t += h;
+    ++result.steps;
+    Eigen::VectorXd rate = Eigen::VectorXd::Zero(a.size());
+    for (int d = 0; d < n; ++d) rate[statics_.dofs().node_of_dof[d]] = delta[d] / h;
+    record(t, a, rate, eddy / h);
+    hist_t.push_back(t), hist_lambda.push_back(lambda);
+    if (options.progress) {
+      std::ostringstream detail;
+      detail << "t = " << t << " s, step " << h << " s, i = " << current << " A, Newton "
+             << report.iterations;
+      options.progress({"transient", t, duration, seconds_since(start), detail.str()});
+    }
+    // Growth below 25 % keeps h, and with it the factorised step matrix (linear materials).
+    if (growth > 1.0 && growth < 1.25) growth = 1.0;
+    h = adaptive ? std::min(h * growth, max_step) : duration / options.steps;
+  }
+
+  EnergyBalance& e = result.energy;
+  const double energy_scale =
+      std::max({std::abs(e.source), std::abs(e.stored_change), e.eddy_loss + e.copper_loss});
+  if (energy_scale > 0.0) {
+    e.max_step_error = worst_imbalance / energy_scale;
+    e.total_error =
+        std::abs(e.source - e.stored_change - e.eddy_loss - e.copper_loss) / energy_scale;
+  }
+  const double lambda0 = result.flux_linkage.front();
+  result.t63 = rise_time(result.time, result.flux_linkage, lambda0, result.final_flux_linkage,
+                         1.0 - std::exp(-1.0));
+  result.t90 = rise_time(result.time, result.flux_linkage, lambda0, result.final_flux_linkage, 0.9);
+  for (GapSeries& g : result.gaps) {
+    g.t63 = rise_time(result.time, g.b_avg, g.b_avg.front(), g.final_b, 1.0 - std::exp(-1.0));
+    g.t90 = rise_time(result.time, g.b_avg, g.b_avg.front(), g.final_b, 0.9);
+  }
+  result.seconds = seconds_since(start);
+  return result;
+}
+
+}  // namespace rheomag::transient
