@@ -273,6 +273,7 @@ void run_fit(const FitOptions& o) {
   const std::size_t n = rec.t.size();
   const SampleRange train =
       o.train.empty() ? SampleRange{0, n} : parse_sample_range(o.train, n, "--train");
+  rec.require_varying(rec.meta.output, train.begin, train.end);
   const Validation val = read_validation(o, rec, train);
   const FitReport report = black_box     ? fit_black_box_model(o, rec, train, val)
                            : valve_chain ? fit_valve_chain_model(o, rec, train, val)

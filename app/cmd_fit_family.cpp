@@ -58,7 +58,10 @@ void run_fit_family(const FamilyOptions& o) {
     throw rheomag::InputError("--model: '" + o.model + "' is not a grey-box model (" +
                               model_list() + ")");
   std::vector<Recording> training, prediction;
-  for (const auto& f : o.recordings) training.push_back(rheomag::app::load_recording(f));
+  for (const auto& f : o.recordings) {
+    training.push_back(rheomag::app::load_recording(f));
+    training.back().require_varying(training.back().meta.output);
+  }
   for (const auto& f : o.predict) prediction.push_back(rheomag::app::load_recording(f));
   FamilyFitOptions options;
   options.decimation = o.decimation;

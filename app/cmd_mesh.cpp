@@ -77,7 +77,8 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
       "refinement, per-region sizes and at least `min_gap_elements` elements across every fluid\n"
       "gap. Prints element counts, minimum angle, aspect ratio and per-region statistics.");
   cmd->add_option("CASE", o->case_path, "Case file (.toml) or FEMM model (.fem)")->required();
-  cmd->add_option("--vtk", o->vtk, "Write the mesh with region ids and names to this .vtu file");
+  cmd->add_option("--vtk", o->vtk, "Write the mesh with region ids and names to this .vtu file")
+      ->check(rheomag::app::output_file());
   cmd->add_option("--order", o->order, "Lagrange element order, 1 or 2 (default: the case's)")
       ->check(CLI::Range(1, 2));
   cmd->add_flag("--json", o->json, "Print the mesh statistics as one JSON object");

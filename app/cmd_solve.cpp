@@ -140,7 +140,8 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
                   "Also tabulate lambda(I), L(I) of the first circuit at these currents [A], "
                   "e.g. --sweep 0,0.25,0.5,0.75,1")
       ->delimiter(',');
-  cmd->add_option("--vtk", o->vtk, "Write mesh and fields (A, B, |B|, H, mu_r) to this .vtu file");
+  cmd->add_option("--vtk", o->vtk, "Write mesh and fields (A, B, |B|, H, mu_r) to this .vtu file")
+      ->check(rheomag::app::output_file());
   cmd->add_option("--order", o->order, "Lagrange element order, 1 or 2 (default: the case's, 2)")
       ->check(CLI::Range(1, 2));
   cmd->add_flag("--json", o->json, "Print one JSON object (SI units) instead of the summary");

@@ -5,6 +5,8 @@
 #include <functional>
 #include <string>
 
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
 #include "lumped/recording.hpp"
 
 namespace rheomag::app {
@@ -20,5 +22,20 @@ void setup_commands(CLI::App& root);
 
 /// Reads a recording (CSV + sidecar) and prints the reader's warnings on stderr.
 lumped::Recording load_recording(const std::string& csv_path);
+
+/// Validator of an output-file option: refuses an empty name and a target that is not a regular
+/// file (a device node, a directory) when the command line is parsed, before any work is done.
+inline CLI::Validator output_file() {
+  return CLI::Validator(
+      [](std::string& path) {
+        try {
+          check_output_path(path, "output file");
+        } catch (const InputError& e) {
+          return std::string(e.what());
+        }
+        return std::string();
+      },
+      "FILE");
+}
 
 }  // namespace rheomag::app

@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 
+#include <glog/logging.h>
 #include <CLI/CLI.hpp>
 #include <cstdlib>
 #include <iostream>
@@ -86,6 +87,12 @@ void prefer_single_threaded_blas() {
     set(1);
 }
 
+/// Keeps third-party logging (Ceres reports failed trial steps through glog) off the user's
+/// stderr: rheomag reports what matters through its own messages and exit codes.
+void silence_third_party_logging() {
+  FLAGS_minloglevel = google::GLOG_FATAL;
+}
+
 }  // namespace rheomag::app
 
 int main(int argc, char** argv) {
@@ -96,6 +103,7 @@ int main(int argc, char** argv) {
       "for each command."};
   root.require_subcommand(1);
   rheomag::app::prefer_single_threaded_blas();
+  rheomag::app::silence_third_party_logging();
   // Element assembly on OpenMP threads only when OMP_NUM_THREADS is set (the library default is
   // serial; docs/performance.md, "Threads").
   if (std::getenv("OMP_NUM_THREADS") != nullptr) rheomag::magnetostatics::set_assembly_threads(0);

@@ -53,7 +53,7 @@ RegionOutline read_region(const TomlSection& section, double unit, double max_ar
   if (auto coil = section.table("coil")) {
     coil->allow_only({"circuit", "turns", "reversed"});
     region.circuit = coil->required_string("circuit");
-    region.turns = coil->positive("turns");
+    region.turns = coil->quantity("turns", Domain::count());
     if (coil->boolean_or("reversed", false)) region.turns = -region.turns;
   }
 
@@ -173,12 +173,13 @@ TemplateValues read_template(const TomlSection& geometry, const ValveTemplate& v
   values.where = geometry.where();
   for (const TemplateParameter& p : valve.parameters) {
     if (!geometry.has(p.key)) continue;
+    values.key_where[p.key] = geometry.where(p.key);
     switch (p.kind) {
       case ParameterKind::length:
         values.numbers[p.key] = geometry.positive(p.key) * unit;
         break;
       case ParameterKind::count:
-        values.numbers[p.key] = geometry.positive(p.key);
+        values.numbers[p.key] = geometry.quantity(p.key, Domain::count());
         break;
       case ParameterKind::material:
       case ParameterKind::name:
@@ -187,6 +188,21 @@ TemplateValues read_template(const TomlSection& geometry, const ValveTemplate& v
     }
   }
   return values;
+}
+
+/// The library material `name`, which must be an MR fluid (have a [rheology] table);
+/// InputError "<where>: ..." naming the MR fluids of the library otherwise.
+const LibraryMaterial& mr_fluid(const MaterialLibrary& materials, const std::string& name,
+                                const std::string& where) {
+  const LibraryMaterial& m = materials.get(name, where);
+  if (m.rheology) return m;
+  std::string fluids;
+  for (const std::string& other : materials.names()) {
+    const LibraryMaterial* candidate = materials.find(other);
+    if (candidate && candidate->rheology) fluids += (fluids.empty() ? "" : ", ") + other;
+  }
+  throw InputError(where + ": '" + name + "' is not an MR fluid (its material has no [rheology]" +
+                   " table); expected one of: " + fluids);
 }
 
 }  // namespace
@@ -289,9 +305,10 @@ Case parse_case(toml::table table, const std::string& source, const MaterialLibr
     if (min_gap < 1 || min_gap > 100) solver->fail("min_gap_elements", "expected 1 to 100");
     problem.min_gap_elements = static_cast<int>(min_gap);
     problem.outer = solver->choice_or("outer_boundary", kOuterBoundaryNames, OuterBoundary::open);
-    problem.outer_radius_factor = solver->number_or("outer_radius_factor", 5.0);
-    if (!(problem.outer_radius_factor > 1.0))
-      solver->fail("outer_radius_factor", "expected a number > 1");
+    // Beyond 100 bounding radii the open boundary gains nothing and the geometry's points
+    // merge within the mesher's tolerance, which is relative to the whole domain.
+    problem.outer_radius_factor =
+        solver->quantity_or("outer_radius_factor", Domain::between(1.0, 100.0).above(1.0), 5.0);
   }
   build_case(result);
   return result;
@@ -371,16 +388,30 @@ void build_case(Case& c) {
   air.material = use_material(input.background_material, input.background_where);
   problem.regions.push_back(air);
 
-  // MR fluid of the gaps.
+  // MR fluid of the gaps: [case] fluid, else the material of the first gap; every gap holds it.
   c.fluid.clear();
-  if (input.fluid.empty()) {
-    for (const RegionOutline& region : outlines)
-      if (region.gap != mesh::GapKind::none) {
-        c.fluid = materials.get(region.material, region.where).magnetic.name;
-        break;
-      }
-  } else {
-    c.fluid = materials.get(input.fluid, input.fluid_where).magnetic.name;
+  if (!input.fluid.empty())
+    c.fluid = mr_fluid(materials, input.fluid, input.fluid_where).magnetic.name;
+  if (input.valve)
+    for (const TemplateParameter& p : input.valve->parameters) {
+      if (p.role != ParameterRole::fluid) continue;
+      const auto given = input.template_values.key_where.find(p.key);
+      mr_fluid(materials, input.template_values.text(p.key),
+               given != input.template_values.key_where.end()
+                   ? given->second
+                   : input.template_values.where + " (default " + p.key + ")");
+    }
+  for (const RegionOutline& region : outlines) {
+    if (region.gap == mesh::GapKind::none) continue;
+    const std::string where =
+        (region.material_where.empty() ? region.where : region.material_where) + ": gap '" +
+        region.name + "'";
+    const std::string name = mr_fluid(materials, region.material, where).magnetic.name;
+    if (c.fluid.empty()) c.fluid = name;
+    if (normalised_material_name(name) != normalised_material_name(c.fluid))
+      throw InputError(where + " holds '" + name + "'; expected the case's MR fluid '" + c.fluid +
+                       "' (" + (input.fluid.empty() ? "that of the first gap" : input.fluid_where) +
+                       "): one fluid fills every gap");
   }
 }
 

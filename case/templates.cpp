@@ -231,6 +231,11 @@ TemplateParameter material(std::string key, std::string name, std::string doc) {
   return {std::move(key),  ParameterKind::material, 0.0,
           std::move(name), std::move(doc),          ParameterRole::choice};
 }
+TemplateParameter fluid_material(std::string name, std::string doc) {
+  TemplateParameter p = material("fluid_material", std::move(name), std::move(doc));
+  p.role = ParameterRole::fluid;
+  return p;
+}
 TemplateParameter circuit() {
   return {"circuit",
           ParameterKind::name,
@@ -258,7 +263,7 @@ std::vector<ValveTemplate> make_templates() {
         material("disk_material", "AISI 1010", "ring around the channel"),
         material("bobbin_material", "Aluminium 1100", "bobbin and sleeve"),
         material("coil_material", "Copper", "winding"),
-        material("fluid_material", "MRC-C1L", "MR fluid in the channel")},
+        fluid_material("MRC-C1L", "MR fluid in the channel")},
        build_annular});
   list.push_back(
       {"radial_valve",
@@ -275,8 +280,7 @@ std::vector<ValveTemplate> make_templates() {
         material("core_material", "AISI 1010", "pot core"),
         material("cover_material", "AISI 1010", "cover plate"),
         material("bobbin_material", "Aluminium 1100", "bobbin"),
-        material("coil_material", "Copper", "winding"),
-        material("fluid_material", "MRF-132DG", "MR fluid")},
+        material("coil_material", "Copper", "winding"), fluid_material("MRF-132DG", "MR fluid")},
        build_radial});
   list.push_back(
       {"meandering_valve",
@@ -298,7 +302,7 @@ std::vector<ValveTemplate> make_templates() {
         material("spacer_material", "Aluminium 1100", "spacer between the lips"),
         material("bobbin_material", "Aluminium 1100", "bobbin"),
         material("coil_material", "Copper", "winding"),
-        material("fluid_material", "MRF-132DG", "MR fluid (paper 001)")},
+        fluid_material("MRF-132DG", "MR fluid (paper 001)")},
        build_meandering});
   return list;
 }

@@ -26,6 +26,7 @@ enum class ParameterRole {
   wall,       ///< a steel wall thickness (the min_wall quantity takes the thinnest)
   count,      ///< a count (coil turns)
   choice,     ///< a material or name
+  fluid,      ///< the MR fluid of the gaps: a material with a [rheology] table
 };
 
 /// One named parameter of a template: key, unit, default, range, role and meaning.
@@ -47,7 +48,8 @@ struct TemplateParameter {
 struct TemplateValues {
   std::map<std::string, double> numbers;
   std::map<std::string, std::string> texts;
-  std::string where;  ///< "file:line: geometry" for error messages
+  std::string where;                             ///< "file:line: geometry" for error messages
+  std::map<std::string, std::string> key_where;  ///< "file:line: geometry.key" of keys given
 
   /// A numeric parameter (throws std::out_of_range for a key the template does not declare).
   double operator[](const std::string& key) const { return numbers.at(key); }

@@ -64,6 +64,18 @@ void TomlSection::allow_only(const std::vector<std::string_view>& known) const {
   }
 }
 
+void TomlSection::refuse_near_misses(const std::vector<std::string_view>& known) const {
+  for (auto&& [key, value] : *table_) {
+    const std::string_view name = key.str();
+    if (std::find(known.begin(), known.end(), name) != known.end()) continue;
+    for (std::string_view candidate : known)
+      if (edit_distance(name, candidate) <= 2)
+        throw InputError(
+            toml_location(file_, key.source().begin.line ? key.source() : value.source()) +
+            ": unknown key '" + key_path(name) + "'; did you mean '" + key_path(candidate) + "'?");
+  }
+}
+
 bool TomlSection::has(std::string_view key) const {
   return table_->contains(key);
 }
@@ -105,22 +117,69 @@ std::vector<double> TomlSection::numbers(std::string_view key) const {
   return out;
 }
 
-double TomlSection::positive(std::string_view key) const {
-  const std::optional<double> value = number(key);
-  if (!value) fail(key, "missing; expected a positive number");
-  if (*value <= 0.0) fail(key, "expected a positive number, got " + format_number(*value));
+double TomlSection::quantity(std::string_view key, const Domain& domain) const {
+  const std::optional<double> value = optional_quantity(key, domain);
+  if (!value) fail(key, "missing; expected " + domain.describe());
   return *value;
+}
+
+std::optional<double> TomlSection::optional_quantity(std::string_view key,
+                                                     const Domain& domain) const {
+  const std::optional<double> value = number(key);
+  if (value && !domain.contains(*value)) fail(key, domain.violation(*value));
+  return value;
+}
+
+double TomlSection::quantity_or(std::string_view key, const Domain& domain, double fallback) const {
+  return optional_quantity(key, domain).value_or(fallback);
+}
+
+std::vector<double> TomlSection::quantities(std::string_view key, const Domain& domain) const {
+  std::vector<double> result;
+  const toml::node* n = node(key);
+  if (!n) return result;
+  const toml::array* items = n->as_array();
+  if (!items) fail(key, "expected a list of numbers");
+  for (std::size_t i = 0; i < items->size(); ++i) {
+    const toml::node& item = (*items)[i];
+    double value = 0.0;
+    if (auto iv = item.value_exact<int64_t>())
+      value = static_cast<double>(*iv);
+    else if (auto fv = item.value_exact<double>())
+      value = *fv;
+    else
+      fail(key, "item " + std::to_string(i + 1) + ": expected a number");
+    if (!domain.contains(value))
+      fail(key, "item " + std::to_string(i + 1) + ": " + domain.violation(value));
+    result.push_back(value);
+  }
+  return result;
+}
+
+std::vector<std::string> TomlSection::strings(std::string_view key) const {
+  std::vector<std::string> result;
+  const toml::node* n = node(key);
+  if (!n) return result;
+  const toml::array* items = n->as_array();
+  if (!items) fail(key, "expected a list of strings");
+  for (std::size_t i = 0; i < items->size(); ++i) {
+    auto text = (*items)[i].value_exact<std::string>();
+    if (!text) fail(key, "item " + std::to_string(i + 1) + ": expected a string");
+    result.push_back(*text);
+  }
+  return result;
+}
+
+double TomlSection::positive(std::string_view key) const {
+  return quantity(key, Domain::positive());
 }
 
 double TomlSection::positive_or(std::string_view key, double fallback) const {
-  return has(key) ? positive(key) : fallback;
+  return quantity_or(key, Domain::positive(), fallback);
 }
 
 double TomlSection::non_negative_or(std::string_view key, double fallback) const {
-  const std::optional<double> value = number(key);
-  if (!value) return fallback;
-  if (*value < 0.0) fail(key, "expected a number >= 0, got " + format_number(*value));
-  return *value;
+  return quantity_or(key, Domain::non_negative(), fallback);
 }
 
 long long TomlSection::integer_or(std::string_view key, long long fallback) const {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/closest_key.hpp"
+#include "core/quantity_domain.hpp"
 #include "core/enum_names.hpp"
 
 namespace rheomag::cases {
@@ -24,6 +25,9 @@ class TomlSection {
 
   /// Throws InputError naming the first key not in `known` and the closest known key.
   void allow_only(const std::vector<std::string_view>& known) const;
+  /// For formats open to extension: keys not in `known` are allowed, but one within two edits of
+  /// a known key is refused as a likely misspelling (InputError with the known key).
+  void refuse_near_misses(const std::vector<std::string_view>& known) const;
 
   /// True if the key is present.
   bool has(std::string_view key) const;
@@ -41,6 +45,17 @@ class TomlSection {
   double positive_or(std::string_view key, double fallback) const;
   /// A finite number >= 0, `fallback` when absent.
   double non_negative_or(std::string_view key, double fallback) const;
+  /// A number in its declared domain (required): InputError "file:line: key: expected <domain>,
+  /// got <value>" otherwise. Every physical quantity of an input is read through these.
+  double quantity(std::string_view key, const Domain& domain) const;
+  /// A number in `domain`, or nothing when absent.
+  std::optional<double> optional_quantity(std::string_view key, const Domain& domain) const;
+  /// A number in `domain`, `fallback` when absent.
+  double quantity_or(std::string_view key, const Domain& domain, double fallback) const;
+  /// A list of numbers, each in `domain` (empty when absent).
+  std::vector<double> quantities(std::string_view key, const Domain& domain) const;
+  /// A list of strings (empty when absent).
+  std::vector<std::string> strings(std::string_view key) const;
   /// An integer, `fallback` when absent.
   long long integer_or(std::string_view key, long long fallback) const;
   /// A string or nothing when absent; InputError if not a string.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string>
 
 #include "core/error.hpp"
@@ -136,6 +137,13 @@ NarxModel fit_narx(const IoData& data, const NarxOptions& options) {
   const LagOrders& o = options.orders;
   if (o.na < 0 || o.nb < 1 || o.nk < 0 || options.degree < 1 || options.degree > 4)
     throw InputError("narx needs na >= 0, nb >= 1, nk >= 0 and degree 1..4");
+  if (data.size() > 0 && (data.y.array() == data.y(0)).all()) {
+    std::ostringstream message;
+    message.precision(12);
+    message << "narx: the output is constant (" << data.y(0) << " on all " << data.size()
+            << " samples); there is nothing to identify";
+    throw InputError(message.str());
+  }
   const Standardisation scaling = Standardisation::of(data);
   const IoData scaled = scaling.apply(data, "narx");
   const std::vector<Monomial> candidates = all_monomials(o.size(data.inputs()), options.degree);
@@ -155,6 +163,10 @@ NarxModel fit_narx(const IoData& data, const NarxOptions& options) {
   regressor_matrix(fit_part, o, phi, target);
   Eigen::MatrixXd p = candidate_matrix(phi, candidates);
   std::vector<int> order = frols_order(p, target, options.max_terms);
+  if (order.empty())
+    throw InputError(
+        "narx: no candidate term is independent of the others and explains the "
+        "output (rank-deficient regressors); nothing to fit");
   std::size_t best_count = 1;
   double best_error = std::numeric_limits<double>::infinity();
   Standardisation identity;
@@ -180,6 +192,8 @@ NarxModel fit_narx(const IoData& data, const NarxOptions& options) {
   regressor_matrix(scaled, o, phi, target);
   p = candidate_matrix(phi, candidates);
   order = frols_order(p, target, static_cast<int>(best_count));
+  if (order.empty())
+    throw InputError("narx: the regressors of the whole record are rank-deficient; nothing to fit");
   std::vector<Monomial> terms;
   Eigen::MatrixXd sub(p.rows(), static_cast<std::ptrdiff_t>(order.size()));
   for (std::size_t t = 0; t < order.size(); ++t) {

@@ -66,6 +66,10 @@ struct Recording {
 
   /// The column `name`; throws InputError naming the file if it is absent.
   const std::vector<double>& column(const std::string& name) const;
+  /// Throws InputError naming the file, the column and the samples when column `name` holds one
+  /// value on every sample of [begin, end) (clamped to the data): a model of it is undefined.
+  void require_varying(const std::string& name, std::size_t begin = 0,
+                       std::size_t end = static_cast<std::size_t>(-1)) const;
 };
 
 }  // namespace rheomag::lumped

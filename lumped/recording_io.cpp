@@ -14,7 +14,9 @@
 #include <sstream>
 
 #include "core/atomic_file.hpp"
+#include "case/toml_section.hpp"
 #include "core/error.hpp"
+#include "core/quantity_domain.hpp"
 
 namespace rheomag::lumped {
 
@@ -81,32 +83,6 @@ double parse_cell(const std::string& cell, const std::string& file, std::size_t 
   return value;
 }
 
-std::optional<double> optional_number(const toml::table& table, const std::string& key,
-                                      const std::string& file, const std::string& section) {
-  const toml::node* node = table.get(key);
-  if (!node) return std::nullopt;
-  auto value = node->value<double>();
-  if (!value || !std::isfinite(*value))
-    throw InputError(file + ": [" + section + "] " + key + " must be a finite number");
-  return *value;
-}
-
-std::vector<double> number_array(const toml::table& table, const std::string& key,
-                                 const std::string& file, const std::string& section) {
-  std::vector<double> out;
-  const toml::node* node = table.get(key);
-  if (!node) return out;
-  const toml::array* arr = node->as_array();
-  if (!arr) throw InputError(file + ": [" + section + "] " + key + " must be an array of numbers");
-  for (const auto& element : *arr) {
-    auto value = element.value<double>();
-    if (!value || !std::isfinite(*value))
-      throw InputError(file + ": [" + section + "] " + key + " must contain only finite numbers");
-    out.push_back(*value);
-  }
-  return out;
-}
-
 std::string format_number(double v) {
   char buffer[64];
   auto [ptr, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
@@ -116,89 +92,101 @@ std::string format_number(double v) {
 
 }  // namespace
 
+namespace {
+
+/// Areas and volumes of a rig: positive physical sizes, at most 10 m^2 (a 3.5 m bore) and
+/// 10 m^3, so a value off by hundreds of orders of magnitude is refused, not simulated.
+constexpr Domain kArea = Domain::between(0.0, 10.0, "m^2").above(0.0);
+constexpr Domain kVolume = Domain::between(0.0, 10.0, "m^3").above(0.0);
+
+}  // namespace
+
+RecordingMeta parse_sidecar(std::string_view text, const std::string& toml_path) {
+  using cases::TomlSection;
+  const toml::table doc = cases::parse_toml(text, toml_path);
+  const TomlSection top(doc, "", toml_path);
+  // The format is open to extension (other tables and keys are kept or ignored), but a key one
+  // or two letters off a known one is a typo that would silently drop a value.
+  top.refuse_near_misses({"recording", "rig", "valve", "coil"});
+  RecordingMeta meta;
+  meta.sidecar_path = toml_path;
+  const std::optional<TomlSection> rec = top.table("recording");
+  if (!rec) top.fail("recording", "missing; expected a [recording] table with drive and output");
+  rec->refuse_near_misses({"description", "drive", "output"});
+  meta.description = rec->string("description").value_or("");
+  meta.drive = rec->strings("drive");
+  if (meta.drive.empty()) rec->fail("drive", "expected a non-empty list of column names");
+  meta.output = rec->required_string("output");
+
+  if (const std::optional<TomlSection> rig = top.table("rig")) {
+    static const std::vector<std::string_view> declared{
+        "kind",      "piston_area", "chamber_volume", "rod_area",
+        "gas_force", "orientation", "driver_gain"};
+    rig->refuse_near_misses(declared);
+    if (rig->has("kind"))
+      meta.rig.kind = rig->choice_or("kind", kRigKindNames, RigKind::constant_velocity_pump);
+    meta.rig.piston_area = rig->optional_quantity("piston_area", kArea);
+    meta.rig.chamber_volume = rig->optional_quantity("chamber_volume", kVolume);
+    meta.rig.rod_area = rig->optional_quantity("rod_area", Domain::non_negative("m^2"));
+    if (meta.rig.rod_area && meta.rig.piston_area && !(*meta.rig.rod_area < *meta.rig.piston_area))
+      rig->fail("rod_area",
+                "expected less than piston_area = " + cases::format_number(*meta.rig.piston_area) +
+                    " m^2, got " + cases::format_number(*meta.rig.rod_area));
+    meta.rig.gas_force = rig->optional_quantity("gas_force", Domain::finite("N"));
+    if (auto o = rig->optional_quantity("orientation", Domain::between(-1.0, 1.0).whole())) {
+      if (*o == 0.0) rig->fail("orientation", "expected 1 or -1, got 0");
+      meta.rig.extra["orientation"] = *o;
+    }
+    if (auto gain = rig->optional_quantity("driver_gain", Domain::finite("A/V")))
+      meta.rig.extra["driver_gain"] = *gain;
+    for (const auto& [key, node] : rig->raw()) {
+      const std::string_view k = key.str();
+      if (std::find(declared.begin(), declared.end(), k) != declared.end()) continue;
+      if (node.is_number()) meta.rig.extra[std::string(k)] = rig->quantity(k, Domain::finite());
+    }
+  }
+  if (const std::optional<TomlSection> valve = top.table("valve")) {
+    valve->refuse_near_misses({"case", "yield_current", "yield_pressure", "viscous_resistance"});
+    if (auto c = valve->string("case")) {
+      fs::path p(*c);
+      if (p.is_relative()) p = fs::path(toml_path).parent_path() / p;
+      meta.valve.case_file = p.lexically_normal().string();
+    }
+    meta.valve.yield_current = valve->quantities("yield_current", Domain::finite("A"));
+    meta.valve.yield_pressure = valve->quantities("yield_pressure", Domain::non_negative("Pa"));
+    if (meta.valve.yield_current.size() != meta.valve.yield_pressure.size())
+      valve->fail("yield_pressure", "has " + std::to_string(meta.valve.yield_pressure.size()) +
+                                        " values, yield_current " +
+                                        std::to_string(meta.valve.yield_current.size()) +
+                                        "; expected one pressure per current");
+    for (std::size_t i = 1; i < meta.valve.yield_current.size(); ++i)
+      if (!(meta.valve.yield_current[i] > meta.valve.yield_current[i - 1]))
+        valve->fail("yield_current", "expected strictly increasing currents");
+    meta.valve.viscous_resistance =
+        valve->optional_quantity("viscous_resistance", Domain::positive("Pa s/m^3"));
+  }
+  if (const std::optional<TomlSection> coil = top.table("coil")) {
+    coil->refuse_near_misses({"resistance", "inductance"});
+    meta.coil.resistance = coil->optional_quantity("resistance", Domain::positive("ohm"));
+    meta.coil.inductance = coil->optional_quantity("inductance", Domain::non_negative("H"));
+  }
+  return meta;
+}
+
 RecordingMeta read_sidecar(const std::string& toml_path) {
   if (!fs::exists(toml_path))
     throw InputError(toml_path +
                      ": sidecar not found (every recording CSV needs a TOML sidecar "
                      "with the same stem; see shared/docs/recording-format.md)");
-  toml::table doc;
-  try {
-    doc = toml::parse_file(toml_path);
-  } catch (const toml::parse_error& e) {
-    std::ostringstream msg;
-    msg << toml_path << ":" << e.source().begin.line << ": " << e.description();
-    throw InputError(msg.str());
-  }
-  RecordingMeta meta;
-  meta.sidecar_path = toml_path;
-  const toml::table* rec = doc["recording"].as_table();
-  if (!rec) throw InputError(toml_path + ": missing [recording] table");
-  meta.description = (*rec)["description"].value_or(std::string());
-  const toml::array* drive = (*rec)["drive"].as_array();
-  if (!drive || drive->empty())
-    throw InputError(toml_path + ": [recording] drive must be a non-empty array of column names");
-  for (const auto& d : *drive) {
-    auto name = d.value<std::string>();
-    if (!name) throw InputError(toml_path + ": [recording] drive must contain strings");
-    meta.drive.push_back(*name);
-  }
-  auto output = (*rec)["output"].value<std::string>();
-  if (!output || output->empty())
-    throw InputError(toml_path + ": [recording] output must be a column name");
-  meta.output = *output;
-
-  if (const toml::table* rig = doc["rig"].as_table()) {
-    const std::string kind = (*rig)["kind"].value_or(std::string());
-    if (!kind.empty()) {
-      meta.rig.kind = kRigKindNames.find(kind);
-      if (!meta.rig.kind)
-        throw InputError(toml_path + ": [rig] kind '" + kind +
-                         "' is not one of constant_velocity_pump, bypass_cylinder, damper, "
-                         "coil_bench");
-    }
-    meta.rig.piston_area = optional_number(*rig, "piston_area", toml_path, "rig");
-    meta.rig.chamber_volume = optional_number(*rig, "chamber_volume", toml_path, "rig");
-    meta.rig.rod_area = optional_number(*rig, "rod_area", toml_path, "rig");
-    meta.rig.gas_force = optional_number(*rig, "gas_force", toml_path, "rig");
-    for (const auto& [key, node] : *rig) {
-      std::string k(key.str());
-      if (k == "kind" || k == "piston_area" || k == "chamber_volume" || k == "rod_area" ||
-          k == "gas_force")
-        continue;
-      if (auto v = node.value<double>()) meta.rig.extra[k] = *v;
-    }
-  }
-  if (const toml::table* valve = doc["valve"].as_table()) {
-    if (auto c = (*valve)["case"].value<std::string>()) {
-      fs::path p(*c);
-      if (p.is_relative()) p = fs::path(toml_path).parent_path() / p;
-      meta.valve.case_file = p.lexically_normal().string();
-    }
-    meta.valve.yield_current = number_array(*valve, "yield_current", toml_path, "valve");
-    meta.valve.yield_pressure = number_array(*valve, "yield_pressure", toml_path, "valve");
-    if (meta.valve.yield_current.size() != meta.valve.yield_pressure.size())
-      throw InputError(toml_path + ": [valve] yield_current and yield_pressure differ in length");
-    for (std::size_t i = 1; i < meta.valve.yield_current.size(); ++i)
-      if (!(meta.valve.yield_current[i] > meta.valve.yield_current[i - 1]))
-        throw InputError(toml_path + ": [valve] yield_current must be strictly increasing");
-    meta.valve.viscous_resistance =
-        optional_number(*valve, "viscous_resistance", toml_path, "valve");
-  }
-  if (const toml::table* coil = doc["coil"].as_table()) {
-    meta.coil.resistance = optional_number(*coil, "resistance", toml_path, "coil");
-    meta.coil.inductance = optional_number(*coil, "inductance", toml_path, "coil");
-    if (meta.coil.resistance && *meta.coil.resistance <= 0)
-      throw InputError(toml_path + ": [coil] resistance must be > 0 ohm");
-    if (meta.coil.inductance && *meta.coil.inductance < 0)
-      throw InputError(toml_path + ": [coil] inductance must be >= 0 H");
-  }
-  return meta;
+  return parse_sidecar(cases::read_input_file(toml_path), toml_path);
 }
 
-Recording read_csv_samples(const std::string& csv_path) {
+Recording parse_csv_samples(std::string_view text, const std::string& csv_path) {
   std::vector<std::string> warnings;
-  std::ifstream in(csv_path);
-  if (!in) throw InputError(csv_path + ": cannot open recording");
+  // A UTF-8 byte-order mark (what many Windows tools write first) is not part of the header.
+  constexpr std::string_view bom = "\xEF\xBB\xBF";
+  if (text.substr(0, bom.size()) == bom) text.remove_prefix(bom.size());
+  std::istringstream in{std::string(text)};
   Recording rec;
   rec.csv_path = csv_path;
   std::string line;
@@ -213,6 +201,15 @@ Recording read_csv_samples(const std::string& csv_path) {
     break;
   }
   if (header.empty()) throw InputError(csv_path + ": no header row");
+  if (header.size() == 1)
+    for (const char separator : {';', '\t', ' '})
+      if (header[0].find(separator) != std::string::npos)
+        fail_at(csv_path, line_no,
+                "the header '" + header[0] +
+                    "' has no comma; expected comma-separated columns "
+                    "(',' between cells, '.' as the decimal point), this file seems to use " +
+                    (separator == '\t' ? std::string("tabs")
+                                        : "'" + std::string(1, separator) + "'"));
   std::vector<int> slot(header.size(), -1);  // index into `kept`, -1 for ignored columns
   std::vector<std::string> kept;
   std::set<std::string> seen;
@@ -264,6 +261,13 @@ Recording read_csv_samples(const std::string& csv_path) {
   }
   rec.warnings = std::move(warnings);
   return rec;
+}
+
+Recording read_csv_samples(const std::string& csv_path) {
+  std::error_code error;
+  if (!fs::is_regular_file(csv_path, error) && fs::exists(csv_path, error))
+    throw InputError(csv_path + ": not a regular file; expected a recording CSV");
+  return parse_csv_samples(cases::read_input_file(csv_path), csv_path);
 }
 
 Recording read_recording(const std::string& csv_path) {

@@ -10,6 +10,7 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <unordered_map>
 
@@ -124,14 +125,23 @@ void check_mesh_size(const Pslg& pslg, const MeshOptions& options,
   // Equilateral triangles of edge h have area sqrt(3)/4 h^2; refined meshes are about twice as
   // dense, hence the factor 2.
   double estimate = 0.0;
+  std::size_t smallest = size.size();
   for (std::size_t r = 0; r < size.size(); ++r)
-    if (std::isfinite(size[r]) && size[r] > 0.0)
+    if (std::isfinite(size[r]) && size[r] > 0.0) {
       estimate += 2.0 * geometry[r].area / (std::sqrt(3.0) / 4.0 * size[r] * size[r]);
-  if (estimate > static_cast<double>(options.max_elements))
+      if (smallest == size.size() || size[r] < size[smallest]) smallest = r;
+    }
+  if (estimate > static_cast<double>(options.max_elements)) {
+    // The sizes are in metres here whatever the input's units: say the smallest one so a unit
+    // mistake shows (a case in mm converts its mesh_size to metres before it reaches the mesher).
+    std::ostringstream smallest_size;
+    smallest_size << size[smallest] << " m in region '" << pslg.regions[smallest].name << "'";
     throw InputError(pslg_name(pslg) + ": the requested mesh sizes give about " +
                      std::to_string(static_cast<long>(estimate)) + " elements, more than the " +
                      std::to_string(options.max_elements) +
-                     " allowed; expected larger mesh sizes (check units: lengths are in metres)");
+                     " allowed; expected larger mesh sizes (the smallest is " +
+                     smallest_size.str() + ")");
+  }
 }
 
 double automatic_size(const Cdt& cdt) {

@@ -18,3 +18,21 @@ function(rheomag_add_tests lib)
                          PROPERTIES LABELS ${lib})
   endforeach()
 endfunction()
+
+# rheomag_add_asan_fuzz(NAME LABEL SOURCES...): a reader fuzz test built with AddressSanitizer +
+# UndefinedBehaviorSanitizer from the given sources and the sanitized case layer
+# (rheomag_case_asan: case/ and core/, tests/case/CMakeLists.txt), run by CTest as LABEL.NAME.
+function(rheomag_add_asan_fuzz name label)
+  set(target ${label}_${name})
+  add_executable(${target} ${ARGN})
+  target_include_directories(${target} PRIVATE ${CMAKE_SOURCE_DIR})
+  target_compile_options(${target} PRIVATE ${RHEOMAG_ASAN_FLAGS})
+  target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+  target_link_libraries(${target} PRIVATE rheomag_case_asan GTest::gtest_main)
+  target_compile_definitions(${target} PRIVATE
+    RHEOMAG_TEST_DATA="${RHEOMAG_TEST_DATA}" RHEOMAG_SOURCE_DIR="${RHEOMAG_SOURCE_DIR}"
+    RHEOMAG_MATERIALS_DIR="${CMAKE_SOURCE_DIR}/cases/materials")
+  add_test(NAME ${label}.${name} COMMAND ${target})
+  set_tests_properties(${label}.${name} PROPERTIES LABELS ${label}
+                       ENVIRONMENT "ASAN_OPTIONS=detect_leaks=1;UBSAN_OPTIONS=print_stacktrace=1")
+endfunction()

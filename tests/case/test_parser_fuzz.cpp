@@ -6,17 +6,13 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <functional>
-#include <random>
-#include <sstream>
 #include <string>
-#include <vector>
 
 #include "case/case_file.hpp"
 #include "case/case_sections.hpp"
 #include "case/femm_import.hpp"
 #include "core/error.hpp"
+#include "tests/input_fuzz.hpp"
 
 // The bundled cases carry sections of later layers ([valve], [optimise]); in the program those
 // layers register them, and this test, which links only the layers below, registers them itself.
@@ -25,98 +21,9 @@ const bool kLaterSectionsRegistered = rheomag::cases::register_case_section("val
 
 using namespace rheomag::cases;
 
-namespace {
-
-std::string read(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-/// Mutations: truncation, byte replacement, token injection, line deletion and duplication.
-std::vector<std::string> mutants(const std::string& text, unsigned seed, int count) {
-  std::vector<std::string> out;
-  std::mt19937 random(seed);
-  const std::vector<std::string> tokens{"nan",
-                                        "inf",
-                                        "-1",
-                                        "0",
-                                        "1e999",
-                                        "-1e308",
-                                        "\"",
-                                        "[",
-                                        "]",
-                                        "<",
-                                        ">",
-                                        "=",
-                                        "\n",
-                                        "\r",
-                                        "[[region]]",
-                                        "999999",
-                                        "<BeginBlock>",
-                                        "[NumPoints] = 3",
-                                        "\t",
-                                        "#",
-                                        "{",
-                                        "}"};
-  for (std::size_t cut = 0; cut < text.size(); cut += std::max<std::size_t>(1, text.size() / 150))
-    out.push_back(text.substr(0, cut));
-  for (int i = 0; i < count; ++i) {
-    std::string m = text;
-    const int edits = 1 + static_cast<int>(random() % 3);
-    for (int e = 0; e < edits && !m.empty(); ++e) {
-      const std::size_t at = random() % m.size();
-      switch (random() % 4) {
-        case 0:
-          m[at] = static_cast<char>(random() % 256);
-          break;
-        case 1:
-          m.insert(at, tokens[random() % tokens.size()]);
-          break;
-        case 2: {  // delete the line containing `at`
-          const std::size_t begin = m.rfind('\n', at);
-          const std::size_t end = m.find('\n', at);
-          m.erase(begin == std::string::npos ? 0 : begin,
-                  end == std::string::npos ? std::string::npos : end - begin);
-          break;
-        }
-        default: {  // duplicate the line containing `at`
-          const std::size_t begin = m.rfind('\n', at);
-          const std::size_t end = m.find('\n', at);
-          const std::size_t b = begin == std::string::npos ? 0 : begin;
-          m.insert(b, m.substr(b, (end == std::string::npos ? m.size() : end) - b));
-          break;
-        }
-      }
-    }
-    out.push_back(m);
-  }
-  return out;
-}
-
-/// Runs `parse` on every mutant; counts outcomes; fails on any non-InputError exception.
-void expect_only_input_errors(const std::vector<std::string>& inputs,
-                              const std::function<void(const std::string&)>& parse) {
-  int parsed = 0, rejected = 0;
-  for (std::size_t i = 0; i < inputs.size(); ++i) {
-    try {
-      parse(inputs[i]);
-      ++parsed;
-    } catch (const rheomag::InputError& e) {
-      ++rejected;
-      EXPECT_GT(std::string(e.what()).size(), 10u) << "message too short: " << e.what();
-    } catch (const std::exception& e) {
-      ADD_FAILURE() << "input " << i << " threw a non-InputError: " << e.what() << "\n---\n"
-                    << inputs[i].substr(0, 2000);
-    }
-  }
-  // Both outcomes occur: the mutations reach the parser's checks, not just its first line.
-  EXPECT_GT(parsed, 0);
-  EXPECT_GT(rejected, static_cast<int>(inputs.size()) / 4);
-}
-
-}  // namespace
+using rheomag::testing::expect_only_input_errors;
+using rheomag::testing::mutants;
+using rheomag::testing::read;
 
 TEST(ParserFuzz, FemmFile) {
   const std::string text = read(std::string(RHEOMAG_TEST_DATA) + "/pot_core.fem");

@@ -145,7 +145,7 @@ TEST_F(RecordingFiles, BadSidecar) {
   EXPECT_NE(msg.find("drive"), std::string::npos) << msg;
   msg =
       error_of(csv, "[recording]\ndrive=[\"velocity\"]\noutput=\"pressure\"\n[rig]\nkind=\"x\"\n");
-  EXPECT_NE(msg.find("[rig] kind"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("rec.toml:5: rig.kind: expected"), std::string::npos) << msg;
   msg = error_of(csv, "[recording\n");
   EXPECT_NE(msg.find("rec.toml:1"), std::string::npos) << msg;
 }

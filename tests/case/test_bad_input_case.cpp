@@ -1,0 +1,118 @@
+// Bad input of case files found by issue #18's probe: each physical quantity is read in its
+// declared domain (whole turns, an MR fluid where a fluid belongs, a bounded outer radius), and
+// the refusal names file, line and key.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "case/case_file.hpp"
+#include "core/error.hpp"
+
+using namespace rheomag::cases;
+
+namespace {
+
+/// The bundled annular valve case (template form, units mm).
+std::string annular_valve() {
+  std::ifstream in(std::string(RHEOMAG_SOURCE_DIR) + "/cases/annular_valve.toml");
+  std::ostringstream text;
+  text << in.rdbuf();
+  // Only the case layer is linked here: drop the [valve] table of the valve link.
+  return text.str().substr(0, text.str().find("\n[valve]"));
+}
+
+/// The 1-based line of the first occurrence of `what` in `text`.
+int line_of(const std::string& text, const std::string& what) {
+  const std::size_t at = text.find(what);
+  EXPECT_NE(at, std::string::npos) << what;
+  int line = 1;
+  for (std::size_t i = 0; i < at; ++i) line += text[i] == '\n';
+  return line;
+}
+
+/// `text` with the first occurrence of `from` replaced by `to`.
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return text.replace(at, from.size(), to);
+}
+
+/// The InputError message of parsing `text`, or "no error".
+std::string error_of(const std::string& text) {
+  try {
+    parse_case(text, "valve.toml");
+  } catch (const rheomag::InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+}  // namespace
+
+TEST(BadInputCase, BundledCaseReads) {
+  EXPECT_EQ(error_of(annular_valve()), "no error");
+}
+
+// turns = 600.5 was used as 600.5 turns while the summary printed 600.
+TEST(BadInputCase, TemplateTurnsAreWhole) {
+  const std::string text = replaced(annular_valve(), "turns = 600 ", "turns = 600.5 ");
+  EXPECT_EQ(error_of(text), "valve.toml:" + std::to_string(line_of(text, "turns = 600.5")) +
+                                ": geometry.turns: expected a whole number >= 1, got 600.5");
+}
+
+TEST(BadInputCase, RegionCoilTurnsAreWhole) {
+  const std::string text = R"([[circuit]]
+name = "coil"
+[[region]]
+name = "winding"
+material = "Copper"
+coil = { circuit = "coil", turns = 10.5 }
+points = [[0, 0], [1, 0], [1, 1], [0, 1], [0, 0]]
+)";
+  EXPECT_NE(error_of(text).find("region[1].coil.turns: expected a whole number >= 1, got 10.5"),
+            std::string::npos)
+      << error_of(text);
+}
+
+// A steel fluid_material got the MR-fluid pressure drop of [case] fluid.
+TEST(BadInputCase, FluidMaterialMustBeAnMrFluid) {
+  const std::string text =
+      replaced(annular_valve(), "fluid_material = \"MRC-C1L\"", "fluid_material = \"AISI 1010\"");
+  const std::string message = error_of(text);
+  EXPECT_EQ(message.rfind("valve.toml:" + std::to_string(line_of(text, "fluid_material =")) +
+                              ": geometry.fluid_material: 'AISI 1010' is not an MR fluid (its "
+                              "material has no [rheology] table); expected one of: ",
+                          0),
+            0u)
+      << message;
+  EXPECT_NE(message.find("MRC-C1L"), std::string::npos) << message;
+}
+
+TEST(BadInputCase, CaseFluidMustBeAnMrFluid) {
+  const std::string text = replaced(annular_valve(), "fluid = \"MRC-C1L\"", "fluid = \"Copper\"");
+  EXPECT_EQ(error_of(text).rfind("valve.toml:" + std::to_string(line_of(text, "fluid = \"Copper")) +
+                                     ": case.fluid: 'Copper' is not an MR fluid",
+                                 0),
+            0u)
+      << error_of(text);
+}
+
+TEST(BadInputCase, GapsHoldTheCaseFluid) {
+  const std::string text =
+      replaced(annular_valve(), "fluid_material = \"MRC-C1L\"", "fluid_material = \"MRF-132DG\"");
+  EXPECT_NE(error_of(text).find("holds 'MRF-132DG'; expected the case's MR fluid 'MRC-C1L'"),
+            std::string::npos)
+      << error_of(text);
+}
+
+// A huge outer_radius_factor gave "points 0 and 7 coincide" without naming the key.
+TEST(BadInputCase, OuterRadiusFactorBounded) {
+  const std::string text =
+      replaced(annular_valve(), "outer_radius_factor = 5.0", "outer_radius_factor = 1.0e9");
+  EXPECT_EQ(error_of(text),
+            "valve.toml:" + std::to_string(line_of(text, "outer_radius_factor = 1.0e9")) +
+                ": solver.outer_radius_factor: expected a number in (1, 100], got 1000000000");
+}

@@ -1,0 +1,164 @@
+// Issue #18's probe of the command line, end to end through the rheomag binary: each class of bad
+// input ends in exit 2 with a message naming file, line and key (or the option), never a crash,
+// a silent wrong result or a device node replaced; valid input that was refused is read.
+
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Exit code, stdout and stderr of one run of the binary.
+struct CliRun {
+  int code = -1;
+  std::string out, err;
+};
+
+/// Runs `rheomag ARGS` in `dir`.
+CliRun rheomag(const fs::path& dir, const std::string& args) {
+  const fs::path err = dir / "stderr.txt";
+  const std::string command =
+      "cd '" + dir.string() + "' && '" + RHEOMAG_BINARY + "' " + args + " 2>'" + err.string() + "'";
+  CliRun r;
+  FILE* pipe = popen(command.c_str(), "r");
+  char buffer[4096];
+  while (std::size_t got = std::fread(buffer, 1, sizeof buffer, pipe)) r.out.append(buffer, got);
+  const int status = pclose(pipe);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream e(err);
+  r.err.assign(std::istreambuf_iterator<char>(e), {});
+  return r;
+}
+
+class BadInputCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = fs::temp_directory_path() /
+          ("rheomag_bad_input_" +
+           std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+
+  /// A 400-sample damper recording (velocity sine, force `force(k)`) with `sidecar` beside it.
+  void recording(const std::string& stem, const std::string& sidecar, double (*force)(int)) const {
+    std::ofstream csv(dir / (stem + ".csv"));
+    csv << "t,velocity,force\n";
+    for (int k = 0; k < 400; ++k)
+      csv << k * 0.005 << ',' << 0.05 * std::sin(0.1 * k) << ',' << force(k) << '\n';
+    std::ofstream(dir / (stem + ".toml")) << sidecar;
+  }
+  void write(const std::string& name, const std::string& text) const {
+    std::ofstream(dir / name) << text;
+  }
+  /// The bundled annular valve case with line `from` replaced by `to`.
+  void annular_case(const std::string& name, const std::string& from, const std::string& to) {
+    std::ifstream in(std::string(RHEOMAG_SOURCE_DIR) + "/cases/annular_valve.toml");
+    std::ostringstream text;
+    text << in.rdbuf();
+    std::string s = text.str();
+    const std::size_t at = s.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    s.replace(at, from.size(), to);
+    write(name, s);
+  }
+  fs::path dir;
+};
+
+const char* kDamperSidecar =
+    "[recording]\ndrive = [\"velocity\"]\noutput = \"force\"\n"                // lines 1-3
+    "[rig]\nkind = \"damper\"\npiston_area = AREA\nchamber_volume = 2.0e-5\n"  // 4-7
+    "[valve]\nyield_current = [0.0, 1.0]\nyield_pressure = [0.0, 6.0e4]\n"
+    "viscous_resistance = 1.3e8\n";
+
+std::string damper_sidecar(const std::string& area) {
+  std::string s = kDamperSidecar;
+  s.replace(s.find("AREA"), 4, area);
+  return s;
+}
+
+double sine_force(int k) {
+  return 400.0 * std::tanh(std::sin(0.1 * k) / 0.3);
+}
+double constant_force(int) {
+  return 5.0;
+}
+
+}  // namespace
+
+// narx of a constant output died with SIGSEGV (exit 139).
+TEST_F(BadInputCli, ConstantOutputNarxIsExit2NamingFileAndColumn) {
+  recording("flat", damper_sidecar("1.0e-3"), constant_force);
+  for (const char* model : {"narx:2,2,1", "arx:2,2,1", "bingham"}) {
+    const CliRun r = rheomag(dir, std::string("fit flat.csv --model ") + model);
+    EXPECT_EQ(r.code, 2) << model << ": " << r.err;
+    EXPECT_NE(r.err.find("flat.csv: column 'force' is constant (5) on samples 0:400"),
+              std::string::npos)
+        << model << ": " << r.err;
+  }
+}
+
+// A zero piston area sent diagnose to 16.8 GB and std::bad_alloc (exit 1).
+TEST_F(BadInputCli, ZeroPistonAreaIsExit2AtReadTime) {
+  recording("rec", damper_sidecar("0.0"), sine_force);
+  const CliRun r = rheomag(dir, "diagnose rec.csv --quiet");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("rec.toml:6: rig.piston_area: expected a number in (0, 10] (m^2), got 0"),
+            std::string::npos)
+      << r.err;
+}
+
+// 1e300 m^2 printed "FIT -inf %" with exit 0 and Ceres' glog lines on stderr.
+TEST_F(BadInputCli, AbsurdPistonAreaIsExit2WithoutThirdPartyLogging) {
+  recording("rec", damper_sidecar("1.0e300"), sine_force);
+  const CliRun r = rheomag(dir, "diagnose rec.csv --quiet");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_EQ(r.err,
+            "rheomag: error: rec.toml:6: rig.piston_area: expected a number in (0, 10] (m^2), got "
+            "1e+300\n");
+  EXPECT_EQ(r.out.find("nan"), std::string::npos);
+}
+
+// A CSV written with a UTF-8 byte-order mark was refused with "no 't' column".
+TEST_F(BadInputCli, ByteOrderMarkCsvIsRead) {
+  recording("plain", damper_sidecar("1.0e-3"), sine_force);
+  std::ifstream in(dir / "plain.csv");
+  std::ostringstream text;
+  text << "\xEF\xBB\xBF" << in.rdbuf();
+  write("bom.csv", text.str());
+  write("bom.toml", damper_sidecar("1.0e-3"));
+  const CliRun r = rheomag(dir, "fit bom.csv --model arx:2,2,1");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.find("unknown column"), std::string::npos) << r.err;
+}
+
+// `--vtk ""` wrote nothing and said nothing.
+TEST_F(BadInputCli, EmptyVtkPathIsExit2) {
+  const std::string c = std::string(RHEOMAG_SOURCE_DIR) + "/cases/annular_valve.toml";
+  const CliRun r = rheomag(dir, "mesh '" + c + "' --vtk ''");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("--vtk"), std::string::npos) << r.err;
+}
+
+// `--vtk` onto a device node replaced the node by a regular file; a FIFO stands in for the node
+// here (no root needed, nothing of the system at stake if this regresses).
+TEST_F(BadInputCli, VtkOntoNonRegularFileIsRefusedAndTheFileKept) {
+  const fs::path fifo = dir / "field.vtu";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::string c = std::string(RHEOMAG_SOURCE_DIR) + "/cases/annular_valve.toml";
+  const CliRun r = rheomag(dir, "mesh '" + c + "' --vtk field.vtu");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  for (const auto& entry : fs::directory_iterator(dir))
+    EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+}

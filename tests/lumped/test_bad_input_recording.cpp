@@ -1,0 +1,175 @@
+// Bad input of recordings (issue #18's probe): every physical value of a sidecar has a declared
+// domain and a value outside it is refused at read time with file, line and key; CSVs with a
+// UTF-8 byte-order mark are read; a CSV with another separator is refused naming it; a constant
+// output is refused naming file and column; narx on it is an InputError, not a crash.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "core/error.hpp"
+#include "lumped/ident_narx.hpp"
+#include "lumped/recording_io.hpp"
+
+using ::testing::HasSubstr;
+using namespace rheomag::lumped;
+
+namespace {
+
+/// A valid damper sidecar; `rig` replaces the [rig] table's lines 6-8 (piston_area on line 7).
+std::string sidecar(const std::string& rig_lines,
+                    const std::string& valve_lines = "viscous_resistance = 1.3e8\n") {
+  return "[recording]\n"             // 1
+         "drive = [\"velocity\"]\n"  // 2
+         "output = \"force\"\n"      // 3
+         "\n"                        // 4
+         "[rig]\n"                   // 5
+         "kind = \"damper\"\n" +     // 6
+         rig_lines +                 // 7, 8, ...
+         "\n[valve]\n"
+         "yield_current = [0.0, 1.0]\n"
+         "yield_pressure = [0.0, 6.0e4]\n" +
+         valve_lines;
+}
+
+/// The InputError message of parsing `text` as a sidecar ("" if it parses).
+std::string sidecar_error(const std::string& text) {
+  try {
+    parse_sidecar(text, "rec.toml");
+  } catch (const rheomag::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string csv_error(const std::string& text) {
+  try {
+    parse_csv_samples(text, "rec.csv");
+  } catch (const rheomag::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(BadInputSidecar, ValidSidecarReads) {
+  const RecordingMeta meta =
+      parse_sidecar(sidecar("piston_area = 1.0e-3\nchamber_volume = 2.0e-5\n"), "rec.toml");
+  EXPECT_DOUBLE_EQ(*meta.rig.piston_area, 1.0e-3);
+  EXPECT_DOUBLE_EQ(*meta.rig.chamber_volume, 2.0e-5);
+  EXPECT_DOUBLE_EQ(*meta.valve.viscous_resistance, 1.3e8);
+}
+
+// Zero piston area sent diagnose to 16.8 GB and std::bad_alloc; a negative one was used.
+TEST(BadInputSidecar, PistonAreaMustBePositive) {
+  EXPECT_EQ(sidecar_error(sidecar("piston_area = 0.0\n")),
+            "rec.toml:7: rig.piston_area: expected a number in (0, 10] (m^2), got 0");
+  EXPECT_EQ(sidecar_error(sidecar("piston_area = -1.0e-3\n")),
+            "rec.toml:7: rig.piston_area: expected a number in (0, 10] (m^2), got -0.001");
+}
+
+// 1e300 m^2 printed "FIT -inf %" with exit 0: an area is a physical size, at most 10 m^2.
+TEST(BadInputSidecar, PistonAreaMustBePhysical) {
+  EXPECT_EQ(sidecar_error(sidecar("piston_area = 1.0e300\n")),
+            "rec.toml:7: rig.piston_area: expected a number in (0, 10] (m^2), got 1e+300");
+}
+
+// A negative chamber volume turned the diagnosis into "none".
+TEST(BadInputSidecar, ChamberVolumeMustBePositive) {
+  EXPECT_EQ(sidecar_error(sidecar("piston_area = 1.0e-3\nchamber_volume = -2.0e-5\n")),
+            "rec.toml:8: rig.chamber_volume: expected a number in (0, 10] (m^3), got -2e-05");
+}
+
+TEST(BadInputSidecar, ViscousResistanceMustBePositive) {
+  EXPECT_EQ(sidecar_error(sidecar("piston_area = 1.0e-3\n", "viscous_resistance = -1.3e8\n")),
+            "rec.toml:12: valve.viscous_resistance: expected a positive number (Pa s/m^3), got "
+            "-130000000");
+}
+
+TEST(BadInputSidecar, YieldPressureMustBeNonNegative) {
+  const std::string text =
+      "[recording]\ndrive = [\"velocity\"]\noutput = \"force\"\n[valve]\n"
+      "yield_current = [0.0, 1.0]\nyield_pressure = [0.0, -6.0e4]\n";
+  EXPECT_EQ(sidecar_error(text),
+            "rec.toml:6: valve.yield_pressure: item 2: expected a number >= 0 (Pa), got -60000");
+}
+
+TEST(BadInputSidecar, RodAreaBelowPistonArea) {
+  EXPECT_EQ(sidecar_error(sidecar("piston_area = 1.0e-3\nrod_area = 2.0e-3\n")),
+            "rec.toml:8: rig.rod_area: expected less than piston_area = 0.001 m^2, got 0.002");
+}
+
+TEST(BadInputSidecar, OrientationIsOneOrMinusOne) {
+  EXPECT_EQ(sidecar_error(sidecar("piston_area = 1.0e-3\norientation = 0.5\n")),
+            "rec.toml:8: rig.orientation: expected a whole number in [-1, 1], got 0.5");
+  EXPECT_EQ(sidecar_error(sidecar("piston_area = 1.0e-3\norientation = 0\n")),
+            "rec.toml:8: rig.orientation: expected 1 or -1, got 0");
+}
+
+TEST(BadInputSidecar, CoilResistanceMustBePositive) {
+  EXPECT_EQ(sidecar_error(sidecar("piston_area = 1.0e-3\n") + "[coil]\nresistance = 0\n"),
+            "rec.toml:14: coil.resistance: expected a positive number (ohm), got 0");
+}
+
+// A misspelt key silently dropped the value; unknown keys far from any known one stay allowed.
+TEST(BadInputSidecar, MisspeltKeyRefused) {
+  EXPECT_EQ(sidecar_error(sidecar("piston_aera = 1.0e-3\n")),
+            "rec.toml:7: unknown key 'rig.piston_aera'; did you mean 'rig.piston_area'?");
+  EXPECT_EQ(sidecar_error(sidecar("piston_area = 1.0e-3\nstroke_length = 0.05\n")), "");
+}
+
+TEST(BadInputSidecar, TextWhereANumberBelongs) {
+  EXPECT_EQ(sidecar_error(sidecar("piston_area = \"1e-3\"\n")),
+            "rec.toml:7: rig.piston_area: expected a number");
+}
+
+// A CSV saved with a UTF-8 byte-order mark was refused with "no 't' column".
+TEST(BadInputCsv, ByteOrderMarkAccepted) {
+  const Recording rec = parse_csv_samples("\xEF\xBB\xBFt,force\n0,1\n0.1,2\n", "rec.csv");
+  ASSERT_EQ(rec.t.size(), 2u);
+  EXPECT_DOUBLE_EQ(rec.column("force")[1], 2.0);
+}
+
+TEST(BadInputCsv, OtherSeparatorNamed) {
+  EXPECT_EQ(csv_error("t;force\n0;1\n0.1;2\n"),
+            "rec.csv:1: the header 't;force' has no comma; expected comma-separated columns (',' "
+            "between cells, '.' as the decimal point), this file seems to use ';'");
+  EXPECT_EQ(csv_error("t\tforce\n0\t1\n"),
+            "rec.csv:1: the header 't\tforce' has no comma; expected comma-separated columns (',' "
+            "between cells, '.' as the decimal point), this file seems to use tabs");
+}
+
+TEST(BadInputCsv, NonFiniteCellRefused) {
+  EXPECT_EQ(csv_error("t,force\n0,1\n0.1,nan\n"),
+            "rec.csv:3: 'nan' in column 'force' is NaN or infinite");
+}
+
+// Constant-output errors named no file or column.
+TEST(BadInputRecording, ConstantOutputNamed) {
+  Recording rec = parse_csv_samples("t,velocity,force\n0,1,5\n0.1,2,5\n0.2,3,5\n", "rec.csv");
+  EXPECT_THAT([&] { rec.require_varying("force"); },
+              ::testing::ThrowsMessage<rheomag::InputError>(
+                  "rec.csv: column 'force' is constant (5) on samples 0:3; there is nothing to "
+                  "identify"));
+  EXPECT_NO_THROW(rec.require_varying("velocity"));
+}
+
+// narx on a constant output died with SIGSEGV inside the QR of an empty regressor matrix.
+TEST(BadInputRecording, NarxOnConstantOutputIsInputError) {
+  IoData data;
+  const int n = 400;
+  data.u.resize(n, 1);
+  for (int k = 0; k < n; ++k) data.u(k, 0) = std::sin(0.1 * k);
+  data.y = Eigen::VectorXd::Constant(n, 5.0);
+  data.sample_time = 0.005;
+  NarxOptions options;
+  options.orders = {2, 2, 1};
+  EXPECT_THAT([&] { fit_narx(data, options); },
+              ::testing::ThrowsMessage<rheomag::InputError>(
+                  HasSubstr("narx: the output is constant (5 on all 400 samples)")));
+}

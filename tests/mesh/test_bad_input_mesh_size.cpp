@@ -1,0 +1,36 @@
+// A mesh refused as too fine says the smallest requested size, in metres, and its region (issue
+// #18: the message said "check units: lengths are in metres" even for a case written in mm,
+// whose sizes the case reader had already converted).
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/error.hpp"
+#include "mesh/mesher.hpp"
+#include "pslg_fixtures.hpp"
+
+namespace rheomag::mesh {
+namespace {
+
+TEST(BadInput, MeshTooFineNamesTheSmallestSize) {
+  fixtures::PslgBuilder b;
+  b.rectangle(0.0, 0.0, 0.03, 0.03);
+  b.region(0.015, 0.015, "pot", 1e-7);  // "mesh_size = 0.0001" in a case written in mm
+  b.pslg.source = "tiny.toml";
+  try {
+    generate_mesh(b.pslg);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind("tiny.toml: the requested mesh sizes give about ", 0), 0u) << message;
+    EXPECT_NE(message.find("; expected larger mesh sizes (the smallest is 1e-07 m in region "
+                           "'pot')"),
+              std::string::npos)
+        << message;
+    EXPECT_EQ(message.find("metres"), std::string::npos) << message;
+  }
+}
+
+}  // namespace
+}  // namespace rheomag::mesh
