@@ -21,10 +21,10 @@ struct BhPoint {
 /// A magnetic material: linear (relative permeability) or nonlinear (B-H table).
 struct Material {
   std::string name;
-  double mu_r = 1.0;          ///< relative permeability when `bh` is empty
-  std::vector<BhPoint> bh;    ///< B-H table, B ascending from (0, 0); empty = linear
+  double mu_r = 1.0;                   ///< relative permeability when `bh` is empty
+  std::vector<BhPoint> bh;             ///< B-H table, B ascending from (0, 0); empty = linear
   std::optional<double> conductivity;  ///< electrical conductivity [S/m]; empty: not stated
-  std::string source;         ///< where the data come from
+  std::string source;                  ///< where the data come from
 };
 
 /// A series circuit driving one or more coil regions.

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "core/closest_key.hpp"
-#include "core/quantity_domain.hpp"
 #include "core/enum_names.hpp"
+#include "core/quantity_domain.hpp"
 
 namespace rheomag::cases {
 

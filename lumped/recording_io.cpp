@@ -13,8 +13,8 @@
 #include <set>
 #include <sstream>
 
-#include "core/atomic_file.hpp"
 #include "case/toml_section.hpp"
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/quantity_domain.hpp"
 
@@ -204,12 +204,12 @@ Recording parse_csv_samples(std::string_view text, const std::string& csv_path) 
   if (header.size() == 1)
     for (const char separator : {';', '\t', ' '})
       if (header[0].find(separator) != std::string::npos)
-        fail_at(csv_path, line_no,
-                "the header '" + header[0] +
-                    "' has no comma; expected comma-separated columns "
-                    "(',' between cells, '.' as the decimal point), this file seems to use " +
-                    (separator == '\t' ? std::string("tabs")
-                                        : "'" + std::string(1, separator) + "'"));
+        fail_at(
+            csv_path, line_no,
+            "the header '" + header[0] +
+                "' has no comma; expected comma-separated columns "
+                "(',' between cells, '.' as the decimal point), this file seems to use " +
+                (separator == '\t' ? std::string("tabs") : "'" + std::string(1, separator) + "'"));
   std::vector<int> slot(header.size(), -1);  // index into `kept`, -1 for ignored columns
   std::vector<std::string> kept;
   std::set<std::string> seen;
