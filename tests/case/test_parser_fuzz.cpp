@@ -138,3 +138,30 @@ TEST(ParserFuzz, TomlTemplateCase) {
   expect_only_input_errors(mutants(text, 11, 600),
                            [](const std::string& t) { parse_case(t, "fuzz.toml"); });
 }
+
+// The .fem reader on a model with a magnet, a direction expression (muparser) and a point
+// property, mutated; and pot_core.fem cut at every byte: only InputErrors, and a cut file that
+// is rejected names a line.
+TEST(ParserFuzz, FemmMagnetsAndPointsAndEveryCut) {
+  std::string text = read(std::string(RHEOMAG_TEST_DATA) + "/pot_core.fem");
+  ASSERT_FALSE(text.empty());
+  for (std::size_t cut = 0; cut <= text.size(); ++cut) {
+    try {
+      parse_femm(text.substr(0, cut), "cut.fem");
+    } catch (const rheomag::InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("cut.fem:", 0), 0u) << e.what();
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "cut at byte " << cut << " threw a non-InputError: " << e.what();
+    }
+  }
+  text.replace(text.find("<H_c> = 0"), 9, "<H_c> = 8e5");
+  text.replace(text.find("[PointProps]  =  0"), 18,
+               "[PointProps] = 1\n<BeginPoint>\n<PointName> = \"wire\"\n<I_re> = 3\n"
+               "<A_re> = 0\n<EndPoint>");
+  text.replace(text.find("30\t-20\t0\t0"), 10, "30\t-20\t1\t0");
+  const std::size_t label = text.find("60\t0\t1\t-1\t0\t0\t0\t1\t0");
+  text.insert(text.find_first_of("\r\n", label), "\t\"theta + 90 * sin(x / 10)\"");
+  parse_femm(text, "magnet.fem");  // the seed itself parses
+  expect_only_input_errors(mutants(text, 1212, 1500),
+                           [](const std::string& t) { parse_femm(t, "fuzz.fem"); });
+}
