@@ -15,6 +15,7 @@
 #include "case/case_file.hpp"
 #include "case/femm_import.hpp"
 #include "core/error.hpp"
+#include "tests/case/pot_core_magnet.hpp"
 
 using namespace rheomag::cases;
 using ::testing::HasSubstr;
@@ -256,13 +257,7 @@ TEST(FemmImport, MaterialFieldsAsFemmUsesThem) {
 
 TEST(FemmImport, MagnetsAndPointProperties) {
   // A linear magnet block with a direction expression on its label; a point current.
-  std::string text = with("<H_c> = 0", "<H_c> = 8e5");  // the Air block becomes a magnet
-  text.replace(text.find("[PointProps]  =  0"), 18,
-               "[PointProps] = 1\n<BeginPoint>\n<PointName> = \"wire\"\n<I_re> = 3\n"
-               "<A_re> = 0\n<EndPoint>");
-  text.replace(text.find("30\t-20\t0\t0"), 10, "30\t-20\t1\t0");
-  const std::size_t label = text.find("60\t0\t1\t-1\t0\t0\t0\t1\t0");
-  text.insert(text.find_first_of("\r\n", label), "\t\"theta + 90\"");
+  const std::string text = rheomag::testing::pot_core_with_magnet(pot_core_text(), "theta + 90");
   const Problem p = parse_femm(text, "magnet.fem");
   const Material& magnet = p.materials[p.regions[4].material];
   EXPECT_DOUBLE_EQ(magnet.coercivity, 8e5);

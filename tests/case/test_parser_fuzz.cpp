@@ -17,6 +17,7 @@
 #include "case/case_sections.hpp"
 #include "case/femm_import.hpp"
 #include "core/error.hpp"
+#include "tests/case/pot_core_magnet.hpp"
 
 // The bundled cases carry sections of later layers ([valve], [optimise]); in the program those
 // layers register them, and this test, which links only the layers below, registers them itself.
@@ -154,13 +155,7 @@ TEST(ParserFuzz, FemmMagnetsAndPointsAndEveryCut) {
       ADD_FAILURE() << "cut at byte " << cut << " threw a non-InputError: " << e.what();
     }
   }
-  text.replace(text.find("<H_c> = 0"), 9, "<H_c> = 8e5");
-  text.replace(text.find("[PointProps]  =  0"), 18,
-               "[PointProps] = 1\n<BeginPoint>\n<PointName> = \"wire\"\n<I_re> = 3\n"
-               "<A_re> = 0\n<EndPoint>");
-  text.replace(text.find("30\t-20\t0\t0"), 10, "30\t-20\t1\t0");
-  const std::size_t label = text.find("60\t0\t1\t-1\t0\t0\t0\t1\t0");
-  text.insert(text.find_first_of("\r\n", label), "\t\"theta + 90 * sin(x / 10)\"");
+  text = rheomag::testing::pot_core_with_magnet(text, "theta + 90 * sin(x / 10)");
   parse_femm(text, "magnet.fem");  // the seed itself parses
   expect_only_input_errors(mutants(text, 1212, 1500),
                            [](const std::string& t) { parse_femm(t, "fuzz.fem"); });
