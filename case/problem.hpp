@@ -24,8 +24,8 @@ struct Material {
   double mu_r = 1.0;          ///< relative permeability when `bh` is empty
   std::vector<BhPoint> bh;    ///< B-H table, B ascending from (0, 0); empty = linear
   double conductivity = 0.0;  ///< electrical conductivity [S/m] (for eddy-current estimates)
-  double coercivity = 0.0;    ///< permanent magnet: H_c [A/m], B = mu0 mu_r (H + H_c m)
   std::string source;         ///< where the data come from
+  double coercivity = 0.0;    ///< permanent magnet: H_c [A/m], B = mu0 mu_r (H + H_c m)
 };
 
 /// A series circuit driving one or more coil regions.
@@ -60,11 +60,11 @@ struct MagnetDirection {
 
 /// Material, coil and gap data of one region (index matches Pslg::regions).
 struct RegionData {
-  int material = -1;              ///< index into Problem::materials
-  int circuit = -1;               ///< index into Problem::circuits, -1 = no coil
-  double turns = 0.0;             ///< coil turns in this region (sign gives the winding direction)
-  double current_density = 0.0;   ///< fixed source current density J [A/m^2] (FEMM block J)
-  MagnetDirection magnetisation;  ///< direction of H_c when the material is a magnet
+  int material = -1;             ///< index into Problem::materials
+  int circuit = -1;              ///< index into Problem::circuits, -1 = no coil
+  double turns = 0.0;            ///< coil turns in this region (sign gives the winding direction)
+  double current_density = 0.0;  ///< fixed source current density J [A/m^2] (FEMM block J)
+  MagnetDirection magnetisation{};  ///< direction of H_c when the material is a magnet
 };
 
 /// A prescribed value of A or a concentrated current at one geometry point (FEMM point
