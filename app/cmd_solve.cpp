@@ -1,5 +1,6 @@
 // rheomag solve: magnetostatic solve of a TOML case or a FEMM .fem model.
 
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -26,6 +27,7 @@ struct SolveCommandOptions {
   std::vector<double> sweep;
   std::string vtk;
   std::optional<int> order;
+  std::vector<double> points;  // r1, z1, r2, z2, ... [m]
   bool json = false;
   bool three_d = false;
   bool full = false;
@@ -87,12 +89,28 @@ void run(const SolveCommandOptions& o) {
   std::vector<SweepPoint> table;
   if (!o.sweep.empty()) table = solved.solver->sweep(0, o.sweep);
   if (!o.vtk.empty()) write_results_vtu(o.vtk, *solved.solver, solved.solution, solved.results);
+  if (o.points.size() % 2 != 0)
+    throw rheomag::InputError("--point: expected pairs r,z [m], got " +
+                              std::to_string(o.points.size()) + " numbers");
+  nlohmann::json probes = nlohmann::json::array();
+  for (std::size_t k = 0; k + 1 < o.points.size(); k += 2) {
+    std::array<double, 2> b{};
+    if (!flux_density_at(*solved.solver, solved.solution, {o.points[k], o.points[k + 1]}, -1, b))
+      throw rheomag::InputError("--point " + std::to_string(o.points[k]) + "," +
+                                std::to_string(o.points[k + 1]) + ": not inside the mesh");
+    probes.push_back({{"r", o.points[k]},
+                      {"z", o.points[k + 1]},
+                      {"b_r", b[0]},
+                      {"b_z", b[1]},
+                      {"b", std::hypot(b[0], b[1])}});
+  }
 
   if (o.json) {
     nlohmann::json j = results_json(*solved.solver, solved.results);
     j["case"] = c.name;
     j["mesh_seconds"] = solved.mesh_seconds;
     if (!o.vtk.empty()) j["vtk"] = o.vtk;
+    if (!probes.empty()) j["points"] = probes;
     if (!table.empty()) {
       nlohmann::json rows = nlohmann::json::array();
       for (const SweepPoint& p : table)
@@ -120,6 +138,14 @@ void run(const SolveCommandOptions& o) {
       std::cout << line;
     }
   }
+  if (!probes.empty()) std::cout << "\n";
+  for (const auto& p : probes) {
+    char line[160];
+    std::snprintf(line, sizeof line, "B at (%.6g, %.6g) m: B_r %.6g T, B_z %.6g T, |B| %.6g T\n",
+                  p["r"].get<double>(), p["z"].get<double>(), p["b_r"].get<double>(),
+                  p["b_z"].get<double>(), p["b"].get<double>());
+    std::cout << line;
+  }
   if (!o.vtk.empty()) std::cout << "\nwrote " << o.vtk << " (open it in ParaView)\n";
 }
 
@@ -139,6 +165,10 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
   cmd->add_option("--sweep", o->sweep,
                   "Also tabulate lambda(I), L(I) of the first circuit at these currents [A], "
                   "e.g. --sweep 0,0.25,0.5,0.75,1")
+      ->delimiter(',');
+  cmd->add_option("--point", o->points,
+                  "Also print the flux density at these points, r,z pairs in metres "
+                  "(x,y for planar models), e.g. --point 0.01,0.02,0.015,0")
       ->delimiter(',');
   cmd->add_option("--vtk", o->vtk, "Write mesh and fields (A, B, |B|, H, mu_r) to this .vtu file")
       ->check(rheomag::app::output_file());

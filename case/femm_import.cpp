@@ -14,9 +14,11 @@
 #include <sstream>
 #include <vector>
 
+#include "case/magnet_direction.hpp"
 #include "case/material_library.hpp"
 #include "case/region_outline.hpp"
 #include "case/toml_section.hpp"
+#include "core/constants.hpp"
 #include "core/error.hpp"
 
 namespace rheomag::cases {
@@ -51,9 +53,16 @@ struct FemBoundary {
 /// The raw .fem data of one block (material) property.
 struct FemBlock {
   std::string name;
-  double mu_x = 1, mu_y = 1, h_c = 0, j = 0, sigma = 0, lam_fill = 1;
+  double mu_x = 1, mu_y = 1, h_c = 0, h_c_angle = 0, j = 0, sigma = 0, lam_fill = 1;
   int lam_type = 0;
   std::vector<std::pair<double, double>> bh;
+  int line = 0;
+};
+
+/// The raw .fem data of one point property.
+struct FemPointProp {
+  std::string name;
+  double i_re = 0, i_im = 0, a_re = 0, a_im = 0;
   int line = 0;
 };
 
@@ -67,6 +76,7 @@ struct FemCircuit {
 
 struct FemLabel {
   double x = 0, y = 0, size = -1, magdir = 0;
+  std::string magdir_expression;  // FEMM's direction expression (quoted last column)
   int block = 0, circuit = 0, group = 0, turns = 1, external = 0;
   int line = 0;
 };
@@ -116,6 +126,10 @@ class FemReader {
   }
 
   int line_number() const { return static_cast<int>(index_); }
+  /// The line last returned by next() or require(), trimmed.
+  std::string_view current_line() const {
+    return index_ > 0 ? trim(lines_[index_ - 1]) : std::string_view();
+  }
   const std::string& source() const { return source_; }
 
   double number(std::string_view token, const std::string& what) const {
@@ -192,12 +206,14 @@ double length_unit(std::string_view value, FemReader& reader) {
 struct FemFile {
   double unit = 0.0254;  // FEMM's default length unit is inches
   double depth = 1.0;
+  int depth_line = 0;
   bool axisymmetric = false;
   std::vector<FemBoundary> boundaries;
   std::vector<FemBlock> blocks;
   std::vector<FemCircuit> circuits;
-  int point_props = 0;
+  std::vector<FemPointProp> point_props;
   std::vector<std::pair<mesh::Point, int>> points;  // point, point-property marker
+  std::vector<int> point_lines;
   std::vector<FemSegment> segments;
   std::vector<FemArc> arcs;
   std::vector<FemLabel> holes;
@@ -218,7 +234,8 @@ void read_property_block(FemReader& reader, FemFile& file, const std::string& be
   FemBoundary boundary;
   FemBlock block;
   FemCircuit circuit;
-  boundary.line = block.line = circuit.line = start;
+  FemPointProp point;
+  boundary.line = block.line = circuit.line = point.line = start;
   while (true) {
     const std::string_view line =
         reader.require("<" + end + "> closing the block opened at line " + std::to_string(start));
@@ -256,6 +273,8 @@ void read_property_block(FemReader& reader, FemFile& file, const std::string& be
         block.mu_y = reader.number(value, what);
       else if (key == "h_c")
         block.h_c = reader.number(value, what);
+      else if (key == "h_cangle")
+        block.h_c_angle = reader.number(value, what);
       else if (key == "j_re")
         block.j = reader.number(value, what);
       else if (key == "sigma")
@@ -280,6 +299,17 @@ void read_property_block(FemReader& reader, FemFile& file, const std::string& be
         circuit.amps = reader.number(value, what);
       else if (key == "circuittype")
         circuit.type = reader.integer(value, what);
+    } else if (begin == "beginpoint") {
+      if (key == "pointname")
+        point.name = unquote(value);
+      else if (key == "i_re")
+        point.i_re = reader.number(value, what);
+      else if (key == "i_im")
+        point.i_im = reader.number(value, what);
+      else if (key == "a_re")
+        point.a_re = reader.number(value, what);
+      else if (key == "a_im")
+        point.a_im = reader.number(value, what);
     }
     // Other keys (complex parts, wire and hysteresis data, ...) do not affect magnetostatics.
   }
@@ -290,7 +320,7 @@ void read_property_block(FemReader& reader, FemFile& file, const std::string& be
   else if (begin == "begincircuit")
     file.circuits.push_back(circuit);
   else
-    ++file.point_props;
+    file.point_props.push_back(point);
 }
 
 FemFile read_file(std::string_view text, FemReader& reader) {
@@ -326,7 +356,7 @@ FemFile read_file(std::string_view text, FemReader& reader) {
                     "solves magnetostatics; set the frequency to 0)");
     } else if (key == "depth") {
       file.depth = reader.number(value, "[Depth]");
-      if (!(file.depth > 0)) reader.fail(at, "[Depth] must be positive");
+      file.depth_line = at;
     } else if (key == "lengthunits") {
       file.unit = length_unit(value, reader);
     } else if (key == "problemtype") {
@@ -348,8 +378,10 @@ FemFile read_file(std::string_view text, FemReader& reader) {
             reader.require("point " + std::to_string(i + 1) + " of " + std::to_string(n) +
                            " after [NumPoints] (line " + std::to_string(at) + ")"),
             2, "point");
-        file.points.push_back(
-            {{c[0], c[1]}, c.size() > 2 && std::abs(c[2]) < 1e9 ? static_cast<int>(c[2]) : 0});
+        if (c.size() > 2 && (c[2] != std::floor(c[2]) || std::abs(c[2]) > 1e9))
+          reader.fail(reader.line_number(), "point property number must be an integer");
+        file.points.push_back({{c[0], c[1]}, c.size() > 2 ? static_cast<int>(c[2]) : 0});
+        file.point_lines.push_back(reader.line_number());
       }
     } else if (key == "numsegments") {
       const int n = count_value(value, reader, "NumSegments");
@@ -409,6 +441,13 @@ FemFile read_file(std::string_view text, FemReader& reader) {
             3, "block label");
         FemLabel label;
         label.line = reader.line_number();
+        const std::string_view row = reader.current_line();
+        if (const std::size_t open = row.find('"'); open != std::string_view::npos) {
+          const std::size_t close = row.find('"', open + 1);
+          if (close == std::string_view::npos)
+            reader.fail(label.line, "unterminated quoted magnetisation direction expression");
+          label.magdir_expression = std::string(trim(row.substr(open + 1, close - open - 1)));
+        }
         label.x = c[0];
         label.y = c[1];
         for (std::size_t k : {2, 4, 6, 7, 8})
@@ -431,11 +470,10 @@ FemFile read_file(std::string_view text, FemReader& reader) {
   if (!frequency_seen)
     reader.fail(reader.line_number(),
                 "not a FEMM magnetics file: no [Frequency] key (is this a .fem from FEMM 4.2?)");
-  const std::pair<const char*, std::size_t> counts[] = {
-      {"bdryprops", file.boundaries.size()},
-      {"blockprops", file.blocks.size()},
-      {"circuitprops", file.circuits.size()},
-      {"pointprops", static_cast<std::size_t>(file.point_props)}};
+  const std::pair<const char*, std::size_t> counts[] = {{"bdryprops", file.boundaries.size()},
+                                                        {"blockprops", file.blocks.size()},
+                                                        {"circuitprops", file.circuits.size()},
+                                                        {"pointprops", file.point_props.size()}};
   for (const auto& [key, found] : counts) {
     auto it = file.declared.find(key);
     const std::size_t declared = it == file.declared.end() ? 0 : it->second;
@@ -448,6 +486,54 @@ FemFile read_file(std::string_view text, FemReader& reader) {
   return file;
 }
 
+/// The material of one FEMM block as FEMM's magnetostatic solver uses it: lamination fill of
+/// in-plane laminations folded into mu_r or the B-H curve, wire types (LamType >= 3) as mu_r = 1,
+/// linear magnets with H_c; every other combination refused by name.
+Material femm_material(const FemBlock& block, const std::string& source, const FemReader& reader) {
+  const std::string name = "block '" + block.name + "'";
+  auto fail = [&](const std::string& message) { reader.fail(block.line, name + ": " + message); };
+  Material m;
+  m.name = block.name;
+  m.source = "FEMM file " + source + ", block '" + block.name + "'";
+  m.conductivity = block.sigma * 1e6;  // MS/m -> S/m (kept for eddy-current work)
+  const double fill = block.lam_fill;
+  if (!(fill > 0.0 && fill <= 1.0))
+    fail("LamFill = " + format_number(fill) + "; expected a fill factor in (0, 1]");
+  if (block.lam_type < 0 || block.lam_type > 6)
+    fail("unknown LamType " + std::to_string(block.lam_type));
+  if (block.h_c_angle != 0.0)
+    fail("H_cAngle = " + format_number(block.h_c_angle) +
+         " is not supported; give the magnetisation direction in the block label");
+  if (block.lam_type >= 3) {
+    // Wire (magnet, stranded, litz, square): FEMM's magnetostatic solver sets mu_r = 1 and
+    // ignores the B-H curve; the winding's fill matters only at a frequency > 0.
+    if (block.h_c != 0.0) fail("a wire block (LamType >= 3) cannot be a magnet (H_c not 0)");
+    m.mu_r = 1.0;
+    m.source += " (wire, LamType " + std::to_string(block.lam_type) + ": mu_r = 1 as in FEMM)";
+    return m;
+  }
+  if ((block.lam_type == 1 || block.lam_type == 2) && fill != 1.0)
+    fail("laminations parallel to x or y (LamType " + std::to_string(block.lam_type) +
+         ") with LamFill < 1 make the material anisotropic, which is not supported");
+  if (!block.bh.empty()) {
+    if (block.h_c != 0.0)
+      fail(
+          "a nonlinear magnet (B-H curve with H_c not 0) is not supported; give a linear "
+          "magnet (Mu_x = recoil permeability, no B-H points)");
+    // In-plane laminations (LamType 0) with fill f: FEMM's apparent curve
+    // B' = f B(H) + (1 - f) mu0 H at the table's H values.
+    std::vector<std::pair<double, double>> table = block.bh;
+    for (auto& [b, h] : table) b = fill * b + (1.0 - fill) * kMu0 * h;
+    m.bh = checked_bh_table(table, source + ":" + std::to_string(block.line) + ": " + name);
+    return m;
+  }
+  if (block.mu_x != block.mu_y) fail("anisotropic permeability (Mu_x != Mu_y) is not supported");
+  if (!(block.mu_x > 0.0)) fail("Mu_x must be positive");
+  m.mu_r = block.mu_x * fill + (1.0 - fill);
+  m.coercivity = block.h_c;
+  return m;
+}
+
 }  // namespace
 
 Problem parse_femm(std::string_view text, const std::string& source) {
@@ -457,7 +543,12 @@ Problem parse_femm(std::string_view text, const std::string& source) {
 
   Problem problem;
   problem.symmetry = file.axisymmetric ? Symmetry::axisymmetric : Symmetry::planar;
-  problem.depth = file.depth * file.unit;
+  // FEMM ignores [Depth] in axisymmetric problems (its Lua idiom mi_probdef(0, "millimeters",
+  // "axi", ...) writes 0); a planar problem needs a positive depth.
+  if (!file.axisymmetric && !(file.depth > 0))
+    fail(file.depth_line,
+         "[Depth] must be positive in a planar problem, got " + format_number(file.depth));
+  problem.depth = file.axisymmetric ? 1.0 : file.depth * file.unit;
   problem.outer = OuterBoundary::none;
   problem.geometry.source = source;
 
@@ -498,8 +589,9 @@ Problem parse_femm(std::string_view text, const std::string& source) {
         break;
       case 1:
         reader.fail(line, name +
-                              ": small skin depth boundaries (BdryType 1) are AC-only and not "
-                              "supported in magnetostatics");
+                              ": small skin depth boundaries (BdryType 1) describe eddy currents "
+                              "at a frequency > 0 (time-harmonic only); not a magnetostatic "
+                              "condition");
       case 3:
         reader.fail(line,
                     name +
@@ -507,11 +599,17 @@ Problem parse_femm(std::string_view text, const std::string& source) {
                         "a mixed (asymptotic) boundary or rheomag's automatic open boundary");
       case 4:
       case 5:
+        reader.fail(line, name + ": " + (b.type == 4 ? "periodic" : "antiperiodic") +
+                              " boundaries (BdryType " + std::to_string(b.type) +
+                              ") are not supported: they need matching nodes on the paired "
+                              "edges, which rheomag's mesher does not generate; model the "
+                              "full geometry");
       case 6:
       case 7:
-        reader.fail(line, name + ": periodic/antiperiodic boundaries (BdryType " +
-                              std::to_string(b.type) +
-                              ") are not supported; model the full geometry");
+        reader.fail(line, name + ": " + (b.type == 6 ? "periodic" : "antiperiodic") +
+                              " air-gap elements (BdryType " + std::to_string(b.type) +
+                              ") couple a rotor and a stator at an arbitrary angle (rotating "
+                              "machines) and are not supported; model the air gap as a region");
       default:
         reader.fail(line, name + ": unknown BdryType " + std::to_string(b.type));
     }
@@ -519,13 +617,29 @@ Problem parse_femm(std::string_view text, const std::string& source) {
   };
 
   // Points.
-  for (const auto& [p, marker] : file.points) {
-    if (marker != 0)
-      fail(file.declared_line.count("pointprops") ? file.declared_line.at("pointprops") : 1,
-           "point properties (prescribed A or current at a point) are not supported");
+  for (std::size_t i = 0; i < file.points.size(); ++i) {
+    const auto& [p, marker] = file.points[i];
+    const int line = file.point_lines[i];
     if (file.axisymmetric && p.r < 0)
-      fail(1, "axisymmetric model has a point at negative r = " + format_number(p.r));
+      fail(line, "axisymmetric model has a point at negative r = " + format_number(p.r));
     problem.geometry.points.push_back({p.r * file.unit, p.z * file.unit});
+    if (marker == 0) continue;
+    if (marker < 0 || marker > static_cast<int>(file.point_props.size()))
+      fail(line, "point property number " + std::to_string(marker) +
+                     " does not exist (the file defines " +
+                     std::to_string(file.point_props.size()) + ")");
+    const FemPointProp& prop = file.point_props[marker - 1];
+    if (prop.i_im != 0.0 || prop.a_im != 0.0)
+      fail(prop.line, "point property '" + prop.name +
+                          "': imaginary parts (I_im, A_im) are time-harmonic only");
+    // FEMM: a point with no current is a prescribed A (A_re), else a point current I_re [A].
+    PointCondition condition;
+    condition.name = prop.name;
+    condition.point = static_cast<int>(i);
+    condition.prescribed = prop.i_re == 0.0;
+    condition.a_value = prop.a_re;
+    condition.current = prop.i_re;
+    problem.point_conditions.push_back(condition);
   }
   const int point_count = static_cast<int>(file.points.size());
   auto check_point = [&](int index, int line) {
@@ -536,7 +650,6 @@ Problem parse_femm(std::string_view text, const std::string& source) {
                      std::to_string(point_count - 1) + ")");
   };
 
-  bool has_prescribed = false;
   for (const FemSegment& s : file.segments) {
     check_point(s.n0, s.line);
     check_point(s.n1, s.line);
@@ -546,7 +659,6 @@ Problem parse_femm(std::string_view text, const std::string& source) {
     segment.b = s.n1;
     segment.boundary = check_boundary_use(s.marker, s.line);
     segment.max_length = s.max_length > 0 ? s.max_length * file.unit : 0.0;
-    if (segment.boundary >= 0 && file.boundaries[segment.boundary].type == 0) has_prescribed = true;
     problem.geometry.segments.push_back(segment);
   }
   for (const FemArc& a : file.arcs) {
@@ -561,7 +673,6 @@ Problem parse_femm(std::string_view text, const std::string& source) {
            "arc maximum segment angle must be at least 0.01 degrees (FEMM's minimum), got " +
                format_number(a.max_side_degrees));
     const int boundary = check_boundary_use(a.marker, a.line);
-    if (boundary >= 0 && file.boundaries[boundary].type == 0) has_prescribed = true;
     std::vector<mesh::Point> pieces;
     append_arc(pieces, problem.geometry.points[a.n0], problem.geometry.points[a.n1], a.degrees,
                a.max_side_degrees);
@@ -576,10 +687,6 @@ Problem parse_femm(std::string_view text, const std::string& source) {
       previous = current;
     }
   }
-  if (!file.axisymmetric && !has_prescribed)
-    fail(reader.line_number(),
-         "planar model without any prescribed-A boundary: the vector potential is not unique "
-         "(FEMM's default on unmarked edges is dA/dn = 0); add a BdryType 0 boundary");
 
   // Materials, circuits, regions.
   std::map<int, int> material_of_block;  // file block index (0-based) -> problem material
@@ -601,12 +708,14 @@ Problem parse_femm(std::string_view text, const std::string& source) {
     seed.seed = {h.x * file.unit, h.y * file.unit};
     seed.name = "hole";
     seed.hole = true;
+    seed.where = source + ":" + std::to_string(h.line);
     problem.geometry.regions.push_back(seed);
     problem.regions.push_back({});
   }
   for (const FemLabel& l : file.labels) {
     mesh::RegionSeed seed;
     seed.seed = {l.x * file.unit, l.y * file.unit};
+    seed.where = source + ":" + std::to_string(l.line);
     RegionData data;
     if (l.block < 0 || l.block > static_cast<int>(file.blocks.size()))
       fail(l.line, "block type " + std::to_string(l.block) + " does not exist (the file defines " +
@@ -623,38 +732,19 @@ Problem parse_femm(std::string_view text, const std::string& source) {
            "block label in an external region (Kelvin transformation) is not supported; "
            "rheomag provides its own open boundary for .toml cases");
     const FemBlock& block = file.blocks[l.block - 1];
-    const std::string block_where =
-        source + ":" + std::to_string(block.line) + ": block '" + block.name + "'";
-    if (block.h_c != 0.0)
-      fail(block.line,
-           "block '" + block.name + "': permanent magnets (H_c not 0) are not supported");
-    if (block.j != 0.0)
-      fail(block.line, "block '" + block.name +
-                           "': a source current density J in the material "
-                           "is not supported; drive the region through a circuit instead");
-    if (block.lam_type == 1 || block.lam_type == 2 ||
-        (block.lam_type == 0 && block.lam_fill != 1.0))
-      fail(block.line, "block '" + block.name + "': laminated materials are not supported");
     auto found = material_of_block.find(l.block - 1);
     if (found == material_of_block.end()) {
-      Material m;
-      m.name = block.name;
-      m.source = "FEMM file " + source + ", block '" + block.name + "'";
-      m.conductivity = block.sigma * 1e6;  // MS/m -> S/m
-      if (!block.bh.empty()) {
-        m.bh = checked_bh_table(block.bh, block_where);
-      } else {
-        if (block.mu_x != block.mu_y)
-          fail(block.line, "block '" + block.name +
-                               "': anisotropic permeability (Mu_x != Mu_y) "
-                               "is not supported");
-        if (!(block.mu_x > 0.0))
-          fail(block.line, "block '" + block.name + "': Mu_x must be positive");
-        m.mu_r = block.mu_x;
-      }
       found =
           material_of_block.emplace(l.block - 1, static_cast<int>(problem.materials.size())).first;
-      problem.materials.push_back(m);
+      problem.materials.push_back(femm_material(block, source, reader));
+    }
+    data.current_density = block.j * 1e6;  // MA/m^2 -> A/m^2
+    if (block.h_c != 0.0) {
+      data.magnetisation = {l.magdir, l.magdir_expression, file.unit};
+      const MagnetDirectionField check(data.magnetisation,
+                                       source + ":" + std::to_string(l.line));  // parses
+    } else if (!l.magdir_expression.empty()) {
+      data.magnetisation.expression.clear();  // FEMM ignores a direction without H_c
     }
     data.material = found->second;
     if (l.circuit < 0 || l.circuit > static_cast<int>(file.circuits.size()))

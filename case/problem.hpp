@@ -25,6 +25,7 @@ struct Material {
   std::vector<BhPoint> bh;             ///< B-H table, B ascending from (0, 0); empty = linear
   std::optional<double> conductivity;  ///< electrical conductivity [S/m]; empty: not stated
   std::string source;                  ///< where the data come from
+  double coercivity = 0.0;             ///< permanent magnet: H_c [A/m], B = mu0 mu_r (H + H_c m)
 };
 
 /// A series circuit driving one or more coil regions.
@@ -48,11 +49,32 @@ struct BoundaryCondition {
   double c1 = 0.0;       ///< mixed: constant term
 };
 
+/// Direction of magnetisation m of a permanent-magnet region, measured from the r (x) axis:
+/// a constant angle, or an expression of the element centroid (FEMM's variables x, y, r, z,
+/// theta [deg], R in the length unit `length_unit` [m]) giving the angle in degrees.
+struct MagnetDirection {
+  double degrees = 0.0;      ///< constant angle [deg] (used when `expression` is empty)
+  std::string expression;    ///< e.g. "theta+180"; empty = constant
+  double length_unit = 1.0;  ///< metres per unit of the expression's coordinates
+};
+
 /// Material, coil and gap data of one region (index matches Pslg::regions).
 struct RegionData {
-  int material = -1;   ///< index into Problem::materials
-  int circuit = -1;    ///< index into Problem::circuits, -1 = no coil
-  double turns = 0.0;  ///< coil turns in this region (sign gives the winding direction)
+  int material = -1;             ///< index into Problem::materials
+  int circuit = -1;              ///< index into Problem::circuits, -1 = no coil
+  double turns = 0.0;            ///< coil turns in this region (sign gives the winding direction)
+  double current_density = 0.0;  ///< fixed source current density J [A/m^2] (FEMM block J)
+  MagnetDirection magnetisation{};  ///< direction of H_c when the material is a magnet
+};
+
+/// A prescribed value of A or a concentrated current at one geometry point (FEMM point
+/// property): a line current (planar) or a ring current (axisymmetric).
+struct PointCondition {
+  std::string name;
+  int point = -1;           ///< index into geometry.points
+  bool prescribed = false;  ///< true: A = a_value at the point; false: current source
+  double a_value = 0.0;     ///< [Wb/m]
+  double current = 0.0;     ///< [A]
 };
 
 /// The outer boundary of the computational domain.
@@ -72,6 +94,7 @@ struct Problem {
   std::vector<Material> materials;
   std::vector<Circuit> circuits;
   std::vector<BoundaryCondition> boundaries;
+  std::vector<PointCondition> point_conditions;  ///< FEMM point properties
   OuterBoundary outer = OuterBoundary::open;
   double outer_radius_factor = 5.0;  ///< automatic outer radius = factor * bounding radius
   int min_gap_elements = 4;          ///< elements across every fluid gap

@@ -6,8 +6,10 @@
 #include <atomic>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 
+#include "case/magnet_direction.hpp"
 #include "core/error.hpp"
 
 namespace rheomag::magnetostatics {
@@ -496,6 +498,44 @@ SparseMatrix Assembler::region_matrix(const std::vector<double>& region_coeffici
     }
   }
   return matrix;
+}
+
+Eigen::VectorXd Assembler::fixed_source() const {
+  Eigen::VectorXd source = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(mesh_.nodes.size()));
+  const int m = mesh_.nodes_per_triangle();
+  std::vector<std::optional<cases::MagnetDirectionField>> directions(problem_.regions.size());
+  ElementQuadrature q;
+  double f[kMaxElementNodes];
+  for (int e = 0; e < static_cast<int>(mesh_.triangles.size()); ++e) {
+    const int region = mesh_.region[e];
+    const cases::RegionData& data = problem_.regions[region];
+    const double h_c = problem_.materials[data.material].coercivity;
+    if (data.current_density == 0.0 && h_c == 0.0) continue;
+    quadrature(e, q);
+    const auto& t = mesh_.triangles[e];
+    if (data.current_density != 0.0) {
+      element_source(q, f);
+      for (int i = 0; i < m; ++i) source[t[i]] += data.current_density * f[i];
+    }
+    if (h_c == 0.0) continue;
+    if (!directions[region]) {
+      const auto& seeds = problem_.geometry.regions;
+      const std::string name = region < static_cast<int>(seeds.size())
+                                   ? seeds[region].name
+                                   : "region " + std::to_string(region);
+      directions[region].emplace(data.magnetisation,
+                                 problem_.geometry.source + ": magnet '" + name + "'");
+    }
+    const auto v = vertices(mesh_, e);
+    const mesh::Point centroid{(v[0].r + v[1].r + v[2].r) / 3.0, (v[0].z + v[1].z + v[2].z) / 3.0};
+    const double angle = directions[region]->degrees_at(centroid) * std::numbers::pi / 180.0;
+    const double m_r = h_c * std::cos(angle), m_z = h_c * std::sin(angle);
+    for (int p = 0; p < q.points; ++p) {
+      for (int i = 0; i < m; ++i)
+        source[t[i]] += q.weight[p] * (m_r * q.g_r[p][i] + m_z * q.g_z[p][i]);
+    }
+  }
+  return source;
 }
 
 }  // namespace rheomag::magnetostatics

@@ -56,6 +56,11 @@ class Assembler {
   /// Source vector of circuit `c` at 1 A, over all nodes: sum over its regions of
   /// (turns / region area) integral N_i dV. Also the flux-linkage functional: lambda_c = F_c . A.
   Eigen::VectorXd circuit_source(int c) const;
+  /// Current-independent source over all nodes: fixed current densities J of the regions
+  /// (integral J N_i dV) and permanent magnets, integral H_c m . G_i dV with G_i the B operator
+  /// of N_i (from H = nu B - H_c m in the weak form integral H . B(v) dV = integral J v dV), m
+  /// evaluated at each triangle's centroid. InputError naming the region for a bad direction.
+  Eigen::VectorXd fixed_source() const;
 
   /// Shape functions and B operators of triangle `e`.
   void quadrature(int e, ElementQuadrature& q) const;

@@ -68,6 +68,7 @@ cases::Problem close_domain(const cases::Problem& problem) {
     outer = {"outer A = 0", cases::BoundaryKind::prescribed_a, 0.0, 0.0, 0.0};
   }
   p.boundaries.push_back(outer);
+  p.outer = cases::OuterBoundary::none;  // the PSLG now contains its outer boundary
   const int marker = static_cast<int>(p.boundaries.size()) - 1;
 
   // Arc from angle -pi/2 to pi/2 (axisymmetric, measured from the r axis) or a full circle.

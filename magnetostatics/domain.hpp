@@ -8,7 +8,8 @@ namespace rheomag::magnetostatics {
 /// Number of straight segments of the automatic outer boundary (semicircle; a circle gets twice).
 inline constexpr int kOuterArcSegments = 96;
 
-/// Returns the problem with its outer boundary added, according to Problem::outer:
+/// Returns the problem with its outer boundary added, according to Problem::outer (the result's
+/// `outer` is none: its PSLG contains the boundary):
 /// - none: unchanged.
 /// - open / dirichlet: a boundary of radius R0 = outer_radius_factor x R_b, where R_b is the
 ///   radius of the bounding circle of all PSLG points (axisymmetric: centred on the axis at the

@@ -69,7 +69,8 @@ nlohmann::json results_json(const MagnetostaticSolver& solver, const Results& re
                         {"turns", number(c.turns)},
                         {"flux_linkage", number(c.flux_linkage)},
                         {"inductance", number(c.inductance)},
-                        {"incremental_inductance", number(c.incremental_inductance)}});
+                        {"incremental_inductance", number(c.incremental_inductance)},
+                        {"gauge_free", c.gauge_free}});
   }
   const bool has_circuit = !results.circuits.empty();
   const CircuitResult first = has_circuit ? results.circuits.front() : CircuitResult{};
@@ -118,6 +119,14 @@ std::string results_summary(const MagnetostaticSolver& solver, const Results& re
     out << "\ncircuit               current [A]   turns  lambda [mWb]  L=lambda/I [mH]  "
            "dlambda/dI [mH]\n";
     for (const CircuitResult& c : results.circuits) {
+      if (!c.gauge_free) {
+        std::snprintf(line, sizeof line,
+                      "  %-20.20s %11.4g %7.0f  not gauge-free (one-sided circuit in a model "
+                      "without prescribed A)\n",
+                      c.name.c_str(), c.current, c.turns);
+        out << line;
+        continue;
+      }
       std::snprintf(line, sizeof line, "  %-20.20s %11.4g %7.0f %13.5g %16.5g %16.5g\n",
                     c.name.c_str(), c.current, c.turns, c.flux_linkage * 1e3, c.inductance * 1e3,
                     c.incremental_inductance * 1e3);

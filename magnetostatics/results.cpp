@@ -223,6 +223,11 @@ Results compute_results(const MagnetostaticSolver& solver, const Solution& solut
                                          : kNaN;
     circuit.inductance = circuit.current != 0.0 ? circuit.flux_linkage / circuit.current
                                                 : circuit.incremental_inductance;
+    circuit.gauge_free = solver.flux_linkage_gauge_free(c);
+    if (!circuit.gauge_free) {
+      circuit.flux_linkage = circuit.inductance = circuit.incremental_inductance =
+          std::numeric_limits<double>::quiet_NaN();
+    }
     res.circuits.push_back(circuit);
   }
   res.newton_iterations = solution.newton.iterations;

@@ -41,6 +41,9 @@ struct CircuitResult {
   double flux_linkage = 0.0;            ///< lambda = sum_regions (2 pi N / A) integral A r dA [Wb]
   double inductance = 0.0;              ///< secant lambda / I [H] (incremental at I = 0)
   double incremental_inductance = 0.0;  ///< dlambda/dI at the solution [H] (NaN if not computed)
+  /// False when lambda depends on the gauge (MagnetostaticSolver::flux_linkage_gauge_free): then
+  /// flux_linkage and the inductances are NaN (not reported).
+  bool gauge_free = true;
 };
 
 /// All results of one solve. Fields per element are the element averages of B (area-weighted),

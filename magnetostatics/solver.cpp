@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -84,17 +85,27 @@ MagnetostaticSolver::MagnetostaticSolver(cases::Problem problem, mesh::Mesh mesh
                problem_.boundaries[e.boundary].c0 > 0.0;
       });
   if (dofs_.free_count() == static_cast<int>(mesh_.nodes.size()) && !robin) {
-    throw InputError(
-        problem_.geometry.source +
-        ": A is not determined (no prescribed-A boundary, no mixed boundary with "
-        "c0 > 0" +
-        (problem_.symmetry == cases::Symmetry::axisymmetric ? ", no node on the axis" : "") +
-        "); add one, or use the automatic open outer boundary");
+    // Only axisymmetric models get here (planar ones have their gauge pinned): A_phi = C / r has
+    // no field, so A is not determined.
+    throw InputError(problem_.geometry.source +
+                     ": A is not determined (axisymmetric model with no prescribed-A boundary, "
+                     "no mixed boundary with c0 > 0 and no node on the axis: A = C/r carries no "
+                     "field); add one, or use the automatic open outer boundary");
   }
   assembler_ = std::make_unique<Assembler>(problem_, mesh_, dofs_);
   linear_ = !assembler_->nonlinear();
   for (int c = 0; c < static_cast<int>(problem_.circuits.size()); ++c) {
     sources_.push_back(assembler_->circuit_source(c));
+  }
+  fixed_source_ = assembler_->fixed_source();
+  for (const cases::PointCondition& point : problem_.point_conditions) {
+    if (point.prescribed) continue;
+    // A line current (planar: integral I delta v depth dA) or a ring current (2 pi r I v).
+    const int node = mesh_node_at(mesh_, problem_, point.point);
+    const double r = mesh_.nodes[node].r;
+    fixed_source_[node] += point.current * (problem_.symmetry == cases::Symmetry::axisymmetric
+                                                ? 2.0 * std::numbers::pi * r
+                                                : problem_.depth);
   }
   tangent_ = assembler_->pattern();
   if (dofs_.free_count() > 0) {
@@ -184,10 +195,8 @@ Eigen::VectorXd MagnetostaticSolver::residual(const Eigen::VectorXd& a,
                                               const std::vector<double>& currents) const {
   Eigen::VectorXd r;
   assembler_->assemble(a, r, nullptr);
-  for (std::size_t c = 0; c < currents.size(); ++c) {
-    for (int d = 0; d < dofs_.free_count(); ++d)
-      r[d] -= currents[c] * sources_[c][dofs_.node_of_dof[d]];
-  }
+  const Eigen::VectorXd f = nodal_source(currents);
+  for (int d = 0; d < dofs_.free_count(); ++d) r[d] -= f[dofs_.node_of_dof[d]];
   return r;
 }
 
@@ -220,10 +229,10 @@ Solution MagnetostaticSolver::solve_with(const std::vector<double>& currents,
     if (!std::isfinite(current)) throw InputError("circuit current is not a finite number");
   }
   const int n = dofs_.free_count();
-  Eigen::VectorXd source = Eigen::VectorXd::Zero(n);
-  for (std::size_t c = 0; c < currents.size(); ++c) {
-    for (int d = 0; d < n; ++d) source[d] += currents[c] * sources_[c][dofs_.node_of_dof[d]];
-  }
+  const Eigen::VectorXd nodal = nodal_source(currents);
+  if (dofs_.gauge_node >= 0) check_compatible(nodal);
+  Eigen::VectorXd source(n);
+  for (int d = 0; d < n; ++d) source[d] = nodal[dofs_.node_of_dof[d]];
   System system(*this, source);
   Eigen::VectorXd x = Eigen::VectorXd::Zero(n), r;
   const double scale = system.residual(x, r);
@@ -277,6 +286,33 @@ std::vector<SweepPoint> MagnetostaticSolver::sweep(int circuit,
     previous = std::move(s.a);
   }
   return table;
+}
+
+Eigen::VectorXd MagnetostaticSolver::nodal_source(const std::vector<double>& currents) const {
+  Eigen::VectorXd f = fixed_source_;
+  for (std::size_t c = 0; c < currents.size() && c < sources_.size(); ++c)
+    f += currents[c] * sources_[c];
+  return f;
+}
+
+void MagnetostaticSolver::check_compatible(const Eigen::VectorXd& nodal) const {
+  // With dA/dn = 0 on the whole boundary, integral nu dA/dn ds = 0 = the net current: the sum
+  // of all nodal sources (each is integral J N_i dV, sum_i N_i = 1; magnets add nothing).
+  const double net = nodal.sum(), scale = nodal.cwiseAbs().sum();
+  if (std::abs(net) <= 1e-9 * scale) return;
+  std::ostringstream msg;
+  msg << problem_.geometry.source << ": the net current through the model is "
+      << net / problem_.depth
+      << " A but no boundary carries flux out of it (no prescribed-A boundary, no mixed boundary "
+         "with c0 > 0: dA/dn = 0 everywhere, FEMM's default on edges without a condition): no "
+         "field satisfies this; add a return conductor or a boundary condition";
+  throw InputError(msg.str());
+}
+
+bool MagnetostaticSolver::flux_linkage_gauge_free(int c) const {
+  if (dofs_.gauge_node < 0) return true;
+  const Eigen::VectorXd& f = sources_[c];
+  return std::abs(f.sum()) <= 1e-9 * f.cwiseAbs().sum();
 }
 
 void MagnetostaticSolver::discard_factorisation() {

@@ -80,6 +80,12 @@ class MagnetostaticSolver {
   const SolveOptions& options() const { return options_; }
   /// Unit-current source / flux-linkage vector of circuit c over all nodes.
   const Eigen::VectorXd& circuit_source(int c) const { return sources_[c]; }
+  /// Current-independent source over all nodes: magnets, fixed J, point currents.
+  const Eigen::VectorXd& fixed_source() const { return fixed_source_; }
+  /// True when circuit c's flux linkage does not depend on the gauge: always, unless the gauge
+  /// was fixed by pinning a node (DofMap::gauge_node) and the circuit's signed turns do not
+  /// cancel (a one-sided circuit: lambda shifts by (turns x depth) x the arbitrary constant).
+  bool flux_linkage_gauge_free(int c) const;
   /// Residual R(A) over the free dofs for nodal A and currents (for tests and diagnostics).
   Eigen::VectorXd residual(const Eigen::VectorXd& a, const std::vector<double>& currents) const;
   /// Lower-triangular exact tangent dR/dA (free dofs) at nodal A.
@@ -105,6 +111,8 @@ class MagnetostaticSolver {
   class System;
   Solution solve_with(const std::vector<double>& currents, const Eigen::VectorXd* initial_guess,
                       bool incremental);
+  Eigen::VectorXd nodal_source(const std::vector<double>& currents) const;  // all nodes
+  void check_compatible(const Eigen::VectorXd& nodal) const;  // InputError if net current != 0
   void prepare_jacobian(const Eigen::VectorXd& a_nodes);
   void factorize_tangent();
   Eigen::VectorXd solve_jacobian(const Eigen::VectorXd& rhs, double tolerance,
@@ -117,6 +125,7 @@ class MagnetostaticSolver {
   DofMap dofs_;
   std::unique_ptr<Assembler> assembler_;
   std::vector<Eigen::VectorXd> sources_;
+  Eigen::VectorXd fixed_source_;  // all nodes
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholesky_;
   SparseMatrix tangent_;
   Eigen::VectorXd factored_values_;  // values of the factorised tangent

@@ -29,7 +29,8 @@ struct RegionSeed {
   std::string name;        ///< region name, reported in outputs
   double mesh_size = 0.0;  ///< target element edge length [m], 0 = automatic
   GapKind gap = GapKind::none;
-  bool hole = false;  ///< true: not meshed (FEMM "<No Mesh>")
+  bool hole = false;    ///< true: not meshed (FEMM "<No Mesh>")
+  std::string where{};  ///< where the seed is defined ("model.fem:12"), for messages
 };
 
 /// The whole mesher input.

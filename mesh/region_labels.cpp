@@ -34,8 +34,9 @@ void flood_fill(const Cdt& cdt, Cdt::Face_handle start, int label) {
 }
 
 std::string region_label(const Pslg& pslg, int i) {
-  return "region " + std::to_string(i) + " '" + pslg.regions[static_cast<std::size_t>(i)].name +
-         "'";
+  const RegionSeed& seed = pslg.regions[static_cast<std::size_t>(i)];
+  return "region " + std::to_string(i) + " '" + seed.name + "'" +
+         (seed.where.empty() ? std::string() : " (" + seed.where + ")");
 }
 
 void set_edge_data(const Cdt& cdt, Cdt::Vertex_handle va, Cdt::Vertex_handle vb, int boundary,

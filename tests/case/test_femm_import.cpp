@@ -15,6 +15,7 @@
 #include "case/case_file.hpp"
 #include "case/femm_import.hpp"
 #include "core/error.hpp"
+#include "tests/case/pot_core_magnet.hpp"
 
 using namespace rheomag::cases;
 using ::testing::HasSubstr;
@@ -102,16 +103,29 @@ TEST(FemmImport, LengthUnitsAndLineEndings) {
               HasSubstr("bad.fem:7: [LengthUnits]: expected inches, millimeters"));
 }
 
-TEST(FemmImport, PlanarProblemNeedsAPrescribedBoundary) {
+TEST(FemmImport, DepthIsIgnoredInAxisymmetricModels) {
+  // FEMM's Lua idiom mi_probdef(0, "millimeters", "axi", 1e-8, 0, 30) writes [Depth] = 0; FEMM
+  // ignores the depth of an axisymmetric problem, and so does the reader.
+  for (const char* depth : {"0", "-3"}) {
+    const Problem p =
+        parse_femm(with("[Depth]       =  1", std::string("[Depth] = ") + depth), "axi.fem");
+    EXPECT_EQ(p.symmetry, Symmetry::axisymmetric);
+    EXPECT_EQ(p.geometry.points.size(), 14u + 95u);
+  }
+  // A planar problem needs a positive depth: the message names the [Depth] line.
+  std::string planar = with("axisymmetric", "planar");
+  planar.replace(planar.find("[Depth]       =  1"), 18, "[Depth] = 0");
+  EXPECT_THAT(error_of(planar), HasSubstr("bad.fem:6: [Depth] must be positive in a planar"));
+}
+
+TEST(FemmImport, PlanarProblemWithoutPrescribedBoundaryIsAccepted) {
   const Problem planar = parse_femm(with("axisymmetric", "planar"), "planar.fem");
   EXPECT_EQ(planar.symmetry, Symmetry::planar);
   EXPECT_DOUBLE_EQ(planar.depth, 1e-3);  // [Depth] = 1 in millimetres
-  // Without the A = 0 arc (boundary marker 0) a planar model has no unique solution.
-  // Axisymmetric: A = 0 on the axis suffices (as in FEMM), no boundary needed.
-  EXPECT_EQ(error_of(with("0\t13\t180\t1.875\t1", "0\t13\t180\t1.875\t0")), "no error");
+  // Without the A = 0 arc the model is read; the solver fixes the gauge (test_femm_models).
   std::string text = with("axisymmetric", "planar");
   text.replace(text.find("0\t13\t180\t1.875\t1"), 17, "0\t13\t180\t1.875\t0");
-  EXPECT_THAT(error_of(text), HasSubstr("planar model without any prescribed-A boundary"));
+  EXPECT_EQ(error_of(text), "no error");
 }
 
 TEST(FemmImport, MixedBoundaryIsImported) {
@@ -126,15 +140,26 @@ TEST(FemmImport, UnsupportedFeaturesAreRejectedClearly) {
   EXPECT_THAT(error_of(with("<BdryType> = 0", "<BdryType> = 3")),
               HasSubstr("strategic dual image"));
   EXPECT_THAT(error_of(with("<BdryType> = 0", "<BdryType> = 4")),
-              HasSubstr("periodic/antiperiodic boundaries (BdryType 4) are not supported"));
-  EXPECT_THAT(error_of(with("<BdryType> = 0", "<BdryType> = 5")), HasSubstr("BdryType 5"));
+              HasSubstr("boundary 'A=0' (defined at line 16): periodic boundaries (BdryType 4) "
+                        "are not supported"));
+  EXPECT_THAT(error_of(with("<BdryType> = 0", "<BdryType> = 5")),
+              HasSubstr("antiperiodic boundaries (BdryType 5)"));
+  EXPECT_THAT(error_of(with("<BdryType> = 0", "<BdryType> = 6")),
+              HasSubstr("periodic air-gap elements (BdryType 6)"));
+  EXPECT_THAT(error_of(with("<BdryType> = 0", "<BdryType> = 7")),
+              HasSubstr("antiperiodic air-gap elements (BdryType 7)"));
   EXPECT_THAT(error_of(with("<A_1> = 0", "<A_1> = 0.5")), HasSubstr("A_1, A_2 not 0"));
-  // H_c of the iron block (the second block) -> permanent magnet.
+  // H_c of the iron block (the second block, a B-H curve) -> a nonlinear magnet: refused.
   std::string magnet = pot_core_text();
   const std::size_t iron = magnet.find("<BlockName> = \"AISI 1010\"");
   magnet.replace(magnet.find("<H_c> = 0", iron), 9, "<H_c> = 9e5");
-  EXPECT_THAT(error_of(magnet), HasSubstr("block 'AISI 1010': permanent magnets (H_c not 0)"));
-  EXPECT_THAT(error_of(with("<J_re> = 0", "<J_re> = 2")), HasSubstr("source current density J"));
+  EXPECT_THAT(error_of(magnet), HasSubstr("block 'AISI 1010': a nonlinear magnet"));
+  EXPECT_THAT(error_of(with("<H_cAngle> = 0", "<H_cAngle> = 10")), HasSubstr("H_cAngle = 10"));
+  std::string across = with("<LamType> = 0", "<LamType> = 1");
+  across.replace(across.find("<LamFill> = 1"), 13, "<LamFill> = 0.9");
+  EXPECT_THAT(error_of(across), HasSubstr("with LamFill < 1 make the material anisotropic"));
+  EXPECT_THAT(error_of(with("<LamType> = 0", "<LamType> = 9")), HasSubstr("unknown LamType 9"));
+  EXPECT_THAT(error_of(with("<LamFill> = 1", "<LamFill> = 0")), HasSubstr("LamFill = 0"));
   EXPECT_THAT(error_of(with("<CircuitType> = 1", "<CircuitType> = 0")),
               HasSubstr("parallel circuit 'coil' (CircuitType 0) with 200 turns"));
   EXPECT_THAT(error_of(with("<Mu_x> = 1\r\n    <Mu_y> = 1", "<Mu_x> = 1\r\n    <Mu_y> = 2")),
@@ -195,4 +220,62 @@ TEST(FemmImport, LoadCaseDispatchesOnExtension) {
   EXPECT_EQ(c.name, "pot_core");
   EXPECT_EQ(c.problem.outer, OuterBoundary::none);
   EXPECT_TRUE(c.table.empty());
+}
+
+TEST(FemmImport, MaterialFieldsAsFemmUsesThem) {
+  // Air block (the first): J in MA/m^2 -> A/m^2 on its regions.
+  const Problem j = parse_femm(with("<J_re> = 0", "<J_re> = 2"), "j.fem");
+  const Material& air = j.materials[j.regions[4].material];
+  EXPECT_EQ(air.name, "Air");
+  EXPECT_DOUBLE_EQ(j.regions[4].current_density, 2e6);
+  // In-plane laminations (LamType 0) with fill f: linear mu' = f mu + 1 - f; a B-H curve
+  // becomes B' = f B + (1 - f) mu0 H at the table's H.
+  std::string lam = pot_core_text();
+  const std::size_t iron = lam.find("<BlockName> = \"AISI 1010\"");
+  lam.replace(lam.find("<LamFill> = 1", iron), 13, "<LamFill> = 0.5");
+  const Problem full = parse_femm(pot_core_text(), "full.fem");
+  const Problem half = parse_femm(lam, "lam.fem");
+  const Material& iron_full = full.materials[full.regions[0].material];
+  const Material& iron_half = half.materials[half.regions[0].material];
+  ASSERT_EQ(iron_full.bh.size(), iron_half.bh.size());
+  for (std::size_t k = 0; k < iron_full.bh.size(); ++k) {
+    EXPECT_DOUBLE_EQ(iron_half.bh[k].h, iron_full.bh[k].h);
+    EXPECT_NEAR(iron_half.bh[k].b,
+                0.5 * iron_full.bh[k].b + 0.5 * 4e-7 * std::numbers::pi * iron_full.bh[k].h, 1e-12);
+  }
+  std::string air_lam = with("<LamFill> = 1", "<LamFill> = 0.25");
+  air_lam.replace(air_lam.find("<Mu_x> = 1"), 10, "<Mu_x> = 1001");
+  air_lam.replace(air_lam.find("<Mu_y> = 1"), 10, "<Mu_y> = 1001");
+  const Problem linear = parse_femm(air_lam, "linear.fem");
+  EXPECT_DOUBLE_EQ(linear.materials[linear.regions[4].material].mu_r, 0.25 * 1001 + 0.75);
+  // Wire blocks (LamType >= 3): FEMM's magnetostatic solver uses mu_r = 1.
+  const Problem wire = parse_femm(with("<LamType> = 0", "<LamType> = 3"), "wire.fem");
+  EXPECT_DOUBLE_EQ(wire.materials[wire.regions[4].material].mu_r, 1.0);
+  // Conductivity (MS/m -> S/m) is kept for transient work.
+  EXPECT_DOUBLE_EQ(full.materials[full.regions[0].material].conductivity, 5.8e6);
+}
+
+TEST(FemmImport, MagnetsAndPointProperties) {
+  // A linear magnet block with a direction expression on its label; a point current.
+  const std::string text = rheomag::testing::pot_core_with_magnet(pot_core_text(), "theta + 90");
+  const Problem p = parse_femm(text, "magnet.fem");
+  const Material& magnet = p.materials[p.regions[4].material];
+  EXPECT_DOUBLE_EQ(magnet.coercivity, 8e5);
+  EXPECT_EQ(p.regions[4].magnetisation.expression, "theta + 90");
+  EXPECT_DOUBLE_EQ(p.regions[4].magnetisation.length_unit, 1e-3);
+  ASSERT_EQ(p.point_conditions.size(), 1u);
+  EXPECT_FALSE(p.point_conditions[0].prescribed);
+  EXPECT_DOUBLE_EQ(p.point_conditions[0].current, 3.0);
+  EXPECT_DOUBLE_EQ(p.geometry.points[p.point_conditions[0].point].r, 30e-3);
+  // A direction expression that does not parse names the label's line.
+  std::string bad = text;
+  bad.replace(bad.find("theta + 90"), 10, "theta +* 90");
+  EXPECT_THAT(error_of(bad), HasSubstr("magnetisation direction expression 'theta +* 90'"));
+  std::string unknown = text;
+  unknown.replace(unknown.find("theta + 90"), 10, "phi");
+  EXPECT_THAT(error_of(unknown), HasSubstr("'phi'"));
+  // A point property number that does not exist.
+  std::string missing = text;
+  missing.replace(missing.find("30\t-20\t1\t0"), 10, "30\t-20\t4\t0");
+  EXPECT_THAT(error_of(missing), HasSubstr("point property number 4 does not exist"));
 }
