@@ -212,7 +212,7 @@ std::string write_femm(const Problem& problem, const mesh::MeshOptions& mesh_opt
     out << "  <BeginBlock>\n    <BlockName> = \"" << name << "\"\n    <Mu_x> = " << num(m.mu_r)
         << "\n    <Mu_y> = " << num(m.mu_r) << "\n    <H_c> = " << num(m.coercivity)
         << "\n    <J_re> = " << num(density * 1e-6)
-        << "\n    <J_im> = 0\n    <Sigma> = " << num(m.conductivity * 1e-6)
+        << "\n    <J_im> = 0\n    <Sigma> = " << num(m.conductivity.value_or(0.0) * 1e-6)
         << "\n    <d_lam> = 0\n    <Phi_h> = 0\n    <Phi_hx> = 0\n    <Phi_hy> = 0\n"
         << "    <LamType> = 0\n    <LamFill> = 1\n    <NStrands> = 0\n    <WireD> = 0\n"
         << "    <BHPoints> = " << m.bh.size() << "\n";
