@@ -1,4 +1,5 @@
 #include "optimise/optimise_spec.hpp"
+#include "valve/valve_chain.hpp"  // registers [valve]: base cases carry it
 
 #include <algorithm>
 #include <cmath>

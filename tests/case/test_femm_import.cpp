@@ -252,7 +252,7 @@ TEST(FemmImport, MaterialFieldsAsFemmUsesThem) {
   const Problem wire = parse_femm(with("<LamType> = 0", "<LamType> = 3"), "wire.fem");
   EXPECT_DOUBLE_EQ(wire.materials[wire.regions[4].material].mu_r, 1.0);
   // Conductivity (MS/m -> S/m) is kept for transient work.
-  EXPECT_DOUBLE_EQ(full.materials[full.regions[0].material].conductivity, 5.8e6);
+  EXPECT_DOUBLE_EQ(full.materials[full.regions[0].material].conductivity.value_or(0.0), 5.8e6);
 }
 
 TEST(FemmImport, MagnetsAndPointProperties) {

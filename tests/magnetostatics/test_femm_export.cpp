@@ -12,12 +12,17 @@
 #include <string>
 
 #include "case/case_file.hpp"
+#include "case/case_sections.hpp"
 #include "case/femm_export.hpp"
 #include "case/femm_import.hpp"
 #include "core/error.hpp"
 #include "magnetostatics/domain.hpp"
 #include "magnetostatics/solve_problem.hpp"
 #include "tests/magnetostatics/femm_text.hpp"
+
+// The bundled annular valve carries [valve]; in the program the valve layer registers it, and
+// this test, which links only the layers below, registers it itself.
+const bool kValveSectionRegistered = rheomag::cases::register_case_section("valve");
 
 using namespace rheomag;
 using namespace rheomag::magnetostatics;

@@ -156,7 +156,7 @@ TEST(BadOptions, OrderAngleAndSize) {
   EXPECT_NE(error_of(pslg, options).find("min_gap_elements"), std::string::npos);
   options = {};
   options.default_size = 1e-6;  // a unit square at 1 um: ~2e12 elements
-  EXPECT_NE(error_of(pslg, options).find("check units"), std::string::npos);
+  EXPECT_NE(error_of(pslg, options).find("the smallest is 1e-06 m"), std::string::npos);
 }
 
 // Accepted on purpose: a segment given twice (shared side of two regions drawn as two closed

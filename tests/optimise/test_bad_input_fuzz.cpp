@@ -7,8 +7,12 @@
 
 #include <string>
 
+#include "case/case_sections.hpp"
 #include "optimise/sweep_spec.hpp"
 #include "tests/input_fuzz.hpp"
+// Base cases carry [valve]; in the program the valve layer registers it (valve_chain.hpp), and
+// this test, which does not use the valve layer, registers it itself.
+const bool kValveSectionRegistered = rheomag::cases::register_case_section("valve");
 
 using rheomag::testing::expect_only_input_errors;
 using rheomag::testing::mutants;

@@ -7,9 +7,9 @@
 #include <string>
 
 #include "case/case_file.hpp"
+#include "case/case_key.hpp"
 #include "case/wire_gauge.hpp"
 #include "optimise/optimise_evaluate.hpp"
-#include "optimise/optimise_wire_gauge.hpp"
 #include "optimise_fixture.hpp"
 
 namespace {
@@ -22,13 +22,13 @@ using optimise_fixture::TempDir;
 TEST(OptimiseGauge, RelaxedAwgFormulaMatchesTheWholeGauges) {
   for (int n : {0, 10, 18, 24, 30, 40}) {
     const double d = cases::awg_diameter(n);
-    EXPECT_NEAR(optimise::awg_diameter_relaxed(n), d, 1e-12 * d) << n;
-    EXPECT_NEAR(optimise::awg_number(d), n, 1e-9) << n;
+    EXPECT_NEAR(cases::awg_diameter_relaxed(n), d, 1e-12 * d) << n;
+    EXPECT_NEAR(cases::awg_number(d), n, 1e-9) << n;
   }
-  EXPECT_EQ(optimise::wire_text(24.0), "AWG 24");
-  EXPECT_EQ(optimise::wire_text(-1.0), "AWG 00");
-  EXPECT_NEAR(cases::wire_diameter(optimise::wire_text(22.5)), optimise::awg_diameter_relaxed(22.5),
-              1e-9 * optimise::awg_diameter_relaxed(22.5));
+  EXPECT_EQ(cases::wire_text(24.0), "AWG 24");
+  EXPECT_EQ(cases::wire_text(-1.0), "AWG 00");
+  EXPECT_NEAR(cases::wire_diameter(cases::wire_text(22.5)), cases::awg_diameter_relaxed(22.5),
+              1e-9 * cases::awg_diameter_relaxed(22.5));
 }
 
 // Coil wound at copper fill 0.55 (turns = floor(fill A / (pi d^2 / 4))): at fixed current a

@@ -5,11 +5,15 @@
 
 #include <set>
 
+#include "case/case_sections.hpp"
 #include "core/error.hpp"
 #include "optimise/sweep_design.hpp"
 #include "optimise/sweep_run.hpp"
 #include "optimise/sweep_spec.hpp"
 #include "sweep_fixture.hpp"
+// Base cases carry [valve]; in the program the valve layer registers it (valve_chain.hpp), and
+// this test, which does not use the valve layer, registers it itself.
+const bool kValveSectionRegistered = rheomag::cases::register_case_section("valve");
 
 namespace rheomag::optimise {
 namespace {

@@ -16,7 +16,9 @@
 #include "valve/coil.hpp"
 #include "valve/valve_chain.hpp"
 
-using namespace rheomag::fluid;
+using namespace rheomag::valve;
+using rheomag::cases::awg_diameter;
+using rheomag::cases::wire_diameter;
 
 // Reference: ASTM B258 table values: AWG 36 = 0.127 mm (definition), AWG 24 = 0.5106 mm,
 // AWG 0000 = 11.684 mm (4 decimals of mm as tabulated).

@@ -59,7 +59,7 @@ TEST(Passage, PipeAddsHagenPoiseuille) {
   EXPECT_NEAR(b.dp_viscous - a.dp_viscous, hagen_poiseuille, 1e-12 * a.dp_total);
   EXPECT_NEAR(b.dp_yield, a.dp_yield, 1e-12 * a.dp_total);
   ASSERT_EQ(b.segments.size(), a.segments.size() + 1);
-  EXPECT_EQ(b.segments.back().kind, "passage");
+  EXPECT_EQ(b.segments.back().kind, valve::SegmentKind::passage);
   EXPECT_NEAR(b.segments.back().drop.integrated.dp, hagen_poiseuille, 1e-15);
   // Re = rho V D / mu, V = Q / (pi D^2 / 4): 11.4 here (laminar).
   const double rho = valve::case_fluid(cases::load_case(kCase)).density;
@@ -113,7 +113,7 @@ TEST(Passage, MinorLossAtTheNamedSection) {
   const double v_exit = q / 1e-5;
   const double expected = k * rho * v * v / 2.0 + rho * v_exit * v_exit / 2.0;
   EXPECT_NEAR(b.dp_total - a.dp_total, expected, 1e-9 * expected);
-  EXPECT_EQ(b.segments.back().kind, "loss");
+  EXPECT_EQ(b.segments.back().kind, valve::SegmentKind::loss);
 }
 
 // The TOML format and its errors (names the key / the missing region or section).
