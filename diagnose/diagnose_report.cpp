@@ -10,6 +10,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/html_text.hpp"
 
 namespace rheomag::diagnose {
 
@@ -24,28 +25,6 @@ struct Series {
 struct Band {
   double t0, t1;
 };
-
-std::string num(double v, int digits = 4) {
-  std::ostringstream o;
-  o.precision(digits);
-  o << v;
-  return o.str();
-}
-
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (c == '&')
-      out += "&amp;";
-    else
-      out += c;
-  }
-  return out;
-}
 
 /// A line plot of `series` against t over [ta, tb] with shaded bands, as an inline SVG.
 std::string svg_plot(const std::string& title, const std::string& ylabel,
@@ -88,17 +67,17 @@ std::string svg_plot(const std::string& title, const std::string& ylabel,
     << "' fill='none' stroke='#444'/>\n";
   for (int i = 0; i <= 4; ++i) {
     const double v = lo + (hi - lo) * i / 4.0, tt = t0 + (t1 - t0) * i / 4.0;
-    o << "<text x='" << L - 6 << "' y='" << Y(v) + 4 << "' text-anchor='end'>" << num(v, 3)
+    o << "<text x='" << L - 6 << "' y='" << Y(v) + 4 << "' text-anchor='end'>" << html_number(v, 3)
       << "</text><line x1='" << L << "' x2='" << W - R << "' y1='" << Y(v) << "' y2='" << Y(v)
       << "' stroke='#ddd'/>\n";
-    o << "<text x='" << X(tt) << "' y='" << H - B + 16 << "' text-anchor='middle'>" << num(tt, 4)
-      << "</text>\n";
+    o << "<text x='" << X(tt) << "' y='" << H - B + 16 << "' text-anchor='middle'>"
+      << html_number(tt, 4) << "</text>\n";
   }
   o << "<text x='" << (L + W - R) / 2 << "' y='" << H - 6
     << "' text-anchor='middle'>t [s]</text>\n";
   o << "<text x='14' y='" << (T + H - B) / 2 << "' transform='rotate(-90 14 " << (T + H - B) / 2
-    << ")' text-anchor='middle'>" << escape(ylabel) << "</text>\n";
-  o << "<text x='" << L << "' y='18' font-weight='bold'>" << escape(title) << "</text>\n";
+    << ")' text-anchor='middle'>" << html_escape(ylabel) << "</text>\n";
+  o << "<text x='" << L << "' y='18' font-weight='bold'>" << html_escape(title) << "</text>\n";
   const std::size_t stride = std::max<std::size_t>(1, (b - a) / 2000);
   double legend_x = W - R - 10;
   // The first series (the measurement) is drawn first, wide and grey, so the models show on top.
@@ -110,7 +89,7 @@ std::string svg_plot(const std::string& title, const std::string& ylabel,
     legend_x -= 8.0 * static_cast<double>(it->label.size()) + 30;
     o << "<line x1='" << legend_x << "' x2='" << legend_x + 18 << "' y1='14' y2='14' stroke='"
       << it->color << "' stroke-width='3'/><text x='" << legend_x + 22 << "' y='18'>"
-      << escape(it->label) << "</text>\n";
+      << html_escape(it->label) << "</text>\n";
   }
   o << "</svg>\n";
   return o.str();
@@ -148,10 +127,10 @@ std::string diagnosis_html(const Diagnosis& d) {
        "table{border-collapse:collapse}td,th{border:1px solid #bbb;padding:3px 8px;"
        "text-align:left}h2{margin-top:28px}.ok{color:#1a7f37}.warn{color:#b35900}</style>"
        "</head><body>\n";
-  o << "<h1>Diagnosis of " << escape(d.recording) << "</h1>\n";
-  o << "<p>Output explained: <b>" << escape(d.output_column) << "</b>. Baseline FIT "
-    << num(d.baseline_fit_percent, 4) << " % &rarr; final FIT <b>" << num(d.final_fit_percent, 4)
-    << " %</b>.</p>\n";
+  o << "<h1>Diagnosis of " << html_escape(d.recording) << "</h1>\n";
+  o << "<p>Output explained: <b>" << html_escape(d.output_column) << "</b>. Baseline FIT "
+    << html_number(d.baseline_fit_percent, 4) << " % &rarr; final FIT <b>"
+    << html_number(d.final_fit_percent, 4) << " %</b>.</p>\n";
   o << "<h2>Missing physics</h2>\n";
   if (d.findings.empty()) {
     o << "<p class='ok'>None: the calibrated baseline explains the recording "
@@ -169,40 +148,43 @@ std::string diagnosis_html(const Diagnosis& d) {
       }
       o << "</td><td>";
       for (std::size_t j = 0; j < f.params.size(); ++j)
-        o << escape(f.param_names[j]) << " = " << num(f.params[j]) << " &plusmn; "
-          << num(f.standard_errors[j], 2) << "<br>";
-      o << "</td><td>" << num(f.fit_percent, 4) << " %</td><td>" << escape(f.evidence);
+        o << html_escape(f.param_names[j]) << " = " << html_number(f.params[j]) << " &plusmn; "
+          << html_number(f.standard_errors[j], 2) << "<br>";
+      o << "</td><td>" << html_number(f.fit_percent, 4) << " %</td><td>" << html_escape(f.evidence);
       if (!f.separating_measurement.empty())
-        o << "<br><i>To separate: " << escape(f.separating_measurement) << "</i>";
+        o << "<br><i>To separate: " << html_escape(f.separating_measurement) << "</i>";
       o << "</td></tr>\n";
     }
     o << "</table>\n";
   }
-  o << "<h2>Unexplained</h2>\n<p>" << num(100 * d.unexplained.share, 3)
+  o << "<h2>Unexplained</h2>\n<p>" << html_number(100 * d.unexplained.share, 3)
     << " % of the final residual energy lies above the white-noise floor (noise rms "
-    << num(d.unexplained.noise_sigma) << ", residual rms " << num(d.unexplained.residual_rms) << " "
-    << unit << "; that is " << num(100 * d.unexplained.baseline_share, 3)
+    << html_number(d.unexplained.noise_sigma) << ", residual rms "
+    << html_number(d.unexplained.residual_rms) << " " << unit << "; that is "
+    << html_number(100 * d.unexplained.baseline_share, 3)
     << " % of the baseline's residual energy): no candidate explains it.</p>\n";
   o << "<h2>What the baseline contained</h2>\n<table><tr><th>item</th><th>value</th>"
        "<th>source</th></tr>\n";
   for (const auto& item : d.includes)
-    o << "<tr><td>" << escape(item.name) << "</td><td>"
-      << (item.unit.empty() && item.value == 0.0 ? std::string("&ndash;")
-                                                 : num(item.value) + " " + escape(item.unit))
-      << "</td><td>" << escape(item.source) << "</td></tr>\n";
+    o << "<tr><td>" << html_escape(item.name) << "</td><td>"
+      << (item.unit.empty() && item.value == 0.0
+              ? std::string("&ndash;")
+              : html_number(item.value) + " " + html_escape(item.unit))
+      << "</td><td>" << html_escape(item.source) << "</td></tr>\n";
   const auto& u = d.final_nuisance;
   o << "</table>\n<h2>Recording nuisances (calibrated, not physics)</h2>\n<table>"
-    << "<tr><td>delay of the output behind the drives</td><td>" << num(1e3 * u.delay) << " ms ("
-    << num(u.delay_samples, 2) << " samples): " << escape(u.sampling) << "</td></tr>\n";
+    << "<tr><td>delay of the output behind the drives</td><td>" << html_number(1e3 * u.delay)
+    << " ms (" << html_number(u.delay_samples, 2) << " samples): " << html_escape(u.sampling)
+    << "</td></tr>\n";
   if (u.preyield_flow > 0.0)
     o << "<tr><td>pre-yield smoothness of the static map</td><td>plug switch width "
-      << num(u.preyield_flow) << " m^3/s (" << num(100 * u.preyield_fraction, 2)
+      << html_number(u.preyield_flow) << " m^3/s (" << html_number(100 * u.preyield_fraction, 2)
       << " % of the peak flow)</td></tr>\n";
   if (u.velocity_filter_bandwidth > 0.0)
     o << "<tr><td>noisy velocity smoothed (cubic Savitzky-Golay, zero phase)</td><td>-3 dB at "
-      << num(u.velocity_filter_bandwidth) << " Hz</td></tr>\n";
+      << html_number(u.velocity_filter_bandwidth) << " Hz</td></tr>\n";
   for (const auto& [column, sigma] : u.drive_noise)
-    o << "<tr><td>noise on drive " << escape(column) << "</td><td>" << num(sigma)
+    o << "<tr><td>noise on drive " << html_escape(column) << "</td><td>" << html_number(sigma)
       << " (rms, SI)</td></tr>\n";
   o << "</table>\n";
   o << "<h2>Measured, baseline and final model</h2>\n"
@@ -218,8 +200,9 @@ std::string diagnosis_html(const Diagnosis& d) {
   if (!d.mismatch.empty()) {
     const auto& w = d.mismatch.front();
     const double margin = 0.5 * (w.t_end - w.t_start);
-    o << "<h2>Zoom on the worst window (" << num(w.t_start) << "&ndash;" << num(w.t_end) << " s, "
-      << escape(w.regime) << ", " << num(100 * w.share, 3) << " % of the residual energy)</h2>\n"
+    o << "<h2>Zoom on the worst window (" << html_number(w.t_start) << "&ndash;"
+      << html_number(w.t_end) << " s, " << html_escape(w.regime) << ", "
+      << html_number(100 * w.share, 3) << " % of the residual energy)</h2>\n"
       << svg_plot("worst window", ylabel, d.t,
                   {{"measured", "#999", &d.measured},
                    {"baseline", "#d62728", &d.baseline.prediction},
@@ -229,35 +212,36 @@ std::string diagnosis_html(const Diagnosis& d) {
   o << "<h2>Mismatch windows of the baseline</h2>\n<table><tr><th>t start [s]</th><th>t end "
        "[s]</th><th>share of residual</th><th>regime</th></tr>\n";
   for (const auto& w : d.mismatch)
-    o << "<tr><td>" << num(w.t_start) << "</td><td>" << num(w.t_end) << "</td><td>"
-      << num(100 * w.share, 3) << " %</td><td>" << escape(w.regime) << "</td></tr>\n";
+    o << "<tr><td>" << html_number(w.t_start) << "</td><td>" << html_number(w.t_end) << "</td><td>"
+      << html_number(100 * w.share, 3) << " %</td><td>" << html_escape(w.regime) << "</td></tr>\n";
   o << "</table>\n<h2>Residual statistics of the baseline</h2>\n<p>Lag-1 autocorrelation "
-    << num(d.baseline_stats.lag1_autocorrelation, 3)
-    << ", Ljung&ndash;Box Q(20) = " << num(d.baseline_stats.ljung_box_q, 4) << " ("
+    << html_number(d.baseline_stats.lag1_autocorrelation, 3)
+    << ", Ljung&ndash;Box Q(20) = " << html_number(d.baseline_stats.ljung_box_q, 4) << " ("
     << (d.baseline_stats.white ? "white" : "not white")
     << "); after: " << (d.final_stats.white ? "white" : "not white")
-    << ". Measured output lags the baseline by " << num(1e3 * d.baseline_stats.output_lag, 3)
+    << ". Measured output lags the baseline by "
+    << html_number(1e3 * d.baseline_stats.output_lag, 3)
     << " ms.</p>\n<table><tr><th>signal</th>"
        "<th>peak correlation with residual</th><th>lag [s]</th></tr>\n";
   for (const auto& c : d.baseline_stats.correlations)
-    o << "<tr><td>" << escape(c.signal) << "</td><td>" << num(c.value, 3) << "</td><td>"
-      << num(c.lag, 3) << "</td></tr>\n";
+    o << "<tr><td>" << html_escape(c.signal) << "</td><td>" << html_number(c.value, 3)
+      << "</td><td>" << html_number(c.lag, 3) << "</td></tr>\n";
   o << "</table>\n<table><tr><th>loop (input, residual)</th><th>opening</th>"
        "<th>slow/fast</th><th>rate-independent</th></tr>\n";
   for (const auto& l : d.baseline_stats.loops)
-    o << "<tr><td>" << escape(l.input) << "</td><td>" << num(l.opening, 3) << "</td><td>"
-      << num(l.slow_fast_ratio, 3) << "</td><td>" << (l.rate_independent ? "yes" : "no")
-      << "</td></tr>\n";
+    o << "<tr><td>" << html_escape(l.input) << "</td><td>" << html_number(l.opening, 3)
+      << "</td><td>" << html_number(l.slow_fast_ratio, 3) << "</td><td>"
+      << (l.rate_independent ? "yes" : "no") << "</td></tr>\n";
   o << "</table>\n<h2>Candidates tried</h2>\n<table><tr><th>step</th><th>effect</th><th>FIT "
        "%</th><th>&Delta;BIC</th></tr>\n";
   for (const auto& c : d.candidates)
     o << "<tr><td>" << c.step + 1 << "</td><td>" << effect_name(c.effect) << "</td><td>"
-      << (c.screened ? std::string("screened out") : num(c.fit_percent, 4)) << "</td><td>"
-      << num(c.delta_bic, 4) << "</td></tr>\n";
+      << (c.screened ? std::string("screened out") : html_number(c.fit_percent, 4)) << "</td><td>"
+      << html_number(c.delta_bic, 4) << "</td></tr>\n";
   o << "</table>\n";
   if (!d.notes.empty()) {
     o << "<h2>Notes</h2><ul>";
-    for (const auto& note : d.notes) o << "<li>" << escape(note) << "</li>";
+    for (const auto& note : d.notes) o << "<li>" << html_escape(note) << "</li>";
     o << "</ul>\n";
   }
   o << "</body></html>\n";

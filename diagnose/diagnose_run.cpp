@@ -207,12 +207,18 @@ std::string evidence_for(Effect e, const Diagnosis& d, const ModelFit& fit) {
         << fmt(1e3 * value("time_constant")) << " ms between current and yield stress removes it";
       break;
     }
-    case Effect::coil_inductance:
+    case Effect::coil_inductance: {
+      // The coil resistance: fitted on a coil bench, else as the sidecar states it.
+      double resistance = value("coil_resistance");
+      for (const BaselineItem& item : d.includes)
+        if (resistance <= 0.0 && item.name == "coil_resistance") resistance = item.value;
       o << "the response lags the coil voltage at its edges (output " << fmt(lag_ms)
-        << " ms behind the baseline); an inductance of " << fmt(value("inductance"))
-        << " H (L/R = " << fmt(1e3 * value("inductance") / d.final_fit.values.front()) << " ms"
-        << ") explains it";
+        << " ms behind the baseline); an inductance of " << fmt(value("inductance")) << " H";
+      if (resistance > 0.0)
+        o << " (L/R = " << fmt(1e3 * value("inductance") / resistance) << " ms)";
+      o << " explains it";
       break;
+    }
     case Effect::coil_heating:
       o << "the residual drifts slowly (it follows the integral of the coil drive); a coil "
            "warming with thermal resistance "

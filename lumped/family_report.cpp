@@ -9,32 +9,11 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/html_text.hpp"
 
 namespace rheomag::lumped {
 
 namespace {
-
-std::string num(double v, int digits = 4) {
-  std::ostringstream o;
-  o.precision(digits);
-  o << v;
-  return o.str();
-}
-
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (c == '&')
-      out += "&amp;";
-    else
-      out += c;
-  }
-  return out;
-}
 
 /// y against x of the measurement (grey, wide) and the model (blue), as an inline SVG.
 std::string svg_loop(const std::string& title, const std::string& xlabel, const std::string& ylabel,
@@ -62,15 +41,15 @@ std::string svg_loop(const std::string& title, const std::string& xlabel, const 
     << "' height='" << H - T - B << "' fill='none' stroke='#444'/>\n";
   for (int i = 0; i <= 4; ++i) {
     const double yv = y0 + (y1 - y0) * i / 4.0, xv = x0 + (x1 - x0) * i / 4.0;
-    o << "<text x='" << L - 5 << "' y='" << Y(yv) + 4 << "' text-anchor='end'>" << num(yv, 3)
-      << "</text><text x='" << X(xv) << "' y='" << H - B + 14 << "' text-anchor='middle'>"
-      << num(xv, 3) << "</text>\n";
+    o << "<text x='" << L - 5 << "' y='" << Y(yv) + 4 << "' text-anchor='end'>"
+      << html_number(yv, 3) << "</text><text x='" << X(xv) << "' y='" << H - B + 14
+      << "' text-anchor='middle'>" << html_number(xv, 3) << "</text>\n";
   }
   o << "<text x='" << (L + W - R) / 2 << "' y='" << H - 6 << "' text-anchor='middle'>"
-    << escape(xlabel) << "</text>\n<text x='12' y='" << (T + H - B) / 2
+    << html_escape(xlabel) << "</text>\n<text x='12' y='" << (T + H - B) / 2
     << "' transform='rotate(-90 12 " << (T + H - B) / 2 << ")' text-anchor='middle'>"
-    << escape(ylabel) << "</text>\n<text x='" << L << "' y='18' font-weight='bold'>"
-    << escape(title) << "</text>\n";
+    << html_escape(ylabel) << "</text>\n<text x='" << L << "' y='18' font-weight='bold'>"
+    << html_escape(title) << "</text>\n";
   const std::size_t stride = std::max<std::size_t>(1, x.size() / 3000);
   const auto line = [&](const std::vector<double>& y, const char* color, double width) {
     o << "<polyline fill='none' stroke='" << color << "' stroke-width='" << width << "' points='";
@@ -102,9 +81,11 @@ std::string member_section(const FamilyMember& m, const Recording& rec, const Gr
   const std::vector<double>& y = rec.column(fit.setup.output_column);
   const std::vector<double>& motion = rec.column(fit.setup.motion_column);
   std::ostringstream o;
-  o << "<h3>" << escape(m.csv_path) << " (" << role << ")</h3>\n<p>field " << num(m.field)
-    << unit_of(fit.setup.field_column) << ": FIT " << num(m.metrics.fit_percent, 3) << " %, RMSE "
-    << num(m.metrics.rmse_percent, 3) << " %, RE " << num(m.metrics.re, 3) << "</p>\n<div>";
+  o << "<h3>" << html_escape(m.csv_path) << " (" << role << ")</h3>\n<p>field "
+    << html_number(m.field) << unit_of(fit.setup.field_column) << ": FIT "
+    << html_number(m.metrics.fit_percent, 3) << " %, RMSE "
+    << html_number(m.metrics.rmse_percent, 3) << " %, RE " << html_number(m.metrics.re, 3)
+    << "</p>\n<div>";
   const std::string ylabel = fit.setup.output_column + unit_of(fit.setup.output_column);
   if (!fit.setup.position_column.empty())
     o << svg_loop("output vs position",
@@ -128,7 +109,7 @@ std::string field_dependence(const FamilyFit& r) {
   for (const FittedParameter& p : r.fit.params) value[p.name] = p.value;
   std::ostringstream o;
   o << "<table><tr><th>parameter</th>";
-  for (double l : levels) o << "<th>u = " << num(l, 3) << "</th>";
+  for (double l : levels) o << "<th>u = " << html_number(l, 3) << "</th>";
   o << "</tr>\n";
   bool any = false;
   for (const FittedParameter& p : r.fit.params) {
@@ -136,10 +117,11 @@ std::string field_dependence(const FamilyFit& r) {
     if (first == value.end()) continue;
     const auto second = value.find(p.name + "_per_field2");
     any = true;
-    o << "<tr><td>" << escape(p.name) << " [" << escape(p.unit) << "]</td>";
+    o << "<tr><td>" << html_escape(p.name) << " [" << html_escape(p.unit) << "]</td>";
     for (double l : levels)
       o << "<td>"
-        << num(p.value + first->second * l + (second == value.end() ? 0.0 : second->second * l * l))
+        << html_number(p.value + first->second * l +
+                       (second == value.end() ? 0.0 : second->second * l * l))
         << "</td>";
     o << "</tr>\n";
   }
@@ -155,29 +137,30 @@ std::string family_report_html(const FamilyFit& r, const std::vector<Recording>&
     throw InputError("family report: the recordings do not match the fit's members");
   std::ostringstream o;
   o << "<!DOCTYPE html>\n<html><head><meta charset='utf-8'><title>rheomag fit-family: "
-    << escape(r.fit.model)
+    << html_escape(r.fit.model)
     << "</title><style>body{font-family:sans-serif;margin:20px}table{border-collapse:collapse}"
        "td,th{border:1px solid #bbb;padding:3px 8px;text-align:right}svg{margin:4px}"
        "</style></head><body>\n<h1>Family fit: model "
-    << escape(r.fit.model) << "</h1>\n<p>Fitted jointly on " << r.training.size()
+    << html_escape(r.fit.model) << "</h1>\n<p>Fitted jointly on " << r.training.size()
     << " recordings (each weighted by its own spread); " << r.predicted.size()
     << " recordings predicted with the same parameters (free-run simulation).</p>\n";
   o << "<h2>FIT per recording</h2>\n<table><tr><th>recording</th><th>role</th><th>field</th>"
        "<th>FIT %</th><th>RMSE %</th><th>RE</th></tr>\n";
   const auto rows = [&](const std::vector<FamilyMember>& members, const char* role) {
     for (const FamilyMember& m : members)
-      o << "<tr><td>" << escape(m.csv_path) << "</td><td>" << role << "</td><td>" << num(m.field)
-        << "</td><td>" << num(m.metrics.fit_percent, 3) << "</td><td>"
-        << num(m.metrics.rmse_percent, 3) << "</td><td>" << num(m.metrics.re, 3) << "</td></tr>\n";
+      o << "<tr><td>" << html_escape(m.csv_path) << "</td><td>" << role << "</td><td>"
+        << html_number(m.field) << "</td><td>" << html_number(m.metrics.fit_percent, 3)
+        << "</td><td>" << html_number(m.metrics.rmse_percent, 3) << "</td><td>"
+        << html_number(m.metrics.re, 3) << "</td></tr>\n";
   };
   rows(r.training, "fit");
   rows(r.predicted, "predicted");
   o << "</table>\n<h2>Parameters (SI, &plusmn; one standard error)</h2>\n<table><tr><th>name</th>"
        "<th>value</th><th>standard error</th><th>unit</th><th>remark</th></tr>\n";
   for (const FittedParameter& p : r.fit.params)
-    o << "<tr><td>" << escape(p.name) << "</td><td>" << num(p.value, 5) << "</td><td>"
-      << (p.standard_error ? num(*p.standard_error, 3) : std::string("&mdash;")) << "</td><td>"
-      << escape(p.unit) << "</td><td>"
+    o << "<tr><td>" << html_escape(p.name) << "</td><td>" << html_number(p.value, 5) << "</td><td>"
+      << (p.standard_error ? html_number(*p.standard_error, 3) : std::string("&mdash;"))
+      << "</td><td>" << html_escape(p.unit) << "</td><td>"
       << (p.fixed             ? "held"
           : p.at_bound        ? "at bound"
           : !p.standard_error ? "not identified"
