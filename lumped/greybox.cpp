@@ -99,9 +99,15 @@ double stiffest_rate(PhenoKind kind, const T* p, const PhenoDrive& d, const Phen
   return rate;
 }
 
+/// Models integrated by their own stiff-stable exponential step (damper_step, bouc_wen_step).
+bool has_exponential_step(PhenoKind kind) {
+  return kind == PhenoKind::damper || kind == PhenoKind::bouc_wen;
+}
+
 /// Free-run simulation of samples [begin, end): RK4 with substeps no longer than max_substep and
-/// short enough for the stiffest rate (the damper model: exponential midpoint steps no longer than
-/// max_substep, see damper_step). Returns false if the state became non-finite.
+/// short enough for the stiffest rate (the damper and Bouc-Wen models: exponential midpoint steps
+/// no longer than max_substep, see damper_step and bouc_wen_step). Returns false if the state
+/// became non-finite.
 template <class T>
 bool simulate_rk4(PhenoKind kind, const T* p, const DriveSeries& d, const PhenoSettings& s,
                   std::size_t begin, std::size_t end, double max_substep, T* out) {
@@ -113,12 +119,17 @@ bool simulate_rk4(PhenoKind kind, const T* p, const DriveSeries& d, const PhenoS
   double rate_previous = 0.0;
   for (std::size_t i = begin; i + 1 < end; ++i) {
     const double dt = d.t[i + 1] - d.t[i];
-    if (kind == PhenoKind::damper) {  // stiff-stable exponential steps, no rate limit
+    if (has_exponential_step(kind)) {  // stiff-stable exponential steps, no rate limit
       const int steps = std::max(1, static_cast<int>(std::ceil(dt / max_substep)));
       const double h = dt / steps;
-      for (int j = 0; j < steps; ++j)
-        damper_step(p, d.between(i, static_cast<double>(j) / steps),
-                    d.between(i, (j + 0.5) / steps), s, h, x.data());
+      for (int j = 0; j < steps; ++j) {
+        const PhenoDrive start = d.between(i, static_cast<double>(j) / steps),
+                         middle = d.between(i, (j + 0.5) / steps);
+        if (kind == PhenoKind::damper)
+          damper_step(p, start, middle, s, h, x.data());
+        else
+          bouc_wen_step(p, start, middle, s, h, x.data());
+      }
       out[i + 1 - begin] = pheno_output(kind, p, d.at(i + 1), s, x.data());
       if (!std::isfinite(value_of(out[i + 1 - begin]))) return false;
       continue;
@@ -413,9 +424,10 @@ std::vector<double> simulate_for_report(const DriveSeries& d, const GreyboxSetup
   }
 }
 
-/// Longest integration step inside a fit: the damper model's exponential steps are not limited
-/// by its stiff modes, the other models' RK4 substeps are.
+/// Longest integration step inside a fit: the damper and Bouc-Wen models' exponential steps are
+/// not limited by their stiff modes (only by accuracy), the other models' RK4 substeps are.
 double fit_step(PhenoKind kind, const GreyboxOptions& options) {
+  if (kind == PhenoKind::bouc_wen) return options.bouc_wen_step;
   return kind == PhenoKind::damper ? options.exponential_step : options.max_substep;
 }
 

@@ -24,6 +24,7 @@ struct GreyboxOptions {
   int threads = 0;                   ///< starts solved at once (0: one per core); same result
   double max_substep = 2.5e-4;       ///< [s] largest RK4 substep inside the fit
   double exponential_step = 5e-3;    ///< [s] largest step of the damper model's integrator
+  double bouc_wen_step = 1e-3;       ///< [s] largest step of the Bouc-Wen model's integrator
   double eps_fraction = 1e-3;        ///< sign/|.| regularisation width as a fraction of rms motion
 };
 

@@ -10,6 +10,8 @@
 // U = field input (A or V). Every sign and |.| is regularised with width `eps` (in M), see
 // smooth.hpp.
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -148,6 +150,31 @@ T bouc_wen_ydot(const T* p, const PhenoDrive& d, const T* x) {
   return (alpha * x[1] + c0 * d.motion + p[kWK0] * (d.position - x[0])) / (c0 + c1);
 }
 
+/// Bouc-Wen: rate of the hysteretic state z (n = 2) for the relative rate r across the element:
+/// z' = -gamma |r| z |z| - beta r z^2 + A r.
+template <class T>
+T bouc_wen_zdot(const T* p, const PhenoSettings& s, const T& r, const T& z) {
+  return -p[kWGamma] * smooth_abs(r, s.eps) * z * smooth_abs(z, 1e-12) - p[kWBeta] * r * z * z +
+         p[kWA] * r;
+}
+
+/// Bouc-Wen: decay rates -dy'/dy and -dz'/dz (z' with y' substituted) at state x, in values; the
+/// linearisation of the exponential step (clamped at 0 where the state grows).
+inline std::array<double, 2> bouc_wen_decay_rates(const double* p, const PhenoDrive& d,
+                                                  const double* x) {
+  const double u = x[2];
+  const double alpha = p[kWAlphaA] + p[kWAlphaB] * u;
+  const double damping = (p[kWC0A] + p[kWC0B] * u) + (p[kWC1A] + p[kWC1B] * u);
+  const double z = x[1];
+  const double r = d.motion - bouc_wen_ydot(p, d, x);
+  const double dzdot_dz_explicit =
+      -2.0 * p[kWGamma] * std::abs(r) * std::abs(z) - 2.0 * p[kWBeta] * r * z;
+  const double dzdot_dr =
+      -p[kWGamma] * (r >= 0.0 ? 1.0 : -1.0) * z * std::abs(z) - p[kWBeta] * z * z + p[kWA];
+  const double dr_dz = -alpha / damping;
+  return {std::max(p[kWK0] / damping, 0.0), std::max(-(dzdot_dz_explicit + dzdot_dr * dr_dz), 0.0)};
+}
+
 /// phi(x) = (1 - exp(-x)) / x, with its series near 0 (x >= 0).
 template <class T>
 T phi1(const T& x) {
@@ -190,6 +217,43 @@ void damper_step(const T* p, const PhenoDrive& a, const PhenoDrive& m, const Phe
   const T f_half = f0 + 0.5 * h * phi1(T(0.5 * h) * lambda0) * rate(a, f0, u0);
   const T lambda_m = slope(m, f_half, u_half);
   x[0] = f0 + h * phi1(T(h) * lambda_m) * (rate(m, f_half, u_half) + lambda_m * (f_half - f0));
+}
+
+/// One step of length h of the modified Bouc-Wen model from drive `a` (start) through `m`
+/// (midpoint): the exponential midpoint rule of damper_step (second order, stable for any h). The
+/// stiff mode is z's relaxation through the dampers (rate A alpha / (c0 + c1)) and its hysteretic
+/// saturation; each state's rate is linearised about the half-step predictor (decay rates in
+/// values: any rate gives a consistent scheme, the true one makes it stable).
+template <class T>
+void bouc_wen_step(const T* p, const PhenoDrive& a, const PhenoDrive& m, const PhenoSettings& s,
+                   double h, T* x) {
+  using namespace pheno_detail;
+  constexpr std::size_t kParams = kWOffset + 1;
+  std::array<double, kParams> pv{};
+  for (std::size_t k = 0; k < kParams; ++k) pv[k] = value_of(p[k]);
+  const auto rates = [&](const PhenoDrive& d, const T* state, T* dxdt) {
+    dxdt[0] = bouc_wen_ydot(p, d, state);
+    dxdt[1] = bouc_wen_zdot(p, s, T(d.motion) - dxdt[0], state[1]);
+  };
+  const auto decay = [&](const PhenoDrive& d, const T* state) {
+    const double xv[3] = {value_of(state[0]), value_of(state[1]), value_of(state[2])};
+    return bouc_wen_decay_rates(pv.data(), d, xv);
+  };
+  // Field filter u' = -eta (u - v): linear, solved exactly with the midpoint drive.
+  const T eta = p[kWEta];
+  const T u0 = x[2];
+  const T u_half = u0 + 0.5 * h * phi1(T(0.5 * h) * eta) * eta * (m.field - u0);
+  const T x0[3] = {x[0], x[1], u0};
+  T f0[2], fm[2];
+  rates(a, x0, f0);
+  const std::array<double, 2> lambda0 = decay(a, x0);
+  T half[3] = {x0[0], x0[1], u_half};
+  for (int k = 0; k < 2; ++k) half[k] += 0.5 * h * phi1(0.5 * h * lambda0[k]) * f0[k];
+  rates(m, half, fm);
+  const std::array<double, 2> lambda_m = decay(m, half);
+  for (int k = 0; k < 2; ++k)
+    x[k] = x0[k] + h * phi1(h * lambda_m[k]) * (fm[k] + lambda_m[k] * (half[k] - x0[k]));
+  x[2] = u0 + h * phi1(T(h) * eta) * eta * (m.field - u0);
 }
 
 template <class T>
@@ -243,11 +307,8 @@ void pheno_derivatives(PhenoKind kind, const T* p, const PhenoDrive& d, const Ph
     case PhenoKind::bouc_wen: {
       T ydot = bouc_wen_ydot(p, d, x);
       T r = d.motion - ydot;  // relative rate across the Bouc-Wen element
-      const T& z = x[1];
       dxdt[0] = ydot;
-      // n = 2: z' = -gamma |r| z |z| - beta r |z|^2 + A r
-      dxdt[1] = -p[kWGamma] * smooth_abs(r, s.eps) * z * smooth_abs(z, 1e-12) -
-                p[kWBeta] * r * z * z + p[kWA] * r;
+      dxdt[1] = bouc_wen_zdot(p, s, r, x[1]);
       dxdt[2] = -p[kWEta] * (x[2] - d.field);  // u' = -eta (u - v)
       break;
     }
