@@ -15,6 +15,7 @@
 #include "magnetostatics/results.hpp"
 #include "magnetostatics/solver.hpp"
 #include "valve/coil.hpp"
+#include "valve/device_chain.hpp"
 #include "valve/sampled_gaps.hpp"
 #include "valve/valve_chain.hpp"
 
@@ -64,23 +65,16 @@ class SolvedBrake {
 };
 
 /// A brake case: mesh and solver once, one field solve per current.
-class BrakeChain {
+class BrakeChain : public DeviceChain {
  public:
   /// InputError if the case has no gap, no coil or no fluid.
   BrakeChain(const cases::Case& c, BrakeOptions options);
   /// current-major list of points.
   std::vector<BrakePoint> evaluate(const std::vector<double>& currents,
                                    const std::vector<double>& speeds);
-  /// Coil quantities at `current` with inductance `inductance` (needs [valve] wire).
-  CoilProperties coil(double current, double inductance) const;
-  const fluid::Fluid& fluid() const { return fluid_; }
 
  private:
-  std::unique_ptr<magnetostatics::MagnetostaticSolver> solver_;
-  fluid::Fluid fluid_;
   BrakeOptions options_;
-  ValveOptions valve_options_;
-  CoilSpec coil_;
 };
 
 }  // namespace rheomag::valve

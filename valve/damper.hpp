@@ -15,6 +15,7 @@
 #include "magnetostatics/results.hpp"
 #include "magnetostatics/solver.hpp"
 #include "valve/coil.hpp"
+#include "valve/device_chain.hpp"
 #include "valve/sampled_gaps.hpp"
 #include "valve/valve_chain.hpp"
 
@@ -92,7 +93,7 @@ class SolvedDamper {
 };
 
 /// A piston case: mesh and solver once, one field solve per current.
-class DamperChain {
+class DamperChain : public DeviceChain {
  public:
   /// InputError if the case has no annular gap, no coil or no fluid.
   DamperChain(const cases::Case& c, DamperOptions options);
@@ -102,18 +103,11 @@ class DamperChain {
   /// current-major list of points at the velocities v = Q / A_eff that make the gap flows Q.
   std::vector<DamperPoint> evaluate_flows(const std::vector<double>& currents,
                                           const std::vector<double>& flows);
-  /// Coil quantities at `current` with inductance `inductance` (needs [valve] wire).
-  CoilProperties coil(double current, double inductance) const;
-  const fluid::Fluid& fluid() const { return fluid_; }
 
  private:
   std::vector<DamperPoint> evaluate_at(const std::vector<double>& currents,
                                        const std::vector<double>& values, bool flows);
-  std::unique_ptr<magnetostatics::MagnetostaticSolver> solver_;
-  fluid::Fluid fluid_;
   DamperOptions options_;
-  ValveOptions valve_options_;
-  CoilSpec coil_;
 };
 
 }  // namespace rheomag::valve
