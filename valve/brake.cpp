@@ -39,6 +39,14 @@ SolvedBrake::SolvedBrake(const magnetostatics::MagnetostaticSolver& solver,
   }
 }
 
+SolvedBrake SolvedBrake::zero_field() const {
+  SolvedBrake off = *this;
+  zero_fields(off.gaps_);
+  off.current_ = 0.0;
+  off.inductance_ = 0.0;
+  return off;
+}
+
 BrakePoint SolvedBrake::point(double speed) const {
   if (!std::isfinite(speed)) throw InputError("brake: speeds must be finite");
   BrakePoint p;

@@ -57,6 +57,8 @@ class SolvedBrake {
               const fluid::Fluid& fluid, const BrakeOptions& options);
   /// The torque at rotor speed `speed` [rad/s] (either sign; 0 gives the breakaway torque).
   BrakePoint point(double speed) const;
+  /// The same brake with zero flux density in every gap (current and inductance 0).
+  SolvedBrake zero_field() const;
 
  private:
   std::vector<SampledGap> gaps_;

@@ -95,6 +95,14 @@ SolvedDamper::SolvedDamper(const magnetostatics::MagnetostaticSolver& solver,
   }
 }
 
+SolvedDamper SolvedDamper::zero_field() const {
+  SolvedDamper off = *this;
+  zero_fields(off.gaps_);
+  off.current_ = 0.0;
+  off.inductance_ = 0.0;
+  return off;
+}
+
 DamperPoint SolvedDamper::point(double velocity) const {
   if (!std::isfinite(velocity)) throw InputError("damper: velocities must be finite");
   DamperPoint p;

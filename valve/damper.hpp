@@ -81,6 +81,8 @@ class SolvedDamper {
                const fluid::Fluid& fluid, const DamperOptions& options);
   /// The damper at piston velocity `velocity` (either sign; 0 gives the gas force).
   DamperPoint point(double velocity) const;
+  /// The same damper with zero flux density in every gap (current and inductance 0).
+  SolvedDamper zero_field() const;
   /// Effective piston area for the pressure drop [m^2].
   double piston_area() const { return piston_area_; }
 
