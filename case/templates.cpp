@@ -4,6 +4,8 @@
 
 #include "case/templates.hpp"
 
+#include <map>
+
 #include "core/error.hpp"
 
 namespace rheomag::cases {
@@ -355,23 +357,27 @@ std::vector<ValveTemplate> make_templates() {
         material("coil_material", "Copper", "winding"),
         fluid_material("MRF-132DG", "MR fluid (paper 001)")},
        build_meandering});
+  // The piston reuses the annular valve's parameters with the defaults of
+  // cases/damper_piston.toml and the ring read as the cylinder tube.
+  std::vector<TemplateParameter> piston = list.front().parameters;
+  for (TemplateParameter& p : piston) {
+    const std::map<std::string, double> defaults = {{"pole_length", 6.0},
+                                                    {"neck_radius", 12.0},
+                                                    {"coil_length", 14.0},
+                                                    {"disk_thickness", 4.0}};
+    if (const auto it = defaults.find(p.key); it != defaults.end())
+      p.default_number = it->second * mm;
+    if (p.key == "turns") p.default_number = 300;
+    if (p.key == "fluid_material") p.default_text = "MRF-132DG";
+    if (p.key == "disk_thickness" || p.key == "disk_material")
+      p.doc = "the cylinder tube around the piston";
+    if (p.key == "gap_radius" || p.key == "gap_width")
+      p.doc = "the annular gap between piston and tube";
+  }
   list.push_back(
       {"damper_piston",
        "MR damper piston head in a steel tube: core, coil, two poles, the annular gap to the tube",
-       {length("gap_radius", 19.5, "mean radius of the annular gap between piston and tube"),
-        length("gap_width", 1.0, "radial width of the gap (tube bore - piston radius)"),
-        wall("pole_length", 6.0, "axial length of each pole"),
-        length("neck_radius", 12.0, "radius of the core under the coil groove"),
-        length("coil_length", 14.0, "axial length of the winding"),
-        length("bobbin_wall", 1.0, "thickness of the bobbin hub and flanges"),
-        length("cover_thickness", 0.5, "non-magnetic sleeve between coil and gap"),
-        wall("disk_thickness", 4.0, "radial thickness of the steel tube (the flux return)"),
-        count("turns", 300, "coil turns"), circuit(),
-        material("core_material", "AISI 1010", "piston core"),
-        material("disk_material", "AISI 1010", "cylinder tube"),
-        material("bobbin_material", "Aluminium 1100", "bobbin and sleeve"),
-        material("coil_material", "Copper", "winding"), fluid_material("MRF-132DG", "MR fluid")},
-       build_piston});
+       std::move(piston), build_piston});
   list.push_back(
       {"disc_brake",
        "steel disc on a non-magnetic shaft between two steel side plates; rim coil, outer ring",

@@ -29,21 +29,12 @@ SolvedBrake::SolvedBrake(const magnetostatics::MagnetostaticSolver& solver,
                          const magnetostatics::Solution& solution,
                          const magnetostatics::Results& results, const fluid::Fluid& fluid,
                          const BrakeOptions& options)
-    : fluid_(fluid) {
-  gaps_ = sample_gaps(solver, solution, results, options.inner_radius, "[brake] inner_radius");
-  if (gaps_.empty())
-    throw InputError(solver.problem().geometry.source + ": the brake case has no fluid gap");
-  if (!results.circuits.empty()) {
-    current_ = results.circuits.front().current;
-    inductance_ = results.circuits.front().inductance;
-  }
-}
+    : SolvedDevice(solver, solution, results, fluid, "brake", options.inner_radius,
+                   "[brake] inner_radius") {}
 
 SolvedBrake SolvedBrake::zero_field() const {
   SolvedBrake off = *this;
-  zero_fields(off.gaps_);
-  off.current_ = 0.0;
-  off.inductance_ = 0.0;
+  off.clear_field();
   return off;
 }
 

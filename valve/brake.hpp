@@ -17,6 +17,7 @@
 #include "valve/coil.hpp"
 #include "valve/device_chain.hpp"
 #include "valve/sampled_gaps.hpp"
+#include "valve/solved_device.hpp"
 #include "valve/valve_chain.hpp"
 
 namespace rheomag::valve {
@@ -50,7 +51,7 @@ struct BrakePoint {
 };
 
 /// A brake whose field is solved: gaps sampled once, then any speed.
-class SolvedBrake {
+class SolvedBrake : public SolvedDevice {
  public:
   SolvedBrake(const magnetostatics::MagnetostaticSolver& solver,
               const magnetostatics::Solution& solution, const magnetostatics::Results& results,
@@ -61,9 +62,6 @@ class SolvedBrake {
   SolvedBrake zero_field() const;
 
  private:
-  std::vector<SampledGap> gaps_;
-  fluid::Fluid fluid_;
-  double current_ = 0.0, inductance_ = 0.0;
 };
 
 /// A brake case: mesh and solver once, one field solve per current.

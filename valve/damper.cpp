@@ -67,10 +67,8 @@ SolvedDamper::SolvedDamper(const magnetostatics::MagnetostaticSolver& solver,
                            const magnetostatics::Solution& solution,
                            const magnetostatics::Results& results, const fluid::Fluid& fluid,
                            const DamperOptions& options)
-    : fluid_(fluid), options_(options) {
+    : SolvedDevice(solver, solution, results, fluid, "damper"), options_(options) {
   const std::string where = solver.problem().geometry.source;
-  gaps_ = sample_gaps(solver, solution, results, 0.0);
-  if (gaps_.empty()) throw InputError(where + ": the damper case has no fluid gap");
   for (const SampledGap& gap : gaps_)
     if (!gap.annular)
       throw InputError(where + ": damper gap \"" + gap.name +
@@ -89,17 +87,11 @@ SolvedDamper::SolvedDamper(const magnetostatics::MagnetostaticSolver& solver,
     throw InputError(where + ": [damper] rod_diameter does not fit inside the piston");
   rod_area_ = kPi * rod_radius * rod_radius;
   piston_area_ = kPi * outer_radius * outer_radius - rod_area_;
-  if (!results.circuits.empty()) {
-    current_ = results.circuits.front().current;
-    inductance_ = results.circuits.front().inductance;
-  }
 }
 
 SolvedDamper SolvedDamper::zero_field() const {
   SolvedDamper off = *this;
-  zero_fields(off.gaps_);
-  off.current_ = 0.0;
-  off.inductance_ = 0.0;
+  off.clear_field();
   return off;
 }
 

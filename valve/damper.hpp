@@ -17,6 +17,7 @@
 #include "valve/coil.hpp"
 #include "valve/device_chain.hpp"
 #include "valve/sampled_gaps.hpp"
+#include "valve/solved_device.hpp"
 #include "valve/valve_chain.hpp"
 
 namespace rheomag::valve {
@@ -72,7 +73,7 @@ struct DamperPoint {
 };
 
 /// A damper whose field is solved: gaps sampled once, then any velocity.
-class SolvedDamper {
+class SolvedDamper : public SolvedDevice {
  public:
   /// InputError if a gap is not annular, the gaps do not share the piston radius, or the rod
   /// does not fit inside the piston.
@@ -87,10 +88,7 @@ class SolvedDamper {
   double piston_area() const { return piston_area_; }
 
  private:
-  std::vector<SampledGap> gaps_;
-  fluid::Fluid fluid_;
   DamperOptions options_;
-  double current_ = 0.0, inductance_ = 0.0;
   double piston_radius_ = 0.0, rod_area_ = 0.0, piston_area_ = 0.0, flow_area_ = 0.0;
 };
 
