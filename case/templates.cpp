@@ -1,7 +1,10 @@
-// The three parametric valve templates. Every default dimension is documented in the reference
-// case files (cases/*.toml) with its reason; the geometry is axisymmetric, z along the valve axis.
+// The parametric device templates (three valves, a damper piston, a disc brake). Every default
+// dimension is documented in the reference case files (cases/*.toml) with its reason; the geometry
+// is axisymmetric, z along the valve axis.
 
 #include "case/templates.hpp"
+
+#include <map>
 
 #include "core/error.hpp"
 
@@ -216,6 +219,56 @@ std::vector<RegionOutline> build_meandering(const TemplateValues& v) {
   return finish(std::move(regions), v);
 }
 
+// damper_piston: the annular_valve's core, coil and poles as a damper's piston head sliding in
+// a steel tube (the template's "disk" is the tube wall): the whole annulus between piston and
+// tube is a gap (gap_top, gap_coil, gap_bottom), since the piston drags the fluid along all of
+// it (mixed mode, valve/damper.hpp), not only where the poles magnetise it.
+std::vector<RegionOutline> build_piston(const TemplateValues& v) {
+  std::vector<RegionOutline> regions = build_annular(v);
+  for (RegionOutline& region : regions) {
+    if (region.name == "channel") {
+      region.name = "gap_coil";
+      region.gap = GapKind::annular;
+    }
+    if (region.name == "disk") region.name = "tube";
+  }
+  return regions;
+}
+
+// ---------------------------------------------------------------------------------------------
+// disc_brake: a steel shear plate (disc) on a non-magnetic shaft turns between the two steel
+// side plates of a housing; the coil sits in the plane of the disc beyond its rim and a steel
+// outer ring closes the flux path (the layout of paper 002's rotary damper). The flux crosses
+// the two fluid gaps (gap_top, gap_bottom: radial, one sheared face each) in series.
+std::vector<RegionOutline> build_disc_brake(const TemplateValues& v) {
+  const double rs = v["shaft_radius"];
+  const double rd = v["disc_radius"];
+  const double t2 = 0.5 * v["disc_thickness"];
+  const double zg = t2 + v["gap_width"];        // side plates' inner faces
+  const double zp = zg + v["plate_thickness"];  // outer faces
+  const double rci = rd + v["rim_clearance"];   // coil inner radius
+  const double rco = rci + v["coil_depth"];     // coil outer radius = ring bore
+  const double rr = rco + v["ring_thickness"];  // housing outer radius
+  if (!(rs < rd))
+    throw InputError(v.where + ": inconsistent dimensions: shaft_radius must be below disc_radius");
+  const std::string steel = v.text("housing_material");
+  const std::string fluid = v.text("fluid_material");
+  std::vector<RegionOutline> regions;
+  regions.push_back(rect("shaft", v.text("shaft_material"), 0, rs, -zp, zp));
+  regions.push_back(rect("disc", v.text("disc_material"), rs, rd, -t2, t2));
+  regions.push_back(gap(rect("gap_top", fluid, rs, rd, t2, zg), GapKind::radial));
+  regions.push_back(gap(rect("gap_bottom", fluid, rs, rd, -zg, -t2), GapKind::radial));
+  regions.push_back(rect("rim_fluid", fluid, rd, rci, -zg, zg));
+  RegionOutline coil = rect("coil", v.text("coil_material"), rci, rco, -zg, zg);
+  coil.circuit = v.text("circuit");
+  coil.turns = v["turns"];
+  regions.push_back(coil);
+  regions.push_back(rect("plate_top", steel, rs, rco, zg, zp));
+  regions.push_back(rect("plate_bottom", steel, rs, rco, -zp, -zg));
+  regions.push_back(rect("ring", steel, rco, rr, -zp, zp));
+  return finish(std::move(regions), v);
+}
+
 TemplateParameter length(std::string key, double millimetres, std::string doc) {
   return {std::move(key), ParameterKind::length, millimetres * mm, "", std::move(doc)};
 }
@@ -304,6 +357,44 @@ std::vector<ValveTemplate> make_templates() {
         material("coil_material", "Copper", "winding"),
         fluid_material("MRF-132DG", "MR fluid (paper 001)")},
        build_meandering});
+  // The piston reuses the annular valve's parameters with the defaults of
+  // cases/damper_piston.toml and the ring read as the cylinder tube.
+  std::vector<TemplateParameter> piston = list.front().parameters;
+  for (TemplateParameter& p : piston) {
+    const std::map<std::string, double> defaults = {{"pole_length", 6.0},
+                                                    {"neck_radius", 12.0},
+                                                    {"coil_length", 14.0},
+                                                    {"disk_thickness", 4.0}};
+    if (const auto it = defaults.find(p.key); it != defaults.end())
+      p.default_number = it->second * mm;
+    if (p.key == "turns") p.default_number = 300;
+    if (p.key == "fluid_material") p.default_text = "MRF-132DG";
+    if (p.key == "disk_thickness" || p.key == "disk_material")
+      p.doc = "the cylinder tube around the piston";
+    if (p.key == "gap_radius" || p.key == "gap_width")
+      p.doc = "the annular gap between piston and tube";
+  }
+  list.push_back(
+      {"damper_piston",
+       "MR damper piston head in a steel tube: core, coil, two poles, the annular gap to the tube",
+       std::move(piston), build_piston});
+  list.push_back(
+      {"disc_brake",
+       "steel disc on a non-magnetic shaft between two steel side plates; rim coil, outer ring",
+       {length("shaft_radius", 8.0, "radius of the non-magnetic shaft (disc and gaps start here)"),
+        length("disc_radius", 40.0, "outer radius of the disc (and of the sheared gaps)"),
+        wall("disc_thickness", 3.0, "axial thickness of the steel disc"),
+        length("gap_width", 1.0, "axial width of each fluid gap"),
+        length("rim_clearance", 2.0, "radial fluid space between the disc rim and the coil"),
+        length("coil_depth", 12.0, "radial depth of the winding (its height: disc + 2 gaps)"),
+        wall("plate_thickness", 5.5, "thickness of the housing's side plates"),
+        wall("ring_thickness", 6.0, "radial thickness of the housing's outer ring"),
+        count("turns", 200, "coil turns"), circuit(),
+        material("shaft_material", "Aluminium 1100", "shaft"),
+        material("disc_material", "AISI 1010", "disc (shear plate)"),
+        material("housing_material", "AISI 1010", "side plates and outer ring"),
+        material("coil_material", "Copper", "winding"), fluid_material("MRF-132DG", "MR fluid")},
+       build_disc_brake});
   return list;
 }
 

@@ -69,7 +69,7 @@ struct ValveTemplate {
   std::vector<std::string> walls() const;
 };
 
-/// The templates: annular_valve, radial_valve, meandering_valve.
+/// The templates: annular_valve, radial_valve, meandering_valve, damper_piston, disc_brake.
 const std::vector<ValveTemplate>& valve_templates();
 
 /// The template of that name, nullptr if none.

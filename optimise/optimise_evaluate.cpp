@@ -61,6 +61,26 @@ OptimiseEvaluator::OptimiseEvaluator(cases::Case base, OptimiseSpec spec)
     if (valve_.wire.empty() && uses(spec_, q))
       throw InputError(where + ": \"" + quantity_name(q) +
                        "\" needs the coil wire: set [valve] wire = \"AWG 24\" (or \"0.5 mm\")");
+  if (spec_.velocity != 0.0) damper_ = valve::read_damper_options(base_);
+  if (spec_.speed != 0.0) brake_ = valve::read_brake_options(base_);
+  if (uses(spec_, Quantity::mass) || uses(spec_, Quantity::torque_per_mass)) {
+    if (base_.problem.symmetry != cases::Symmetry::axisymmetric)
+      throw InputError(where + ": \"mass\" needs an axisymmetric case");
+    const auto& regions = base_.problem.regions;
+    for (std::size_t k = 0; k < regions.size(); ++k) {
+      const std::string& name = base_.problem.materials.at(regions[k].material).name;
+      const auto given = spec_.densities.find(name);
+      if (static_cast<int>(k) == base_.problem.geometry.default_region)
+        region_density_.push_back(0.0);  // the surroundings (faces no region seed reaches)
+      else if (given != spec_.densities.end())
+        region_density_.push_back(given->second);
+      else if (name == fluid_.name)
+        region_density_.push_back(fluid_.density);
+      else
+        throw InputError(where + ": \"mass\" needs the density of \"" + name +
+                         "\": add it to [optimise.density] (\"" + name + "\" = kg/m^3)");
+    }
+  }
   if (uses(spec_, Quantity::min_wall) && base_.input.valve && base_.input.valve->walls().empty())
     throw InputError(where + ": the template " + base_.geometry_template + " declares no walls");
   if (uses(spec_, Quantity::min_wall) && !base_.input.valve)
@@ -112,14 +132,28 @@ Quantities OptimiseEvaluator::evaluate(const std::vector<double>& x) {
     valve.wire_diameter = c.input.winding.wire_diameter;
   }
   const valve::SolvedValve solved(solver, field.solution, results, fluid_, valve);
-  const auto on = solved.point(spec_.flow);
-  q[Quantity::dp_on] = on.dp_total;
-  q[Quantity::dp_off] = solved.zero_field_point(spec_.flow).dp_total;
-  q[Quantity::dynamic_range] = q[Quantity::dp_on] / q[Quantity::dp_off];
+  if (spec_.flow > 0.0) {
+    q[Quantity::dp_on] = solved.point(spec_.flow).dp_total;
+    q[Quantity::dp_off] = solved.zero_field_point(spec_.flow).dp_total;
+    q[Quantity::dynamic_range] = q[Quantity::dp_on] / q[Quantity::dp_off];
+  }
   q[Quantity::b_gap] = solved.b_average();
   q[Quantity::min_gap] = solved.min_clearance();
-  const double inductance = on.inductance;
+  const double inductance = results.circuits.front().inductance;
   q[Quantity::inductance] = inductance;
+  if (damper_) {
+    const valve::SolvedDamper damper(solver, field.solution, results, fluid_, *damper_);
+    const valve::DamperPoint on = damper.point(spec_.velocity);
+    const valve::DamperPoint off = damper.zero_field().point(spec_.velocity);
+    q[Quantity::force_on] = on.force;
+    q[Quantity::force_off] = off.force;
+    q[Quantity::force_range] = (on.force - on.force_gas) / (off.force - off.force_gas);
+  }
+  if (brake_) {
+    const valve::SolvedBrake brake(solver, field.solution, results, fluid_, *brake_);
+    q[Quantity::torque_on] = brake.point(spec_.speed).torque.torque;
+    q[Quantity::torque_off] = brake.zero_field().point(spec_.speed).torque.torque;
+  }
 
   // Peak |B| over the elements of nonlinear (steel) materials; the winding's outer surface.
   const auto& m = solver.mesh();
@@ -139,6 +173,21 @@ Quantities OptimiseEvaluator::evaluate(const std::vector<double>& x) {
     }
   }
   q[Quantity::peak_steel_b] = peak;
+  if (!region_density_.empty()) {
+    // Pappus: an element of area A and centroid radius r sweeps 2 pi r A; the closed domain's
+    // air regions come after the case's own and have no mass.
+    double mass = 0.0;
+    for (std::size_t e = 0; e < m.triangles.size(); ++e) {
+      if (static_cast<std::size_t>(m.region[e]) >= region_density_.size()) continue;
+      const auto& t = m.triangles[e];
+      const mesh::Point a = m.nodes[t[0]], b = m.nodes[t[1]], p = m.nodes[t[2]];
+      const double area = 0.5 * std::abs((b.r - a.r) * (p.z - a.z) - (p.r - a.r) * (b.z - a.z));
+      mass +=
+          region_density_[m.region[e]] * 2.0 * std::numbers::pi * (a.r + b.r + p.r) / 3.0 * area;
+    }
+    q[Quantity::mass] = mass;
+    q[Quantity::torque_per_mass] = q[Quantity::torque_on] / mass;
+  }
 
   double r_max = 0.0, z_min = INFINITY, z_max = -INFINITY;
   for (const auto& p : c.problem.geometry.points) {

@@ -3,8 +3,12 @@
 // its field from the shared design evaluator on the morphed mesh of the first design (fixed
 // topology; re-meshed only when a morph would invert elements), gap pressure drops from the FE
 // gap field, coil resistance, L/R, power, peak steel |B|, the envelope, walls, temperature rise
-// and rise time. A wire_gauge variable is relaxed continuously (turns from the mesh's window).
+// and rise time; a damper's force and a brake's torque on the same field (valve::SolvedDamper,
+// valve::SolvedBrake), the device's mass. A wire_gauge variable is relaxed continuously (turns from
+// the mesh's window).
 
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +17,8 @@
 #include "optimise/design_evaluator.hpp"
 #include "optimise/optimise_spec.hpp"
 #include "optimise/quantities.hpp"
+#include "valve/brake.hpp"
+#include "valve/damper.hpp"
 #include "valve/valve_chain.hpp"
 
 namespace rheomag::optimise {
@@ -51,6 +57,9 @@ class OptimiseEvaluator {
   bool valve_varies_ = false;   ///< a design variable is a [valve] key
   int gauge_index_ = -1;        ///< index of the wire_gauge variable (-1: none)
   bool exact_winding_ = false;  ///< whole turns as the case derives them (no relaxation)
+  std::optional<valve::DamperOptions> damper_;  ///< [damper] of a damper case ([optimise] velocity)
+  std::optional<valve::BrakeOptions> brake_;    ///< [brake] of a brake case ([optimise] speed)
+  std::vector<double> region_density_;  ///< per region of the base case [kg/m^3] (mass only)
   DesignEvaluator designs_;
 };
 

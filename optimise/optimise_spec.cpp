@@ -159,12 +159,18 @@ OptimiseSpec read_optimise_spec(const cases::Case& c) {
     throw InputError(file + ": the case has no [optimise] table (docs/optimisation.md)");
   section->allow_only({"objective", "sense", "current", "flow", "max_iterations", "tolerance",
                        "step", "variable", "constraint", "supply_voltage", "heat_transfer",
-                       "thermal_resistance", "pareto", "enumerate"});
+                       "thermal_resistance", "pareto", "enumerate", "velocity", "speed",
+                       "density"});
   OptimiseSpec spec;
   read_objective(*section, spec);
   spec.maximise = read_sense(*section);
   spec.current = section->number_or("current", 1.0);
-  spec.flow = section->positive("flow");
+  spec.flow = section->positive_or("flow", 0.0);
+  spec.velocity = section->number_or("velocity", 0.0);
+  spec.speed = section->number_or("speed", 0.0);
+  if (auto density = section->table("density"))
+    for (const auto& [name, node] : density->raw())
+      spec.densities[std::string(name.str())] = density->positive(name.str());
   spec.max_iterations = static_cast<int>(section->integer_or("max_iterations", 40));
   if (spec.max_iterations < 1 || spec.max_iterations > 10000)
     section->fail("max_iterations", "expected an integer in 1..10000");
@@ -228,6 +234,16 @@ OptimiseSpec read_optimise_spec(const cases::Case& c) {
   }
   read_pareto(*section, spec);
   read_choices(c, *section, spec);
+  // Each device's quantities need its operating point.
+  const auto needs = [&](const auto& quantities, bool given, const char* key, const char* what) {
+    for (Quantity q : quantities)
+      if (uses(spec, q) && !given) section->fail(key, "\"" + quantity_name(q) + "\" needs " + what);
+  };
+  needs(kValveQuantities, spec.flow > 0.0, "flow", "the design flow rate: set flow [m^3/s] > 0");
+  needs(kDamperQuantities, spec.velocity != 0.0, "velocity",
+        "the design piston velocity: set velocity [m/s] (not 0)");
+  needs(kBrakeQuantities, spec.speed != 0.0, "speed",
+        "the design rotor speed: set speed [rad/s] (not 0)");
   if (uses(spec, Quantity::rise_time) && !(spec.supply_voltage > 0.0))
     section->fail("supply_voltage",
                   "rise_time needs the driver's voltage step: set supply_voltage [V] > 0");

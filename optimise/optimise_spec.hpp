@@ -64,10 +64,13 @@ struct OptimiseSpec {
   std::string objective = "dp_on";   ///< the objective's name: a quantity's, or "weighted_sum"
   std::vector<ObjectiveTerm> terms;  ///< objective = sum of terms (one term: the quantity itself)
   bool maximise = true;
-  double current = 1.0;             ///< on-state coil current [A]
-  double flow = 0.0;                ///< design flow rate [m^3/s]
-  int max_iterations = 40;          ///< Ipopt iterations
-  double tolerance = 1e-4;          ///< Ipopt relative tolerance on the scaled problem
+  double current = 1.0;                     ///< on-state coil current [A]
+  double flow = 0.0;                        ///< design flow rate [m^3/s] (0: not given)
+  double velocity = 0.0;                    ///< damper: design piston velocity [m/s] (0: not given)
+  double speed = 0.0;                       ///< brake: design rotor speed [rad/s] (0: not given)
+  std::map<std::string, double> densities;  ///< [optimise.density]: material -> [kg/m^3]
+  int max_iterations = 40;                  ///< Ipopt iterations
+  double tolerance = 1e-4;                  ///< Ipopt relative tolerance on the scaled problem
   double step = 1e-3;               ///< central-difference step as a fraction of each bound range
   double supply_voltage = 0.0;      ///< driver voltage step for rise_time [V] (0: not given)
   double heat_transfer = 10.0;      ///< coil outer surface to ambient [W/(m^2 K)]

@@ -28,7 +28,18 @@ std::string_view quantity_unit(Quantity q) {
       return "m";
     case Quantity::temperature_rise:
       return "K";
+    case Quantity::force_on:
+    case Quantity::force_off:
+      return "N";
+    case Quantity::torque_on:
+    case Quantity::torque_off:
+      return "N m";
+    case Quantity::mass:
+      return "kg";
+    case Quantity::torque_per_mass:
+      return "N m/kg";
     case Quantity::dynamic_range:
+    case Quantity::force_range:
     case Quantity::copper_fill:
       return "-";
   }

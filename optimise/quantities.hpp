@@ -31,10 +31,17 @@ enum class Quantity {
   min_wall,          ///< thinnest steel wall of the template [m]
   temperature_rise,  ///< steady coil temperature rise [K]
   rise_time,         ///< 90 % rise time of the coil current after a voltage step [s]
+  force_on,          ///< damper force at the on-state current and design velocity [N]
+  force_off,         ///< damper force at zero field, same velocity [N]
+  force_range,       ///< (force_on - gas force) / (force_off - gas force) [-]
+  torque_on,         ///< brake torque at the on-state current and design speed [N m]
+  torque_off,        ///< brake torque at zero field, same speed [N m]
+  mass,              ///< mass of the case's regions (axisymmetric volumes x densities) [kg]
+  torque_per_mass,   ///< torque_on / mass [N m/kg]
 };
 
 /// Number of quantities.
-inline constexpr std::size_t kQuantityCount = 17;
+inline constexpr std::size_t kQuantityCount = 24;
 
 /// The quantities' names as written in case files and outputs.
 inline constexpr auto kQuantityNames = enum_names<Quantity>({
@@ -55,7 +62,24 @@ inline constexpr auto kQuantityNames = enum_names<Quantity>({
     {Quantity::min_wall, "min_wall"},
     {Quantity::temperature_rise, "temperature_rise"},
     {Quantity::rise_time, "rise_time"},
+    {Quantity::force_on, "force_on"},
+    {Quantity::force_off, "force_off"},
+    {Quantity::force_range, "force_range"},
+    {Quantity::torque_on, "torque_on"},
+    {Quantity::torque_off, "torque_off"},
+    {Quantity::mass, "mass"},
+    {Quantity::torque_per_mass, "torque_per_mass"},
 });
+
+/// The quantities of a valve at the design flow ([optimise] flow).
+inline constexpr std::array kValveQuantities = {Quantity::dp_on, Quantity::dp_off,
+                                                Quantity::dynamic_range};
+/// The quantities of a damper at the design velocity ([optimise] velocity, a [damper] case).
+inline constexpr std::array kDamperQuantities = {Quantity::force_on, Quantity::force_off,
+                                                 Quantity::force_range};
+/// The quantities of a brake at the design speed ([optimise] speed).
+inline constexpr std::array kBrakeQuantities = {Quantity::torque_on, Quantity::torque_off,
+                                                Quantity::torque_per_mass};
 
 /// The name of a quantity.
 inline std::string quantity_name(Quantity q) {

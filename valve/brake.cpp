@@ -29,14 +29,13 @@ SolvedBrake::SolvedBrake(const magnetostatics::MagnetostaticSolver& solver,
                          const magnetostatics::Solution& solution,
                          const magnetostatics::Results& results, const fluid::Fluid& fluid,
                          const BrakeOptions& options)
-    : fluid_(fluid) {
-  gaps_ = sample_gaps(solver, solution, results, options.inner_radius, "[brake] inner_radius");
-  if (gaps_.empty())
-    throw InputError(solver.problem().geometry.source + ": the brake case has no fluid gap");
-  if (!results.circuits.empty()) {
-    current_ = results.circuits.front().current;
-    inductance_ = results.circuits.front().inductance;
-  }
+    : SolvedDevice(solver, solution, results, fluid, "brake", options.inner_radius,
+                   "[brake] inner_radius") {}
+
+SolvedBrake SolvedBrake::zero_field() const {
+  SolvedBrake off = *this;
+  off.clear_field();
+  return off;
 }
 
 BrakePoint SolvedBrake::point(double speed) const {
@@ -77,31 +76,18 @@ BrakePoint SolvedBrake::point(double speed) const {
 }
 
 BrakeChain::BrakeChain(const cases::Case& c, BrakeOptions options)
-    : options_(std::move(options)), valve_options_(read_valve_options(c)) {
-  const std::string where = c.source.string();
-  fluid_ = case_fluid(c);
-  if (c.problem.circuits.empty()) throw InputError(where + ": the case has no coil circuit");
-  solver_ = make_device_solver(c);
-  coil_ = coil_spec(*solver_, valve_options_);
-}
+    : DeviceChain(c, "brake"), options_(std::move(options)) {}
 
 std::vector<BrakePoint> BrakeChain::evaluate(const std::vector<double>& currents,
                                              const std::vector<double>& speeds) {
-  if (currents.empty() || speeds.empty())
-    throw InputError("brake: needs at least one current and one speed");
-  std::vector<BrakePoint> points;
-  for (double current : currents) {
-    const DeviceField field = solve_at_current(*solver_, current);
-    const SolvedBrake brake(*solver_, field.solution, field.results, fluid_, options_);
-    for (double w : speeds) points.push_back(brake.point(w));
-  }
-  return points;
-}
-
-CoilProperties BrakeChain::coil(double current, double inductance) const {
-  if (valve_options_.wire.empty())
-    throw InputError("brake: the coil resistance needs the wire: set [valve] wire in the case");
-  return coil_properties(coil_, current, inductance);
+  return per_current<BrakePoint>(
+      currents, speeds.size(), "speed",
+      [&](const magnetostatics::MagnetostaticSolver& solver, const DeviceField& field) {
+        const SolvedBrake brake(solver, field.solution, field.results, fluid_, options_);
+        std::vector<BrakePoint> points;
+        for (double w : speeds) points.push_back(brake.point(w));
+        return points;
+      });
 }
 
 }  // namespace rheomag::valve

@@ -15,7 +15,9 @@
 #include "magnetostatics/results.hpp"
 #include "magnetostatics/solver.hpp"
 #include "valve/coil.hpp"
+#include "valve/device_chain.hpp"
 #include "valve/sampled_gaps.hpp"
+#include "valve/solved_device.hpp"
 #include "valve/valve_chain.hpp"
 
 namespace rheomag::valve {
@@ -49,38 +51,30 @@ struct BrakePoint {
 };
 
 /// A brake whose field is solved: gaps sampled once, then any speed.
-class SolvedBrake {
+class SolvedBrake : public SolvedDevice {
  public:
   SolvedBrake(const magnetostatics::MagnetostaticSolver& solver,
               const magnetostatics::Solution& solution, const magnetostatics::Results& results,
               const fluid::Fluid& fluid, const BrakeOptions& options);
   /// The torque at rotor speed `speed` [rad/s] (either sign; 0 gives the breakaway torque).
   BrakePoint point(double speed) const;
+  /// The same brake with zero flux density in every gap (current and inductance 0).
+  SolvedBrake zero_field() const;
 
  private:
-  std::vector<SampledGap> gaps_;
-  fluid::Fluid fluid_;
-  double current_ = 0.0, inductance_ = 0.0;
 };
 
 /// A brake case: mesh and solver once, one field solve per current.
-class BrakeChain {
+class BrakeChain : public DeviceChain {
  public:
   /// InputError if the case has no gap, no coil or no fluid.
   BrakeChain(const cases::Case& c, BrakeOptions options);
   /// current-major list of points.
   std::vector<BrakePoint> evaluate(const std::vector<double>& currents,
                                    const std::vector<double>& speeds);
-  /// Coil quantities at `current` with inductance `inductance` (needs [valve] wire).
-  CoilProperties coil(double current, double inductance) const;
-  const fluid::Fluid& fluid() const { return fluid_; }
 
  private:
-  std::unique_ptr<magnetostatics::MagnetostaticSolver> solver_;
-  fluid::Fluid fluid_;
   BrakeOptions options_;
-  ValveOptions valve_options_;
-  CoilSpec coil_;
 };
 
 }  // namespace rheomag::valve

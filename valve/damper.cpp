@@ -67,10 +67,8 @@ SolvedDamper::SolvedDamper(const magnetostatics::MagnetostaticSolver& solver,
                            const magnetostatics::Solution& solution,
                            const magnetostatics::Results& results, const fluid::Fluid& fluid,
                            const DamperOptions& options)
-    : fluid_(fluid), options_(options) {
+    : SolvedDevice(solver, solution, results, fluid, "damper"), options_(options) {
   const std::string where = solver.problem().geometry.source;
-  gaps_ = sample_gaps(solver, solution, results, 0.0);
-  if (gaps_.empty()) throw InputError(where + ": the damper case has no fluid gap");
   for (const SampledGap& gap : gaps_)
     if (!gap.annular)
       throw InputError(where + ": damper gap \"" + gap.name +
@@ -89,10 +87,12 @@ SolvedDamper::SolvedDamper(const magnetostatics::MagnetostaticSolver& solver,
     throw InputError(where + ": [damper] rod_diameter does not fit inside the piston");
   rod_area_ = kPi * rod_radius * rod_radius;
   piston_area_ = kPi * outer_radius * outer_radius - rod_area_;
-  if (!results.circuits.empty()) {
-    current_ = results.circuits.front().current;
-    inductance_ = results.circuits.front().inductance;
-  }
+}
+
+SolvedDamper SolvedDamper::zero_field() const {
+  SolvedDamper off = *this;
+  off.clear_field();
+  return off;
 }
 
 DamperPoint SolvedDamper::point(double velocity) const {
@@ -132,13 +132,7 @@ DamperPoint SolvedDamper::point(double velocity) const {
 }
 
 DamperChain::DamperChain(const cases::Case& c, DamperOptions options)
-    : options_(std::move(options)), valve_options_(read_valve_options(c)) {
-  const std::string where = c.source.string();
-  fluid_ = case_fluid(c);
-  if (c.problem.circuits.empty()) throw InputError(where + ": the case has no coil circuit");
-  solver_ = make_device_solver(c);
-  coil_ = coil_spec(*solver_, valve_options_);
-}
+    : DeviceChain(c, "damper"), options_(std::move(options)) {}
 
 std::vector<DamperPoint> DamperChain::evaluate(const std::vector<double>& currents,
                                                const std::vector<double>& velocities) {
@@ -152,22 +146,15 @@ std::vector<DamperPoint> DamperChain::evaluate_flows(const std::vector<double>& 
 
 std::vector<DamperPoint> DamperChain::evaluate_at(const std::vector<double>& currents,
                                                   const std::vector<double>& values, bool flows) {
-  if (currents.empty() || values.empty())
-    throw InputError("damper: needs at least one current and one velocity");
-  std::vector<DamperPoint> points;
-  for (double current : currents) {
-    const DeviceField field = solve_at_current(*solver_, current);
-    const SolvedDamper damper(*solver_, field.solution, field.results, fluid_, options_);
-    for (double value : values)
-      points.push_back(damper.point(flows ? value / damper.piston_area() : value));
-  }
-  return points;
-}
-
-CoilProperties DamperChain::coil(double current, double inductance) const {
-  if (valve_options_.wire.empty())
-    throw InputError("damper: the coil resistance needs the wire: set [valve] wire in the case");
-  return coil_properties(coil_, current, inductance);
+  return per_current<DamperPoint>(
+      currents, values.size(), "velocity",
+      [&](const magnetostatics::MagnetostaticSolver& solver, const DeviceField& field) {
+        const SolvedDamper damper(solver, field.solution, field.results, fluid_, options_);
+        std::vector<DamperPoint> points;
+        for (double value : values)
+          points.push_back(damper.point(flows ? value / damper.piston_area() : value));
+        return points;
+      });
 }
 
 }  // namespace rheomag::valve

@@ -15,7 +15,9 @@
 #include "magnetostatics/results.hpp"
 #include "magnetostatics/solver.hpp"
 #include "valve/coil.hpp"
+#include "valve/device_chain.hpp"
 #include "valve/sampled_gaps.hpp"
+#include "valve/solved_device.hpp"
 #include "valve/valve_chain.hpp"
 
 namespace rheomag::valve {
@@ -71,7 +73,7 @@ struct DamperPoint {
 };
 
 /// A damper whose field is solved: gaps sampled once, then any velocity.
-class SolvedDamper {
+class SolvedDamper : public SolvedDevice {
  public:
   /// InputError if a gap is not annular, the gaps do not share the piston radius, or the rod
   /// does not fit inside the piston.
@@ -80,19 +82,18 @@ class SolvedDamper {
                const fluid::Fluid& fluid, const DamperOptions& options);
   /// The damper at piston velocity `velocity` (either sign; 0 gives the gas force).
   DamperPoint point(double velocity) const;
+  /// The same damper with zero flux density in every gap (current and inductance 0).
+  SolvedDamper zero_field() const;
   /// Effective piston area for the pressure drop [m^2].
   double piston_area() const { return piston_area_; }
 
  private:
-  std::vector<SampledGap> gaps_;
-  fluid::Fluid fluid_;
   DamperOptions options_;
-  double current_ = 0.0, inductance_ = 0.0;
   double piston_radius_ = 0.0, rod_area_ = 0.0, piston_area_ = 0.0, flow_area_ = 0.0;
 };
 
 /// A piston case: mesh and solver once, one field solve per current.
-class DamperChain {
+class DamperChain : public DeviceChain {
  public:
   /// InputError if the case has no annular gap, no coil or no fluid.
   DamperChain(const cases::Case& c, DamperOptions options);
@@ -102,18 +103,11 @@ class DamperChain {
   /// current-major list of points at the velocities v = Q / A_eff that make the gap flows Q.
   std::vector<DamperPoint> evaluate_flows(const std::vector<double>& currents,
                                           const std::vector<double>& flows);
-  /// Coil quantities at `current` with inductance `inductance` (needs [valve] wire).
-  CoilProperties coil(double current, double inductance) const;
-  const fluid::Fluid& fluid() const { return fluid_; }
 
  private:
   std::vector<DamperPoint> evaluate_at(const std::vector<double>& currents,
                                        const std::vector<double>& values, bool flows);
-  std::unique_ptr<magnetostatics::MagnetostaticSolver> solver_;
-  fluid::Fluid fluid_;
   DamperOptions options_;
-  ValveOptions valve_options_;
-  CoilSpec coil_;
 };
 
 }  // namespace rheomag::valve

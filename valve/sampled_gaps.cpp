@@ -67,4 +67,8 @@ std::vector<SampledGap> sample_gaps(const magnetostatics::MagnetostaticSolver& s
   return gaps;
 }
 
+void zero_fields(std::vector<SampledGap>& gaps) {
+  for (SampledGap& gap : gaps) std::fill(gap.field.b.begin(), gap.field.b.end(), 0.0);
+}
+
 }  // namespace rheomag::valve

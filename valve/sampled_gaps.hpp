@@ -32,4 +32,7 @@ std::vector<SampledGap> sample_gaps(const magnetostatics::MagnetostaticSolver& s
                                     const magnetostatics::Results& results, double inlet_radius,
                                     const std::string& inlet_key = "[valve] inlet_radius");
 
+/// Sets |B| to zero at every sample of every gap (the zero-field state of a device).
+void zero_fields(std::vector<SampledGap>& gaps);
+
 }  // namespace rheomag::valve
