@@ -165,7 +165,12 @@ TransientResult TransientSolver::run(const TransientOptions& options,
   if (!voltage) {
     StepSystem jump(ops, {x, current, 0.0, false, options.value, options.resistance, true, {}});
     Eigen::VectorXd y = x;
-    result.newton_iterations += magnetostatics::newton_solve(jump, y, scale, newton).iterations;
+    try {
+      result.newton_iterations += magnetostatics::newton_solve(jump, y, scale, newton).iterations;
+    } catch (const ConvergenceError& e) {
+      throw ConvergenceError("the instantaneous response at t = 0 s did not converge: " +
+                             std::string(e.what()));
+    }
     result.factorizations += jump.factorizations();
     x = y;
     current = options.value;
@@ -190,7 +195,8 @@ TransientResult TransientSolver::run(const TransientOptions& options,
   std::vector<double> hist_t{0.0}, hist_lambda{result.flux_linkage.back()};
   Eigen::VectorXd x_previous;
   double h_previous = 0.0;
-  double worst_imbalance = 0.0;  // largest |source - dW - losses| of a step [J]
+  double worst_imbalance = 0.0;    // largest |source - field work - losses| of a step [J]
+  double worst_dissipation = 0.0;  // largest |field work - dW| of a step [J]
   double t = 0.0;
   while (t < duration * (1.0 - 1e-12)) {
     h = std::min(h, duration - t);
@@ -247,10 +253,13 @@ TransientResult TransientSolver::run(const TransientOptions& options,
     const double source = (voltage ? options.value * i_bar * h
                                    : i_bar * (lambda - result.flux_linkage.back()) + copper) +
                           other_work;
+    const double field_work = step.field_work(y);
     const double w = assembler.energy(a);
     const double stored = w - w_now;
-    worst_imbalance = std::max(worst_imbalance, std::abs(source - stored - eddy - copper));
+    worst_imbalance = std::max(worst_imbalance, std::abs(source - field_work - eddy - copper));
+    worst_dissipation = std::max(worst_dissipation, std::abs(field_work - stored));
     result.energy.source += source;
+    result.energy.field_work += field_work;
     result.energy.stored_change += stored;
     result.energy.eddy_loss += eddy;
     result.energy.copper_loss += copper;
@@ -282,9 +291,10 @@ TransientResult TransientSolver::run(const TransientOptions& options,
       std::max({std::abs(e.source), std::abs(e.stored_change), e.eddy_loss + e.copper_loss});
   if (energy_scale > 0.0) {
     e.max_step_error = worst_imbalance / energy_scale;
-    e.total_error =
-        std::abs(e.source - e.stored_change - e.eddy_loss - e.copper_loss) / energy_scale;
+    e.total_error = std::abs(e.source - e.field_work - e.eddy_loss - e.copper_loss) / energy_scale;
+    e.max_step_dissipation = worst_dissipation / energy_scale;
   }
+  e.numerical_dissipation = e.field_work - e.stored_change;
   const double lambda0 = result.flux_linkage.front();
   result.t63 = rise_time(result.time, result.flux_linkage, lambda0, result.final_flux_linkage,
                          1.0 - std::exp(-1.0));

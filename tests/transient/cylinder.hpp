@@ -15,6 +15,11 @@
 
 namespace rheomag::test {
 
+/// An AISI-1010-like B-H curve (B [T], H [A/m]) for the saturating tests.
+inline const std::vector<cases::BhPoint> kSaturatingBh = {
+    {0.0, 0.0},    {0.5, 200.0},   {1.0, 500.0},   {1.3, 800.0},   {1.5, 1300.0},  {1.6, 2500.0},
+    {1.7, 5000.0}, {1.8, 10000.0}, {1.9, 16000.0}, {2.0, 30000.0}, {2.1, 50000.0}, {2.3, 150000.0}};
+
 /// The reference: mu_r = 1000, sigma = 5 MS/m, a = 10 mm; a winding of `turns` over
 /// a length `length` just outside it.
 struct Cylinder {
