@@ -31,10 +31,13 @@ enum class Quantity {
   min_wall,          ///< thinnest steel wall of the template [m]
   temperature_rise,  ///< steady coil temperature rise [K]
   rise_time,         ///< 90 % rise time of the coil current after a voltage step [s]
+  /// t90 of the slowest gap's mean |B| after a voltage step on and off, eddy currents included
+  /// (transient magnetics): the slower of the two [s]
+  response_time,
 };
 
 /// Number of quantities.
-inline constexpr std::size_t kQuantityCount = 17;
+inline constexpr std::size_t kQuantityCount = 18;
 
 /// The quantities' names as written in case files and outputs.
 inline constexpr auto kQuantityNames = enum_names<Quantity>({
@@ -55,6 +58,7 @@ inline constexpr auto kQuantityNames = enum_names<Quantity>({
     {Quantity::min_wall, "min_wall"},
     {Quantity::temperature_rise, "temperature_rise"},
     {Quantity::rise_time, "rise_time"},
+    {Quantity::response_time, "response_time"},
 });
 
 /// The name of a quantity.
