@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -173,4 +175,38 @@ TEST(RiseTimes, PredictedLagWithOnlyTheComplianceFitted) {
       EXPECT_GT(rise5[k], rise5[k - 1]);
     }
   }
+}
+
+// Rigs with an FE valve ([valve] case) take the predicted eddy-current lag by default: a rig
+// file naming cases/annular_valve.toml and no [effects.eddy_currents] gets one lag per quarter
+// of the case's 1 A (0.25 .. 1 A), each a positive time constant that does not grow with the
+// current (saturation lowers the steel's incremental permeability); `enabled = false` turns it
+// off.
+TEST(RiseTimes, FeValveRigsUseThePredictedLagByDefault) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string valve_case = std::string(RHEOMAG_SOURCE_DIR) + "/cases/annular_valve.toml";
+  const std::string rig =
+      "[rig]\nkind = \"constant_velocity_pump\"\nbore = 0.032\nrod = 0.012\n"
+      "[driver]\nmode = \"current_source\"\n[valve]\ncase = \"" +
+      valve_case + "\"\n";
+  const auto on = dir / "rheomag_rig_predicted_default.toml";
+  const auto off = dir / "rheomag_rig_predicted_off.toml";
+  std::ofstream(on) << rig;
+  std::ofstream(off) << rig << "[effects.eddy_currents]\nenabled = false\n";
+  const SimulationSpec spec = read_simulation_spec(on.string());
+  ASSERT_TRUE(spec.rig && spec.rig->predicted_eddy_lag);
+  const PredictedLag& lag = *spec.rig->predicted_eddy_lag;
+  ASSERT_EQ(lag.current.size(), 4u);
+  EXPECT_DOUBLE_EQ(lag.current.front(), 0.25);
+  EXPECT_DOUBLE_EQ(lag.current.back(), 1.0);
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_GT(lag.time_constant[k], 0.0);
+    if (k > 0) {
+      EXPECT_LE(lag.time_constant[k], lag.time_constant[k - 1] * 1.01);
+    }
+  }
+  EXPECT_DOUBLE_EQ(lag.at(0.1), lag.time_constant.front());  // held below the table
+  EXPECT_FALSE(read_simulation_spec(off.string()).rig->predicted_eddy_lag);
+  std::filesystem::remove(on);
+  std::filesystem::remove(off);
 }
