@@ -32,6 +32,7 @@ struct TransientCliOptions {
   double duration = 0.0;
   int steps = 0;
   double tolerance = 1e-4;
+  int newton_iterations = 50;
   std::string scheme = "midpoint";
   std::optional<double> resistance;
   std::string vtk_series;
@@ -115,6 +116,7 @@ void run(const TransientCliOptions& o) {
   options.duration = o.duration;
   options.steps = o.steps;
   options.tolerance = o.tolerance;
+  options.newton.max_iterations = o.newton_iterations;
   options.scheme = transient::kTimeSchemeNames.parse(o.scheme, "--scheme");
   const std::optional<double> resistance = coil_resistance(o, c, case_options, *statics);
   if (o.voltage && !resistance)
@@ -177,6 +179,10 @@ const bool registered = app::register_command([](CLI::App& root) {
   cmd->add_option("--tolerance", o->tolerance,
                   "Adaptive steps: local error of the flux linkage per step, relative to its "
                   "change (default 1e-4)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--newton-iterations", o->newton_iterations,
+                  "Newton iterations per time step before it is repeated smaller (adaptive) or the "
+                  "run stops with exit 3 (default 50)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--scheme", o->scheme, "midpoint (default, 2nd order) or backward_euler");
   cmd->add_option("--resistance", o->resistance, "Coil resistance [Ohm] (overrides the case)");

@@ -416,6 +416,7 @@ RigSpec DiagnosisModel::spec(const std::vector<Effect>& effects,
         break;
       case Effect::eddy_currents:
         s.eddy_time_constant = values.at(k++);
+        s.predicted_eddy_lag.reset();  // the fitted lag replaces a predicted one
         break;
       case Effect::mr_response_time:
         s.mr_response_time = values.at(k++);

@@ -110,7 +110,8 @@ class RigSystem : public OdeSystem {
       i_flux_ = add(0.1);  // Duhem between the imposed current and the field (paper 004 eq. 2)
     }
     if (spec.coil_heating) i_temperature_ = add(50.0);
-    if (spec.eddy_time_constant && *spec.eddy_time_constant > 0) i_eddy_ = add(1.0);
+    if ((spec.eddy_time_constant && *spec.eddy_time_constant > 0) || spec.predicted_eddy_lag)
+      i_eddy_ = add(1.0);
     if (spec.mr_response_time && *spec.mr_response_time > 0) i_mr_ = add(1.0);
     if (spec.kind != RigKind::coil_bench) {
       if (spec.compressibility) {
@@ -224,7 +225,9 @@ class RigSystem : public OdeSystem {
     sig.field_current = field_current(x, sig.current);
     double field = sig.field_current;
     if (i_eddy_ >= 0) {
-      dxdt[i_eddy_] = (field - x[i_eddy_]) / *s_.eddy_time_constant;
+      const double tau =
+          s_.predicted_eddy_lag ? s_.predicted_eddy_lag->at(field) : *s_.eddy_time_constant;
+      dxdt[i_eddy_] = (field - x[i_eddy_]) / tau;
       field = x[i_eddy_];
     }
     if (i_mr_ >= 0) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "lumped/blocks.hpp"
+#include "lumped/predicted_lag.hpp"
 #include "lumped/recording.hpp"
 
 namespace rheomag::lumped {
@@ -39,11 +40,14 @@ struct RigSpec {
   std::optional<double> inertance;                ///< fluid_inertia [Pa s^2/m^3]
   std::optional<DuhemBlock> magnetic_hysteresis;  ///< magnetic_hysteresis
   std::optional<double> eddy_time_constant;       ///< eddy_currents [s]
-  std::optional<ThermalBlock> coil_heating;       ///< coil_heating
-  std::optional<double> mr_response_time;         ///< mr_response_time [s]
-  std::optional<double> coulomb_force;            ///< friction [N] (damper)
-  double friction_velocity = 1e-3;                ///< [m/s] width of the friction tanh
-  std::map<std::string, double> sensor_noise;     ///< column -> standard deviation (SI)
+  /// eddy_currents predicted from the valve's FE step responses: the lag's time constant at the
+  /// current it is driven towards (takes the place of eddy_time_constant when set).
+  std::optional<PredictedLag> predicted_eddy_lag;
+  std::optional<ThermalBlock> coil_heating;    ///< coil_heating
+  std::optional<double> mr_response_time;      ///< mr_response_time [s]
+  std::optional<double> coulomb_force;         ///< friction [N] (damper)
+  double friction_velocity = 1e-3;             ///< [m/s] width of the friction tanh
+  std::map<std::string, double> sensor_noise;  ///< column -> standard deviation (SI)
   unsigned noise_seed = 1;
   /// 0: adaptive rosenbrock4 (error-controlled); n > 0: n fixed SDIRK2 steps per sample
   /// interval (lumped/ode_grid.hpp: cost set by the samples, output smooth in the parameters),

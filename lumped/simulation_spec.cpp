@@ -11,8 +11,10 @@
 #include <set>
 #include <sstream>
 
+#include "case/case_file.hpp"
 #include "core/error.hpp"
 #include "lumped/lugre_paper001.hpp"
+#include "lumped/predicted_lag.hpp"
 #include "lumped/transfer_function.hpp"
 
 namespace rheomag::lumped {
@@ -220,9 +222,34 @@ RigSpec read_rig(const toml::table& doc, const std::string& file) {
     h.flux_per_ampere = e.number("flux_per_ampere", h.b1 * h.b2 + h.d, 0.0);
     s.magnetic_hysteresis = h;
   }
-  if (auto e = effect("eddy_currents"); effect_on(e)) {
-    e.only({"enabled", "time_constant", "relative_permeability", "conductivity", "core_radius"});
-    if (e.has("time_constant")) {
+  // The valve's own lag predicted from FE step responses: from [effects.eddy_currents] case, or
+  // by default from the FE valve of [valve] case (the currents: `currents`, else the yield
+  // table's currents > 0, else 1/4 .. 4/4 of the case's first circuit current).
+  auto predicted = [&](const std::filesystem::path& case_path, const TableReader& e) {
+    std::vector<double> currents =
+        e.present() && e.has("currents") ? e.numbers("currents") : std::vector<double>{};
+    if (currents.empty())
+      for (double i : s.valve.yield_current)
+        if (i > 0.0) currents.push_back(i);
+    if (currents.empty()) {
+      const double i = std::abs(cases::load_case(case_path).problem.circuits.at(0).current);
+      for (int k = 1; k <= 4; ++k) currents.push_back(0.25 * k * (i > 0.0 ? i : 1.0));
+    }
+    return predict_field_lag(case_path, currents);
+  };
+  const auto eddy_table = effect("eddy_currents");
+  if (!eddy_table.present() && !s.valve.case_file.empty() && s.kind != RigKind::coil_bench) {
+    s.predicted_eddy_lag = predicted(s.valve.case_file, eddy_table);
+  } else if (auto e = eddy_table; effect_on(e)) {
+    e.only({"enabled", "time_constant", "relative_permeability", "conductivity", "core_radius",
+            "case", "currents"});
+    if (e.has("case")) {
+      const std::filesystem::path case_path =
+          std::filesystem::path(file).parent_path() / e.text("case", "");
+      if (!std::filesystem::exists(case_path))
+        e.fail("case", "names no file: " + case_path.string());
+      s.predicted_eddy_lag = predicted(case_path.lexically_normal(), e);
+    } else if (e.has("time_constant")) {
       s.eddy_time_constant = e.positive("time_constant", 0.01);
     } else {
       s.eddy_time_constant =

@@ -11,6 +11,7 @@
 
 #include "case/wire_gauge.hpp"
 #include "core/error.hpp"
+#include "optimise/response_time.hpp"
 #include "valve/coil.hpp"
 #include "valve/solved_valve.hpp"
 
@@ -56,7 +57,7 @@ OptimiseEvaluator::OptimiseEvaluator(cases::Case base, OptimiseSpec spec)
   static const std::vector<Quantity> needs_wire = {
       Quantity::resistance,      Quantity::time_constant, Quantity::power,
       Quantity::current_density, Quantity::copper_fill,   Quantity::temperature_rise,
-      Quantity::rise_time};
+      Quantity::rise_time,       Quantity::response_time};
   for (Quantity q : needs_wire)
     if (valve_.wire.empty() && uses(spec_, q))
       throw InputError(where + ": \"" + quantity_name(q) +
@@ -228,6 +229,15 @@ Quantities OptimiseEvaluator::evaluate(const std::vector<double>& x) {
         flux.push_back(point.flux_linkage);
       designs_.count_solves(kRiseSamples);
       q[Quantity::rise_time] = rise_time_90(sample_currents, flux, p.resistance, final_current);
+    }
+    if (uses(spec_, Quantity::response_time)) {
+      ResponseTimeOptions o;
+      o.supply_voltage = spec_.supply_voltage;
+      o.resistance = p.resistance;
+      o.time_constant = p.time_constant;
+      const ResponseTime t = response_time(*field.solver, c, o);
+      designs_.count_solves(2 * t.transient_runs);  // the static states of each run
+      q[Quantity::response_time] = t.value();
     }
   }
   return q;

@@ -244,9 +244,11 @@ OptimiseSpec read_optimise_spec(const cases::Case& c) {
         "the design piston velocity: set velocity [m/s] (not 0)");
   needs(kBrakeQuantities, spec.speed != 0.0, "speed",
         "the design rotor speed: set speed [rad/s] (not 0)");
-  if (uses(spec, Quantity::rise_time) && !(spec.supply_voltage > 0.0))
-    section->fail("supply_voltage",
-                  "rise_time needs the driver's voltage step: set supply_voltage [V] > 0");
+  for (Quantity q : {Quantity::rise_time, Quantity::response_time})
+    if (uses(spec, q) && !(spec.supply_voltage > 0.0))
+      section->fail("supply_voltage", quantity_name(q) +
+                                          " needs the driver's voltage step: set supply_voltage "
+                                          "[V] > 0");
   return spec;
 }
 

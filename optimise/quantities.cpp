@@ -16,6 +16,7 @@ std::string_view quantity_unit(Quantity q) {
       return "Ohm";
     case Quantity::time_constant:
     case Quantity::rise_time:
+    case Quantity::response_time:
       return "s";
     case Quantity::power:
       return "W";

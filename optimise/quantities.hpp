@@ -38,10 +38,13 @@ enum class Quantity {
   torque_off,        ///< brake torque at zero field, same speed [N m]
   mass,              ///< mass of the case's regions (axisymmetric volumes x densities) [kg]
   torque_per_mass,   ///< torque_on / mass [N m/kg]
+  /// t90 of the slowest gap's mean |B| after a voltage step on and off, eddy currents included
+  /// (transient magnetics): the slower of the two [s]
+  response_time,
 };
 
 /// Number of quantities.
-inline constexpr std::size_t kQuantityCount = 24;
+inline constexpr std::size_t kQuantityCount = 25;
 
 /// The quantities' names as written in case files and outputs.
 inline constexpr auto kQuantityNames = enum_names<Quantity>({
@@ -69,6 +72,7 @@ inline constexpr auto kQuantityNames = enum_names<Quantity>({
     {Quantity::torque_off, "torque_off"},
     {Quantity::mass, "mass"},
     {Quantity::torque_per_mass, "torque_per_mass"},
+    {Quantity::response_time, "response_time"},
 });
 
 /// The quantities of a valve at the design flow ([optimise] flow).

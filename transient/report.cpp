@@ -56,7 +56,10 @@ nlohmann::json transient_json(const TransientResult& r, const TransientOptions& 
           {"copper_loss", e.copper_loss},
           {"energy",
            {{"source", e.source},
+            {"field_work", e.field_work},
             {"stored_change", e.stored_change},
+            {"numerical_dissipation", e.numerical_dissipation},
+            {"max_step_dissipation", e.max_step_dissipation},
             {"eddy_loss", e.eddy_loss},
             {"copper_loss", e.copper_loss},
             {"step_energy", e.step_energy},
@@ -89,10 +92,10 @@ std::string transient_summary(const TransientResult& r, const TransientOptions& 
     out << "gap " << g.name << " mean |B| -> " << g.final_b * 1e3 << " mT: t63 " << ms(g.t63)
         << ", t90 " << ms(g.t90) << "\n";
   std::snprintf(line, sizeof line,
-                "energy [J]: source %.6g = stored %.6g + eddy %.6g + copper %.6g (worst step "
-                "balance %.2g)\n",
-                r.energy.source, r.energy.stored_change, r.energy.eddy_loss, r.energy.copper_loss,
-                r.energy.max_step_error);
+                "energy [J]: source %.6g = stored %.6g + numerical dissipation %.3g + eddy %.6g + "
+                "copper %.6g (worst step balance %.2g)\n",
+                r.energy.source, r.energy.stored_change, r.energy.numerical_dissipation,
+                r.energy.eddy_loss, r.energy.copper_loss, r.energy.max_step_error);
   out << line;
   out << r.steps << " steps (" << r.rejected_steps << " rejected), " << r.newton_iterations
       << " Newton iterations, " << r.dofs << " dofs, " << r.seconds << " s\n\n";

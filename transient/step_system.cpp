@@ -23,6 +23,14 @@ double StepSystem::mean_current(const Eigen::VectorXd& x) const {
   return setup_.i0 + s_bar_ * (x[n_] - setup_.i0);
 }
 
+double StepSystem::field_work(const Eigen::VectorXd& x) {
+  if (residual_x_.size() != x.size() || residual_x_ != x) {
+    Eigen::VectorXd r;
+    residual(x, r);
+  }
+  return field_work_;
+}
+
 double StepSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r) {
   // The step matrix is assembled with the residual: Newton factorises at the x of its last
   // accepted residual, and a tangent costs little more than a residual in the same pass.
@@ -40,6 +48,7 @@ double StepSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r) {
     field += w * part;
     values += (w * s) * t_values;
   }
+  field_work_ = field.dot(delta);
   field -= i_bar * *ops_.drive_source + *ops_.other_source;
   if (setup_.jump) {
     // Conducting dofs stay put: their equations are x = x0, their rows and columns the identity.

@@ -64,6 +64,9 @@ class StepSystem : public magnetostatics::NonlinearSystem {
 
   /// Mean current over the step for unknowns x (i_bar).
   double mean_current(const Eigen::VectorXd& x) const;
+  /// The scheme's field work over the step for unknowns x [J]: sum_g w_g R(A_g) . (x1 - x0),
+  /// the quadrature of integral H . dB dV along the step (W(x1) - W(x0) when it is exact).
+  double field_work(const Eigen::VectorXd& x);
   /// Numeric factorisations done.
   int factorizations() const { return factorizations_; }
   /// Relative change of the step matrix's values since the last factorisation above which it
@@ -82,6 +85,7 @@ class StepSystem : public magnetostatics::NonlinearSystem {
   double s_bar_ = 0.0;
   magnetostatics::SparseMatrix k_;  // step matrix at residual_x_ (assembled with the residual)
   Eigen::VectorXd residual_x_;      // where k_ was assembled
+  double field_work_ = 0.0;         // sum_g w_g R(A_g) . delta at residual_x_
   bool reuse_ = false;              // solve with CG preconditioned by the kept factor
   Eigen::VectorXd k_inv_f_;         // K^-1 F (voltage drive)
   int factorizations_ = 0;

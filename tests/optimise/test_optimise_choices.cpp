@@ -109,8 +109,9 @@ TEST(OptimiseChoices, WeightedSumAndParetoAreReadAndChecked) {
 // The shipped examples read: [optimise] spec and evaluator set up (no FE solve), the variables'
 // starts are the cases' own values inside their bounds.
 TEST(OptimiseChoices, ShippedCasesAreValid) {
-  for (const char* name : {"optimise_annular.toml", "optimise_meandering.toml",
-                           "optimise_annular_pareto.toml", "optimise_annular_rise.toml"}) {
+  for (const char* name :
+       {"optimise_annular.toml", "optimise_meandering.toml", "optimise_annular_pareto.toml",
+        "optimise_annular_rise.toml", "optimise_annular_response.toml"}) {
     const auto c = cases::load_case(fs::path(RHEOMAG_SOURCE_DIR) / "cases" / name);
     const auto spec = optimise::read_optimise_spec(c);
     EXPECT_NO_THROW(optimise::OptimiseEvaluator(c, spec)) << name;

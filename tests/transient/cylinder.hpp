@@ -5,6 +5,7 @@
 
 #include <boost/math/special_functions/bessel.hpp>
 #include <cmath>
+#include <complex>
 #include <numbers>
 #include <vector>
 
@@ -14,6 +15,11 @@
 #include "tests/magnetostatics/structured_mesh.hpp"
 
 namespace rheomag::test {
+
+/// An AISI-1010-like B-H curve (B [T], H [A/m]) for the saturating tests.
+inline const std::vector<cases::BhPoint> kSaturatingBh = {
+    {0.0, 0.0},    {0.5, 200.0},   {1.0, 500.0},   {1.3, 800.0},   {1.5, 1300.0},  {1.6, 2500.0},
+    {1.7, 5000.0}, {1.8, 10000.0}, {1.9, 16000.0}, {2.0, 30000.0}, {2.1, 50000.0}, {2.3, 150000.0}};
 
 /// The reference: mu_r = 1000, sigma = 5 MS/m, a = 10 mm; a winding of `turns` over
 /// a length `length` just outside it.
@@ -46,6 +52,44 @@ struct Cylinder {
       (relative_flux(mid) < fraction ? lo : hi) = mid;
     }
     return 0.5 * (lo + hi);
+  }
+
+  /// Time-harmonic flux linkage of the winding per ampere [H] at `frequency`: in the cylinder
+  /// H = H0 J0(k r) / J0(k a), k^2 = -j omega mu sigma, H0 = N i / length (infinite cylinder,
+  /// ideal solenoid), so its flux is 2 pi a mu H0 J1(k a) / (k J0(k a)); in the winding H falls
+  /// linearly from H0 to 0 and each turn (uniform over the winding's width) links the flux
+  /// inside it. Bessel functions of the complex argument by their power series (|k a| < 30).
+  std::complex<double> harmonic_flux_linkage(double frequency) const {
+    using C = std::complex<double>;
+    auto bessel = [](int n, C z) {  // J_n(z) = sum (-1)^m (z/2)^(2m+n) / (m! (m+n)!)
+      C term = std::pow(z / 2.0, n);
+      for (int k = 1; k <= n; ++k) term /= double(k);
+      C sum = term;
+      for (int m = 1; m < 200; ++m) {
+        term *= -(z * z / 4.0) / (double(m) * double(m + n));
+        sum += term;
+      }
+      return sum;
+    };
+    const double omega = 2.0 * std::numbers::pi * frequency, mu = kMu0 * mu_r;
+    const double h0 = turns / length;
+    C phi_cylinder = std::numbers::pi * a * a * mu * h0;  // the limit omega -> 0
+    if (omega > 0.0) {
+      const C k = std::sqrt(C(0.0, -omega * mu * sigma));
+      phi_cylinder =
+          2.0 * std::numbers::pi * a * mu * h0 * bessel(1, k * a) / (k * bessel(0, k * a));
+    }
+    // Winding: Phi(rho) - Phi_cyl = mu0 h0 / w integral_a^rho (a + w - r) 2 pi r dr, averaged
+    // over rho in [a, a + w] (closed form of the double integral).
+    const double w = winding, b = a + w;
+    // antiderivative in rho of integral_a^rho (b - r) r dr
+    auto inner_integral = [&](double rho) {
+      return b * (rho * rho * rho / 6.0 - a * a * rho / 2.0) -
+             (rho * rho * rho * rho / 12.0 - a * a * a * rho / 3.0);
+    };
+    const double winding_flux =
+        kMu0 * h0 / w * 2.0 * std::numbers::pi * (inner_integral(b) - inner_integral(a)) / w;
+    return turns * (phi_cylinder + winding_flux);
   }
 
   /// Problem of regions {cylinder, winding}; `bh` non-empty makes the cylinder nonlinear.

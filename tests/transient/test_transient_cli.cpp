@@ -93,3 +93,25 @@ TEST(TransientCli, BadInputExitsWithTwo) {
 }
 
 }  // namespace
+
+namespace {
+
+// A time step that cannot converge: one Newton iteration for a single 0.2 s step of a
+// saturating 12 V step (a nonlinear B-H curve is not solved by one Newton step) must stop the
+// run with exit 3, the message naming the step's time span, and nothing on stdout.
+TEST(TransientCli, NonConvergedTimeStepExitsWithThreeNamingTheTime) {
+  std::string out;
+  const std::string valve = kCases + "annular_valve.toml";
+  EXPECT_EQ(run_cli(valve + " --voltage 12 --duration 0.2 --steps 1 --newton-iterations 1 --json",
+                    out, true),
+            3)
+      << out;
+  EXPECT_NE(out.find("t = 0 s to 0.2 s did not converge"), std::string::npos) << out;
+  EXPECT_EQ(out.find('{'), std::string::npos) << out;  // no JSON printed
+  // Bad value of the option: exit 2 naming it.
+  EXPECT_EQ(run_cli(valve + " --voltage 12 --duration 0.2 --newton-iterations 0", out, true), 2)
+      << out;
+  EXPECT_NE(out.find("--newton-iterations"), std::string::npos) << out;
+}
+
+}  // namespace

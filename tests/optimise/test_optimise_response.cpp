@@ -1,0 +1,95 @@
+// The response_time quantity (t90 of the gaps' mean |B| after a voltage step on and off, eddy
+// currents included, from the transient solver) and a short optimisation constrained by it, on
+// the coarse annular valve (optimise_fixture.hpp).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "optimise/optimise_evaluate.hpp"
+#include "optimise/optimise_spec.hpp"
+#include "optimise_fixture.hpp"
+
+namespace {
+
+using namespace rheomag;
+using optimise::Quantity;
+using optimise_fixture::make_case;
+
+std::string optimise_table(const std::string& extra) {
+  return "[optimise]\nflow = 6.91e-6\n" + extra +
+         "[[optimise.variable]]\nkey = \"geometry.pole_length\"\nlower = 3.0\nupper = 8.0\n";
+}
+
+// Every region of the annular template slotted with factor 0: no eddy current anywhere.
+const std::string kNoEddyCurrents = [] {
+  std::string out = "[transient]\n";
+  for (const char* name :
+       {"core", "bobbin", "bobbin_cover", "gap_top", "gap_bottom", "channel", "disk"})
+    out += "[[transient.region]]\nname = \"" + std::string(name) +
+           "\"\nmodel = \"slotted\"\nfactor = 0\n";
+  return out;
+}();
+
+// Reference: without eddy currents and on the linear start of the B-H curve (final current
+// 0.05 A) the gap field is proportional to the coil current, which rises as 1 - exp(-t R / L):
+// t90 = ln(10) L / R on and off, L the secant inductance at 0.05 A. Tolerance 1 % (100 midpoint
+// steps over 5 L/R and linear interpolation of t90). With the steel's eddy currents (as drawn)
+// the gaps lag the current: response_time must exceed it by more than 10 % (measured in the
+// print; docs/transient.md's table has 88 -> 166 ms for the full valve).
+TEST(OptimiseResponseTime, IsTheRlRiseWithoutEddyCurrentsAndSlowerWithThem) {
+  const auto probe = make_case(optimise_table("current = 0.05\n"));
+  optimise::OptimiseEvaluator p(probe, optimise::read_optimise_spec(probe));
+  const auto q0 = p.evaluate({5.0});
+  const double r = q0[Quantity::resistance], l = q0[Quantity::inductance];
+  const double linear = std::log(10.0) * l / r;
+  auto response = [&](const std::string& transient) {
+    const auto c =
+        make_case(optimise_table("current = 0.05\nsupply_voltage = " + std::to_string(0.05 * r) +
+                                 "\n[[optimise.constraint]]\nquantity = "
+                                 "\"response_time\"\nmax = 10.0\n") +
+                  transient);
+    optimise::OptimiseEvaluator e(c, optimise::read_optimise_spec(c));
+    return e.evaluate({5.0})[Quantity::response_time];
+  };
+  const double without = response(kNoEddyCurrents), with = response("");
+  std::printf("response time: ln(10) L/R %.5g s; no eddy currents %.5g s; as drawn %.5g s\n",
+              linear, without, with);
+  EXPECT_NEAR(without / linear, 1.0, 0.01);
+  EXPECT_GT(with, 1.1 * linear);
+}
+
+// A short optimisation (dp_on maximised over the pole length) with response_time <= 90 % of the
+// initial design's: the written optimum, re-evaluated from its case file, respects it within the
+// feasibility tolerance (0.1 %).
+TEST(OptimiseResponseTime, ShortRunRespectsTheConstraint) {
+  const std::string base = optimise_table(
+      "objective = \"dp_on\"\nsense = \"maximise\"\n"
+      "current = 1.0\nsupply_voltage = 4.8\n"
+      "max_iterations = 6\n");
+  const auto probe = make_case(base +
+                               "[[optimise.constraint]]\nquantity = \"response_time\"\n"
+                               "max = 10.0\n");
+  optimise::OptimiseEvaluator p(probe, optimise::read_optimise_spec(probe));
+  const double initial = p.evaluate({5.0})[Quantity::response_time];
+  const double limit = 0.9 * initial;
+  const auto c = make_case(base + "[[optimise.constraint]]\nquantity = \"response_time\"\nmax = " +
+                           std::to_string(limit) + "\n");
+  const optimise_fixture::TempDir dir("response");
+  const auto result = optimise_fixture::run(c, dir);
+  std::printf(
+      "response time: initial %.5g s, limit %.5g s, optimum %.5g s at pole length %.4g mm "
+      "(%d FE solves)\n",
+      initial, limit, result.optimal.quantities[Quantity::response_time], result.optimal.x[0],
+      result.fe_solves);
+  ASSERT_TRUE(result.optimal.feasible) << optimise::format_summary(result);
+  const auto reloaded = cases::load_case(result.case_file);
+  const auto spec = optimise::read_optimise_spec(reloaded);
+  optimise::OptimiseEvaluator check(reloaded, spec);
+  const double value = check.evaluate({spec.variables[0].initial})[Quantity::response_time];
+  EXPECT_LE(value, limit * (1.0 + optimise::kFeasibilityTolerance));
+}
+
+}  // namespace
