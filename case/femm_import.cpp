@@ -835,7 +835,7 @@ Problem parse_femm(std::string_view text, const std::string& source) {
     // circle, joined to it by a periodic pair. The planar map is conformal: the field equation
     // and the energy density keep their form, and FEMM's planar solver treats the region as any
     // other. Axisymmetric external regions scale the permeability with position.
-    if (l.external != 0 && file.axisymmetric)
+    if ((l.external & 1) != 0 && file.axisymmetric)
       fail(l.line,
            "block label in an axisymmetric external region (Kelvin transformation, the "
            "permeability varies with position) is not supported; use a mixed (asymptotic) "
@@ -876,6 +876,10 @@ Problem parse_femm(std::string_view text, const std::string& source) {
                            "conductor; use a series circuit for a winding");
       }
     }
+    // FEMM's default label (flag bit 2) gives its block to every area without a label; it may
+    // lie outside the geometry.
+    if ((l.external & 2) != 0)
+      problem.geometry.default_region = static_cast<int>(problem.geometry.regions.size());
     seed.name = block.name;
     if (name_count[block.name] > 1) seed.name += "_" + std::to_string(++name_seen[block.name]);
     seed.mesh_size = l.size > 0 ? femm_mesh_size_to_edge(l.size * file.unit) : 0.0;
