@@ -32,8 +32,32 @@ std::string boundary_name(const cases::Problem& problem, int marker) {
 Path boundary_path(const mesh::Mesh& mesh, const cases::Problem& problem, int marker) {
   std::map<int, std::vector<int>> edges_of_node;  // vertex node -> boundary edges
   std::vector<const mesh::BoundaryEdge*> edges;
+  // The edge's mesh edges by geometry, not by their marker: where boundary segments meet in a
+  // straight line the marker of the piece at the junction may be the neighbour's.
+  std::vector<std::pair<mesh::Point, mesh::Point>> pieces;
+  for (const mesh::Segment& seg : problem.geometry.segments)
+    if (seg.boundary == marker)
+      pieces.push_back({problem.geometry.points[seg.a], problem.geometry.points[seg.b]});
+  auto on_piece = [&](int node, const std::pair<mesh::Point, mesh::Point>& piece) {
+    const mesh::Point& p = mesh.nodes[node];
+    const double dr = piece.second.r - piece.first.r, dz = piece.second.z - piece.first.z;
+    const double length2 = dr * dr + dz * dz;
+    const double t = ((p.r - piece.first.r) * dr + (p.z - piece.first.z) * dz) / length2;
+    const double cross = (p.z - piece.first.z) * dr - (p.r - piece.first.r) * dz;
+    return t >= -1e-9 && t <= 1 + 1e-9 && std::abs(cross) <= 1e-9 * length2;
+  };
+  auto on_edge = [&](const mesh::BoundaryEdge& e) {
+    if (pieces.empty()) return e.boundary == marker;
+    if (e.boundary < 0) return false;
+    const auto kind = problem.boundaries[e.boundary].kind;
+    if (kind != cases::BoundaryKind::periodic && kind != cases::BoundaryKind::antiperiodic)
+      return false;
+    return std::any_of(pieces.begin(), pieces.end(), [&](const auto& piece) {
+      return on_piece(e.nodes[0], piece) && on_piece(e.nodes[1], piece);
+    });
+  };
   for (const mesh::BoundaryEdge& e : mesh.boundary_edges) {
-    if (e.boundary != marker) continue;
+    if (!on_edge(e)) continue;
     edges_of_node[e.nodes[0]].push_back(static_cast<int>(edges.size()));
     edges_of_node[e.nodes[1]].push_back(static_cast<int>(edges.size()));
     edges.push_back(&e);
