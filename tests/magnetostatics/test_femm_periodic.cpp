@@ -272,3 +272,18 @@ TEST(FemmPeriodic, CliRefusesMismatchedPairWithExitTwo) {
   std::filesystem::remove(model);
   std::filesystem::remove(err);
 }
+
+// FEMM's default block label (flag column bit 2) fills every area without a label, and may lie
+// outside the geometry (xfemm's femmcli_antiperiodicBC_flux.fem has one): the strip with its air
+// label replaced by a default air label far outside solves to the same energy.
+TEST(FemmPeriodic, DefaultLabelFillsUnlabelledAreas) {
+  const SolveResult labelled = solve_text(strip(P, 4).str());
+  FemText f = strip(P, 4);
+  f.labels.back() = "1 1 1 0.0015 0 0 0 1 2";  // air, default, at (1, 1) m: outside
+  const SolveResult by_default = solve_text(f.str());
+  EXPECT_NEAR(by_default.results.energy, labelled.results.energy, 1e-9 * labelled.results.energy);
+  FemText plain = strip(P, 4);
+  plain.labels.back() = "1 1 1 0.0015 0 0 0 1 0";  // the same label without the default bit
+  EXPECT_THAT(error_of(plain.str()), ::testing::IsEmpty());  // reads, ...
+  EXPECT_THROW(solve_text(plain.str()), InputError);         // ... but lies outside every area
+}
