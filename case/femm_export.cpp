@@ -146,6 +146,13 @@ std::string write_femm(const Problem& problem, const mesh::MeshOptions& mesh_opt
                        " turns; a .fem holds whole turns only");
   }
 
+  // rheomag writes arcs as chords, so an (anti)periodic edge would become several FEMM segments,
+  // which FEMM refuses (it pairs exactly two segments or two arcs).
+  for (const BoundaryCondition& b : problem.boundaries)
+    if (b.kind == BoundaryKind::periodic || b.kind == BoundaryKind::antiperiodic)
+      throw InputError(g.source + ": boundary '" + b.name +
+                       "' is (anti)periodic; export writes edges as straight pieces, which "
+                       "FEMM cannot pair, so (anti)periodic models are not exported");
   mesh::MeshOptions options = mesh_options;
   options.order = 1;
   options.min_gap_elements = problem.min_gap_elements;

@@ -536,6 +536,106 @@ Material femm_material(const FemBlock& block, const std::string& source, const F
 
 }  // namespace
 
+/// Edge conditions of (anti)periodic properties: FEMM pairs the two edges (two segments or two
+/// arcs, never more) that carry one periodic (BdryType 4) or antiperiodic (5) property (the
+/// orientation is the solver's: BoundaryCondition::partner); both edges get the finer of their two
+/// subdivisions. The first edge keeps the property's condition, the second gets its own,
+/// partnered with it. Entries for edges without such a property stay -1.
+struct PeriodicEdges {
+  std::vector<int> segment_condition, arc_condition;  // problem.boundaries index or -1
+  std::vector<double> segment_max_length;             // FEMM units, <= 0 = none
+  std::vector<double> arc_max_degrees;
+};
+
+PeriodicEdges pair_periodic_edges(const FemFile& file, Problem& problem, FemReader& reader) {
+  PeriodicEdges out;
+  out.segment_condition.assign(file.segments.size(), -1);
+  out.arc_condition.assign(file.arcs.size(), -1);
+  for (const FemSegment& s : file.segments) out.segment_max_length.push_back(s.max_length);
+  for (const FemArc& a : file.arcs) out.arc_max_degrees.push_back(a.max_side_degrees);
+  const int count = static_cast<int>(file.boundaries.size());
+  auto periodic = [&](int marker) {
+    return marker >= 1 && marker <= count &&
+           (file.boundaries[marker - 1].type == 4 || file.boundaries[marker - 1].type == 5);
+  };
+  struct Use {
+    bool arc;
+    int index, line;
+  };
+  std::vector<std::vector<Use>> uses(file.boundaries.size());
+  for (std::size_t i = 0; i < file.segments.size(); ++i)
+    if (periodic(file.segments[i].marker))
+      uses[file.segments[i].marker - 1].push_back(
+          {false, static_cast<int>(i), file.segments[i].line});
+  for (std::size_t i = 0; i < file.arcs.size(); ++i)
+    if (periodic(file.arcs[i].marker))
+      uses[file.arcs[i].marker - 1].push_back({true, static_cast<int>(i), file.arcs[i].line});
+  const auto& points = file.points;
+  auto valid_point = [&](int n) { return n >= 0 && n < static_cast<int>(points.size()); };
+  for (int b = 0; b < count; ++b) {
+    const std::vector<Use>& use = uses[b];
+    if (use.empty()) continue;  // an unused property is harmless
+    const FemBoundary& bdry = file.boundaries[b];
+    const std::string name = std::string(bdry.type == 4 ? "periodic" : "antiperiodic") +
+                             " boundary '" + bdry.name + "' (BdryType " +
+                             std::to_string(bdry.type) + ", defined at line " +
+                             std::to_string(bdry.line) + ")";
+    if (use.size() != 2) {
+      std::string lines;
+      for (const Use& u : use) lines += (lines.empty() ? "" : ", ") + std::to_string(u.line);
+      reader.fail(use.back().line, name + " is used by " + std::to_string(use.size()) +
+                                       " edge(s) (lines " + lines +
+                                       "); it must pair exactly two edges, two segments or two "
+                                       "arcs, as in FEMM: give each pair its own property");
+    }
+    if (use[0].arc != use[1].arc)
+      reader.fail(use[1].line, name +
+                                   " pairs a segment with an arc; it must pair two segments "
+                                   "or two arcs, as in FEMM");
+    if (!use[0].arc) {
+      const FemSegment& s0 = file.segments[use[0].index];
+      const FemSegment& s1 = file.segments[use[1].index];
+      if (!valid_point(s0.n0) || !valid_point(s0.n1) || !valid_point(s1.n0) || !valid_point(s1.n1))
+        continue;  // the segment loop names the bad point
+      auto length = [&](const FemSegment& s) {
+        return std::hypot(points[s.n1].first.r - points[s.n0].first.r,
+                          points[s.n1].first.z - points[s.n0].first.z);
+      };
+      const double l0 = length(s0), l1 = length(s1);
+      if (std::abs(l0 - l1) > 1e-6 * std::max(l0, l1))
+        reader.fail(use[1].line, name + " pairs segments of different lengths (" +
+                                     format_number(l0) + " at line " + std::to_string(s0.line) +
+                                     ", " + format_number(l1) +
+                                     " in the file's length unit); the paired edges must have "
+                                     "the same length");
+      double size = std::min(s0.max_length > 0 ? s0.max_length : s1.max_length,
+                             s1.max_length > 0 ? s1.max_length : s0.max_length);
+      out.segment_max_length[use[0].index] = out.segment_max_length[use[1].index] = size;
+    } else {
+      const FemArc& a0 = file.arcs[use[0].index];
+      const FemArc& a1 = file.arcs[use[1].index];
+      if (!valid_point(a0.n0) || !valid_point(a0.n1) || !valid_point(a1.n0) || !valid_point(a1.n1))
+        continue;
+      if (std::abs(a0.degrees - a1.degrees) > 1e-6)
+        reader.fail(use[1].line, name + " pairs arcs of different angles (" +
+                                     format_number(a0.degrees) + " deg at line " +
+                                     std::to_string(a0.line) + ", " + format_number(a1.degrees) +
+                                     " deg); the paired arcs must span the same angle");
+      out.arc_max_degrees[use[0].index] = out.arc_max_degrees[use[1].index] =
+          std::min(a0.max_side_degrees, a1.max_side_degrees);
+    }
+    BoundaryCondition& first = problem.boundaries[b];
+    first.kind = bdry.type == 4 ? BoundaryKind::periodic : BoundaryKind::antiperiodic;
+    BoundaryCondition second = first;
+    second.partner = b;
+    first.partner = static_cast<int>(problem.boundaries.size());
+    problem.boundaries.push_back(second);
+    (use[0].arc ? out.arc_condition : out.segment_condition)[use[0].index] = b;
+    (use[1].arc ? out.arc_condition : out.segment_condition)[use[1].index] = first.partner;
+  }
+  return out;
+}
+
 Problem parse_femm(std::string_view text, const std::string& source) {
   FemReader reader(text, source);
   const FemFile file = read_file(text, reader);
@@ -599,11 +699,7 @@ Problem parse_femm(std::string_view text, const std::string& source) {
                         "a mixed (asymptotic) boundary or rheomag's automatic open boundary");
       case 4:
       case 5:
-        reader.fail(line, name + ": " + (b.type == 4 ? "periodic" : "antiperiodic") +
-                              " boundaries (BdryType " + std::to_string(b.type) +
-                              ") are not supported: they need matching nodes on the paired "
-                              "edges, which rheomag's mesher does not generate; model the "
-                              "full geometry");
+        break;  // paired by pair_periodic_edges
       case 6:
       case 7:
         reader.fail(line, name + ": " + (b.type == 6 ? "periodic" : "antiperiodic") +
@@ -615,6 +711,8 @@ Problem parse_femm(std::string_view text, const std::string& source) {
     }
     return marker - 1;
   };
+
+  const PeriodicEdges periodic = pair_periodic_edges(file, problem, reader);
 
   // Points.
   for (std::size_t i = 0; i < file.points.size(); ++i) {
@@ -650,7 +748,8 @@ Problem parse_femm(std::string_view text, const std::string& source) {
                      std::to_string(point_count - 1) + ")");
   };
 
-  for (const FemSegment& s : file.segments) {
+  for (std::size_t i = 0; i < file.segments.size(); ++i) {
+    const FemSegment& s = file.segments[i];
     check_point(s.n0, s.line);
     check_point(s.n1, s.line);
     if (s.n0 == s.n1) fail(s.line, "segment joins point " + std::to_string(s.n0) + " to itself");
@@ -658,24 +757,29 @@ Problem parse_femm(std::string_view text, const std::string& source) {
     segment.a = s.n0;
     segment.b = s.n1;
     segment.boundary = check_boundary_use(s.marker, s.line);
-    segment.max_length = s.max_length > 0 ? s.max_length * file.unit : 0.0;
+    if (periodic.segment_condition[i] >= 0) segment.boundary = periodic.segment_condition[i];
+    const double max_length = periodic.segment_max_length[i];
+    segment.max_length = max_length > 0 ? max_length * file.unit : 0.0;
     problem.geometry.segments.push_back(segment);
   }
-  for (const FemArc& a : file.arcs) {
+  for (std::size_t i = 0; i < file.arcs.size(); ++i) {
+    const FemArc& a = file.arcs[i];
     check_point(a.n0, a.line);
     check_point(a.n1, a.line);
     if (a.n0 == a.n1)
       fail(a.line, "arc segment joins point " + std::to_string(a.n0) + " to itself");
     if (!(a.degrees > 0.0 && a.degrees <= 180.0))
       fail(a.line, "arc angle must be in (0, 180] degrees, got " + format_number(a.degrees));
-    if (!(a.max_side_degrees >= 0.01))
+    if (!(periodic.arc_max_degrees[i] >= 0.01))
       fail(a.line,
            "arc maximum segment angle must be at least 0.01 degrees (FEMM's minimum), got " +
-               format_number(a.max_side_degrees));
-    const int boundary = check_boundary_use(a.marker, a.line);
+               format_number(periodic.arc_max_degrees[i]) +
+               (periodic.arc_condition[i] >= 0 ? " (the finer of the two paired arcs)" : ""));
+    int boundary = check_boundary_use(a.marker, a.line);
+    if (periodic.arc_condition[i] >= 0) boundary = periodic.arc_condition[i];
     std::vector<mesh::Point> pieces;
     append_arc(pieces, problem.geometry.points[a.n0], problem.geometry.points[a.n1], a.degrees,
-               a.max_side_degrees);
+               periodic.arc_max_degrees[i]);
     int previous = a.n0;
     for (std::size_t k = 0; k < pieces.size(); ++k) {
       int current = a.n1;
@@ -727,10 +831,15 @@ Problem parse_femm(std::string_view text, const std::string& source) {
       problem.regions.push_back(data);
       continue;
     }
-    if (l.external != 0)
+    // FEMM's external region (Kelvin transformation) is a disk standing for the outside of a
+    // circle, joined to it by a periodic pair. The planar map is conformal: the field equation
+    // and the energy density keep their form, and FEMM's planar solver treats the region as any
+    // other. Axisymmetric external regions scale the permeability with position.
+    if ((l.external & 1) != 0 && file.axisymmetric)
       fail(l.line,
-           "block label in an external region (Kelvin transformation) is not supported; "
-           "rheomag provides its own open boundary for .toml cases");
+           "block label in an axisymmetric external region (Kelvin transformation, the "
+           "permeability varies with position) is not supported; use a mixed (asymptotic) "
+           "boundary or rheomag's automatic open boundary");
     const FemBlock& block = file.blocks[l.block - 1];
     auto found = material_of_block.find(l.block - 1);
     if (found == material_of_block.end()) {
@@ -767,6 +876,10 @@ Problem parse_femm(std::string_view text, const std::string& source) {
                            "conductor; use a series circuit for a winding");
       }
     }
+    // FEMM's default label (flag bit 2) gives its block to every area without a label; it may
+    // lie outside the geometry.
+    if ((l.external & 2) != 0)
+      problem.geometry.default_region = static_cast<int>(problem.geometry.regions.size());
     seed.name = block.name;
     if (name_count[block.name] > 1) seed.name += "_" + std::to_string(++name_seen[block.name]);
     seed.mesh_size = l.size > 0 ? femm_mesh_size_to_edge(l.size * file.unit) : 0.0;

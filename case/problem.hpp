@@ -38,6 +38,8 @@ struct Circuit {
 enum class BoundaryKind {
   prescribed_a,  ///< Dirichlet A = value
   mixed,         ///< Robin: nu0 dA/dn + c0 A = c1 (FEMM "mixed")
+  periodic,      ///< A on this edge equals A on the partner edge (FEMM BdryType 4)
+  antiperiodic,  ///< A on this edge equals -A on the partner edge (FEMM BdryType 5)
 };
 
 /// A boundary condition referenced by Segment::boundary.
@@ -47,6 +49,11 @@ struct BoundaryCondition {
   double a_value = 0.0;  ///< prescribed A [Wb/m]
   double c0 = 0.0;       ///< mixed: coefficient [1/(H)] as in FEMM (A/(Wb) per m^2)
   double c1 = 0.0;       ///< mixed: constant term
+  /// (Anti)periodic: index of the paired boundary condition (the other edge), -1 otherwise.
+  /// Each edge of a pair has its own condition; the one with the lower index is the master.
+  /// As in FEMM, both edges are followed with the meshed domain on their left, and the start of
+  /// the first pairs with the end of the second (a translation or a rotation of the domain).
+  int partner = -1;
 };
 
 /// Direction of magnetisation m of a permanent-magnet region, measured from the r (x) axis:

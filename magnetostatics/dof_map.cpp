@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "magnetostatics/periodic.hpp"
 
 namespace rheomag::magnetostatics {
 namespace {
@@ -71,11 +72,12 @@ DofMap build_dof_map(const mesh::Mesh& mesh, const cases::Problem& problem) {
       }
     }
   }
+  const PeriodicConstraints periodic = periodic_constraints(mesh, problem, fixed);
   // Planar A is determined up to a constant. (Axisymmetric A_phi up to C/r, which the discrete
   // space does not contain: an axisymmetric model off the axis without any condition is refused
-  // by the solver instead.)
+  // by the solver instead.) An antiperiodic pair excludes the constant.
   const bool determined =
-      problem.symmetry == cases::Symmetry::axisymmetric ||
+      problem.symmetry == cases::Symmetry::axisymmetric || periodic.antiperiodic ||
       std::find(fixed.begin(), fixed.end(), true) != fixed.end() ||
       std::any_of(mesh.boundary_edges.begin(), mesh.boundary_edges.end(),
                   [&](const mesh::BoundaryEdge& e) {
@@ -83,17 +85,57 @@ DofMap build_dof_map(const mesh::Mesh& mesh, const cases::Problem& problem) {
                            problem.boundaries[e.boundary].kind == cases::BoundaryKind::mixed &&
                            problem.boundaries[e.boundary].c0 > 0.0;
                   });
-  if (!determined && count > 0) {
-    map.gauge_node = 0;
-    fixed[0] = true;
+  if (!determined) {
+    for (std::size_t i = 0; i < count && map.gauge_node < 0; ++i)
+      if (!periodic.slave[i]) map.gauge_node = static_cast<int>(i);
+    if (map.gauge_node >= 0) fixed[map.gauge_node] = true;
   }
+  map.antiperiodic = periodic.antiperiodic;
   map.dof_of_node.assign(count, -1);
   for (std::size_t i = 0; i < count; ++i) {
     if (fixed[i]) continue;
     map.dof_of_node[i] = static_cast<int>(map.node_of_dof.size());
     map.node_of_dof.push_back(static_cast<int>(i));
   }
+  if (!periodic.any()) return map;
+  // Free dofs -> reduced unknowns: the non-slave free dofs; slaves are combinations of them and
+  // of prescribed values.
+  const int free = map.free_count();
+  std::vector<int> reduced_of_free(free, -1);
+  for (int d = 0; d < free; ++d) {
+    if (periodic.slave[map.node_of_dof[d]]) continue;
+    reduced_of_free[d] = static_cast<int>(map.free_of_reduced.size());
+    map.free_of_reduced.push_back(d);
+  }
+  std::vector<Eigen::Triplet<double>> entries;
+  map.reduction_offset = Eigen::VectorXd::Zero(free);
+  for (int d = 0; d < free; ++d) {
+    const int node = map.node_of_dof[d];
+    if (!periodic.slave[node]) {
+      entries.emplace_back(d, reduced_of_free[d], 1.0);
+      continue;
+    }
+    for (const NodeTerm& term : periodic.terms[node]) {
+      const int master = map.dof_of_node[term.node];
+      if (master < 0)
+        map.reduction_offset[d] += term.weight * map.fixed_value[term.node];
+      else
+        entries.emplace_back(d, reduced_of_free[master], term.weight);
+    }
+  }
+  map.reduction.resize(free, static_cast<Eigen::Index>(map.free_of_reduced.size()));
+  map.reduction.setFromTriplets(entries.begin(), entries.end());
   return map;
+}
+
+Eigen::VectorXd DofMap::expand(const Eigen::VectorXd& reduced) const {
+  if (!constrained()) return reduced;
+  return reduction * reduced + reduction_offset;
+}
+
+Eigen::VectorXd DofMap::reduce(const Eigen::VectorXd& free) const {
+  if (!constrained()) return free;
+  return reduction.transpose() * free;
 }
 
 }  // namespace rheomag::magnetostatics

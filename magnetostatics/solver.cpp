@@ -24,16 +24,19 @@ class MagnetostaticSolver::System : public NonlinearSystem {
       r = remembered_r_;  // Newton's first residual is often the one solve_with evaluated
       return r.norm();
     }
-    solver_.assembler_->assemble(solver_.free_to_nodes(x), r, nullptr);
+    solver_.assembler_->assemble(solver_.reduced_to_nodes(x), r, nullptr);
+    if (solver_.dofs_.constrained()) r = solver_.dofs_.reduce(r);
     r -= source_;
     return r.norm();
   }
   /// Stored energy plus boundary terms minus the sources' work: R = grad E.
   double energy(const Eigen::VectorXd& x) override {
-    return solver_.assembler_->energy(solver_.free_to_nodes(x)) - source_.dot(x);
+    return solver_.assembler_->energy(solver_.reduced_to_nodes(x)) - source_.dot(x);
   }
   int correct_locally(Eigen::VectorXd& x, Eigen::VectorXd& r, double& norm) override {
-    if (solver_.linear_) return 0;  // one Newton step solves a linear problem everywhere
+    // One Newton step solves a linear problem everywhere; the patches of local corrections
+    // do not follow periodic pairs.
+    if (solver_.linear_ || solver_.dofs_.constrained()) return 0;
     Eigen::VectorXd a = solver_.free_to_nodes(x);
     const int steps = magnetostatics::correct_locally(*solver_.assembler_, solver_.dofs_, source_,
                                                       solver_.options_.newton, a, r, norm);
@@ -48,7 +51,7 @@ class MagnetostaticSolver::System : public NonlinearSystem {
     remembered_r_ = r;
   }
   void factorize_jacobian(const Eigen::VectorXd& x) override {
-    solver_.prepare_jacobian(solver_.free_to_nodes(x));
+    solver_.prepare_jacobian(solver_.reduced_to_nodes(x));
   }
   Eigen::VectorXd solve_jacobian(const Eigen::VectorXd& rhs, double tolerance) override {
     return solver_.solve_jacobian(rhs, tolerance);
@@ -84,7 +87,7 @@ MagnetostaticSolver::MagnetostaticSolver(cases::Problem problem, mesh::Mesh mesh
                problem_.boundaries[e.boundary].kind == cases::BoundaryKind::mixed &&
                problem_.boundaries[e.boundary].c0 > 0.0;
       });
-  if (dofs_.free_count() == static_cast<int>(mesh_.nodes.size()) && !robin) {
+  if (dofs_.free_count() == static_cast<int>(mesh_.nodes.size()) && !robin && !dofs_.antiperiodic) {
     // Only axisymmetric models get here (planar ones have their gauge pinned): A_phi = C / r has
     // no field, so A is not determined.
     throw InputError(problem_.geometry.source +
@@ -107,15 +110,48 @@ MagnetostaticSolver::MagnetostaticSolver(cases::Problem problem, mesh::Mesh mesh
                                                 ? 2.0 * std::numbers::pi * r
                                                 : problem_.depth);
   }
-  tangent_ = assembler_->pattern();
-  if (dofs_.free_count() > 0) {
+  if (dofs_.constrained()) {
+    free_tangent_ = assembler_->pattern();
+    // The reduced pattern: T^T K T of a K with every stored entry 1 (no cancellation).
+    SparseMatrix ones = free_tangent_;
+    std::fill(ones.valuePtr(), ones.valuePtr() + ones.nonZeros(), 1.0);
+    tangent_ = reduce_tangent(ones);
+    std::fill(tangent_.valuePtr(), tangent_.valuePtr() + tangent_.nonZeros(), 0.0);
+  } else {
+    tangent_ = assembler_->pattern();
+  }
+  if (dofs_.reduced_count() > 0) {
     const SerialOpenMp serial;
     cholesky_.analyzePattern(tangent_);
     if (cholesky_.info() != Eigen::Success) {
       throw ConvergenceError("CHOLMOD symbolic analysis failed for " +
-                             std::to_string(dofs_.free_count()) + " unknowns");
+                             std::to_string(dofs_.reduced_count()) + " unknowns");
     }
   }
+}
+
+SparseMatrix MagnetostaticSolver::reduce_tangent(const SparseMatrix& lower) const {
+  const SparseMatrix full = lower.selfadjointView<Eigen::Lower>();
+  const SparseMatrix reduced = dofs_.reduction.transpose() * full * dofs_.reduction;
+  return reduced.triangularView<Eigen::Lower>();
+}
+
+Eigen::VectorXd MagnetostaticSolver::reduced_to_nodes(const Eigen::VectorXd& x) const {
+  return free_to_nodes(dofs_.expand(x));
+}
+
+Eigen::VectorXd MagnetostaticSolver::nodes_to_reduced(const Eigen::VectorXd& a) const {
+  if (!dofs_.constrained()) return nodes_to_free(a);
+  Eigen::VectorXd x(dofs_.reduced_count());
+  for (int k = 0; k < dofs_.reduced_count(); ++k)
+    x[k] = a[dofs_.node_of_dof[dofs_.free_of_reduced[k]]];
+  return x;
+}
+
+Eigen::VectorXd MagnetostaticSolver::reduced_source(const Eigen::VectorXd& nodal) const {
+  Eigen::VectorXd f(dofs_.free_count());
+  for (int d = 0; d < dofs_.free_count(); ++d) f[d] = nodal[dofs_.node_of_dof[d]];
+  return dofs_.reduce(f);
 }
 
 Eigen::VectorXd MagnetostaticSolver::free_to_nodes(const Eigen::VectorXd& x) const {
@@ -137,7 +173,15 @@ void MagnetostaticSolver::prepare_jacobian(const Eigen::VectorXd& a_nodes) {
     return;
   }
   Eigen::VectorXd r;
-  assembler_->assemble(a_nodes, r, &tangent_);
+  if (dofs_.constrained()) {
+    assembler_->assemble(a_nodes, r, &free_tangent_);
+    const SparseMatrix reduced = reduce_tangent(free_tangent_);
+    if (reduced.nonZeros() != tangent_.nonZeros())
+      throw ConvergenceError("periodic reduction changed the tangent's sparsity pattern");
+    std::copy(reduced.valuePtr(), reduced.valuePtr() + reduced.nonZeros(), tangent_.valuePtr());
+  } else {
+    assembler_->assemble(a_nodes, r, &tangent_);
+  }
   factor_current_ = false;
   // Tangent values more than kRefactorChange away from the factorised ones: far from the
   // solution the tangents differ too much (mostly at saturating corners) for a few CG iterations
@@ -155,7 +199,7 @@ void MagnetostaticSolver::factorize_tangent() {
   if (cholesky_.info() != Eigen::Success) {
     has_factor_ = false;
     throw ConvergenceError("CHOLMOD factorisation failed (tangent not positive definite, " +
-                           std::to_string(dofs_.free_count()) + " unknowns)");
+                           std::to_string(dofs_.reduced_count()) + " unknowns)");
   }
   has_factor_ = factor_current_ = true;
   factored_values_ = Eigen::Map<const Eigen::VectorXd>(tangent_.valuePtr(), tangent_.nonZeros());
@@ -228,16 +272,14 @@ Solution MagnetostaticSolver::solve_with(const std::vector<double>& currents,
   for (double current : currents) {
     if (!std::isfinite(current)) throw InputError("circuit current is not a finite number");
   }
-  const int n = dofs_.free_count();
+  const int n = dofs_.reduced_count();
   const Eigen::VectorXd nodal = nodal_source(currents);
   if (dofs_.gauge_node >= 0) check_compatible(nodal);
-  Eigen::VectorXd source(n);
-  for (int d = 0; d < n; ++d) source[d] = nodal[dofs_.node_of_dof[d]];
-  System system(*this, source);
+  System system(*this, reduced_source(nodal));
   Eigen::VectorXd x = Eigen::VectorXd::Zero(n), r;
   const double scale = system.residual(x, r);
   if (initial_guess) {
-    for (int d = 0; d < n; ++d) x[d] = (*initial_guess)[dofs_.node_of_dof[d]];
+    x = nodes_to_reduced(*initial_guess);
   } else {
     system.remember(x, r);
   }
@@ -245,16 +287,16 @@ Solution MagnetostaticSolver::solve_with(const std::vector<double>& currents,
   Solution solution;
   solution.currents = currents;
   solution.newton = newton_solve(system, x, scale, options_.newton);
-  solution.a = free_to_nodes(x);
+  solution.a = reduced_to_nodes(x);
   for (const Eigen::VectorXd& f : sources_) solution.flux_linkage.push_back(f.dot(solution.a));
   if (incremental && n > 0) {
     // dlambda_c/dI_c = F_c^T K_t^{-1} F_c with K_t the exact tangent at the solution, to 1e-12
     // relative (CG's error of F.x, r.K^-1.r, below 1e-12 F.x, or a residual below 1e-12).
     prepare_jacobian(solution.a);
     for (const Eigen::VectorXd& f : sources_) {
-      Eigen::VectorXd f_free(n);
-      for (int d = 0; d < n; ++d) f_free[d] = f[dofs_.node_of_dof[d]];
-      solution.incremental_inductance.push_back(f_free.dot(solve_jacobian(f_free, 1e-12, 1e-12)));
+      const Eigen::VectorXd f_reduced = reduced_source(f);
+      solution.incremental_inductance.push_back(
+          f_reduced.dot(solve_jacobian(f_reduced, 1e-12, 1e-12)));
     }
   }
   solution.seconds =

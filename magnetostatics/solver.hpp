@@ -115,6 +115,10 @@ class MagnetostaticSolver {
   void check_compatible(const Eigen::VectorXd& nodal) const;  // InputError if net current != 0
   void prepare_jacobian(const Eigen::VectorXd& a_nodes);
   void factorize_tangent();
+  SparseMatrix reduce_tangent(const SparseMatrix& lower) const;      // lower(T^T K T)
+  Eigen::VectorXd reduced_to_nodes(const Eigen::VectorXd& x) const;  // Newton unknowns -> nodes
+  Eigen::VectorXd nodes_to_reduced(const Eigen::VectorXd& a) const;
+  Eigen::VectorXd reduced_source(const Eigen::VectorXd& nodal) const;  // T^T (free rows)
   Eigen::VectorXd solve_jacobian(const Eigen::VectorXd& rhs, double tolerance,
                                  double functional_tolerance = 0.0);
   Eigen::VectorXd solve_factorized(const Eigen::VectorXd& rhs);
@@ -127,7 +131,8 @@ class MagnetostaticSolver {
   std::vector<Eigen::VectorXd> sources_;
   Eigen::VectorXd fixed_source_;  // all nodes
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholesky_;
-  SparseMatrix tangent_;
+  SparseMatrix tangent_;             // the matrix Newton factorises (reduced when constrained)
+  SparseMatrix free_tangent_;        // constrained: the assembled free-dof tangent
   Eigen::VectorXd factored_values_;  // values of the factorised tangent
   bool linear_ = true;
   bool factorized_linear_ = false;  // linear problem: the one factorisation stays valid

@@ -96,11 +96,15 @@ void label_regions(const Pslg& pslg, Cdt& cdt) {
     const RegionSeed& region = pslg.regions[i];
     Cdt::Face_handle f = cdt.locate(CgalPoint(region.seed.r, region.seed.z));
     const int label = f->info().region;
-    if (cdt.is_infinite(f) || label == kOutside)
+    if (cdt.is_infinite(f) || label == kOutside) {
+      // The default region needs no seed of its own (FEMM's default block label may sit
+      // anywhere): it fills the areas no seed reaches.
+      if (static_cast<int>(i) == pslg.default_region) continue;
       throw InputError(name + ": the seed point " + format_point(region.seed) + " of " +
                        region_label(pslg, static_cast<int>(i)) +
                        " lies outside every closed boundary; expected a point inside the "
                        "region (is its boundary closed?)");
+    }
     if (label >= 0)
       throw InputError(name + ": " + region_label(pslg, label) + " and " +
                        region_label(pslg, static_cast<int>(i)) +

@@ -81,6 +81,10 @@ TransientSolver::TransientSolver(magnetostatics::MagnetostaticSolver& statics,
     throw InputError(problem.geometry.source + ": eddy coefficients for " +
                      std::to_string(eddy_.sigma.size()) + " regions, the problem has " +
                      std::to_string(problem.regions.size()));
+  if (statics_.dofs().constrained())
+    throw InputError(problem.geometry.source +
+                     ": periodic or antiperiodic boundaries are not supported by the transient "
+                     "solver (magnetostatic solves only)");
   const auto& assembler = statics_.assembler();
   mass_ = assembler.region_matrix(eddy_.sigma, false);
   micro_ = assembler.region_matrix(eddy_.kappa, true);

@@ -139,11 +139,12 @@ TEST(FemmImport, UnsupportedFeaturesAreRejectedClearly) {
   EXPECT_THAT(error_of(with("<BdryType> = 0", "<BdryType> = 1")), HasSubstr("small skin depth"));
   EXPECT_THAT(error_of(with("<BdryType> = 0", "<BdryType> = 3")),
               HasSubstr("strategic dual image"));
+  // A (anti)periodic property on one edge cannot be paired (test_femm_periodic.cpp solves pairs).
   EXPECT_THAT(error_of(with("<BdryType> = 0", "<BdryType> = 4")),
-              HasSubstr("boundary 'A=0' (defined at line 16): periodic boundaries (BdryType 4) "
-                        "are not supported"));
+              HasSubstr("bad.fem:167: periodic boundary 'A=0' (BdryType 4, defined at line 16) is "
+                        "used by 1 edge(s)"));
   EXPECT_THAT(error_of(with("<BdryType> = 0", "<BdryType> = 5")),
-              HasSubstr("antiperiodic boundaries (BdryType 5)"));
+              HasSubstr("antiperiodic boundary 'A=0' (BdryType 5"));
   EXPECT_THAT(error_of(with("<BdryType> = 0", "<BdryType> = 6")),
               HasSubstr("periodic air-gap elements (BdryType 6)"));
   EXPECT_THAT(error_of(with("<BdryType> = 0", "<BdryType> = 7")),
@@ -165,7 +166,7 @@ TEST(FemmImport, UnsupportedFeaturesAreRejectedClearly) {
   EXPECT_THAT(error_of(with("<Mu_x> = 1\r\n    <Mu_y> = 1", "<Mu_x> = 1\r\n    <Mu_y> = 2")),
               HasSubstr("anisotropic"));
   EXPECT_THAT(error_of(with("60\t0\t1\t-1\t0\t0\t0\t1\t0", "60\t0\t1\t-1\t0\t0\t0\t1\t1")),
-              HasSubstr("external region (Kelvin transformation)"));
+              HasSubstr("axisymmetric external region (Kelvin transformation"));
 }
 
 TEST(FemmImport, MalformedOrTruncatedFiles) {
