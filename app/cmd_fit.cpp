@@ -3,6 +3,7 @@
 // lumped/greybox.hpp; this file maps options to them and prints the result.
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <iostream>
@@ -134,8 +135,9 @@ FitReport grey_box_report(
   for (const auto& p : fit.params) {
     if (p.fixed && fit.model == "valve-chain") continue;  // no compliance: the drive is Q itself
     report.params[p.name] = p.value;
-    report.standard_errors[p.name] =
-        p.standard_error ? nlohmann::json(*p.standard_error) : nlohmann::json(nullptr);
+    report.standard_errors[p.name] = p.standard_error && std::isfinite(*p.standard_error)
+                                         ? nlohmann::json(*p.standard_error)
+                                         : nlohmann::json(nullptr);
   }
   report.train = fit.train;
   report.train_output.assign(fit.simulated.begin() + static_cast<std::ptrdiff_t>(train.begin),
@@ -199,26 +201,26 @@ void print_text(const FitReport& r, const FitOptions& o, const SampleRange& trai
   auto line = [](const std::string& what, const Metrics& m,
                  const std::optional<StabilityVerdict>& s) {
     if (s && !s->stable) {
-      std::printf("%-34s UNSTABLE in free-run simulation: %s (no FIT reported)\n", what.c_str(),
-                  s->reason.c_str());
+      rheomag::app::print("%-34s UNSTABLE in free-run simulation: %s (no FIT reported)\n",
+                          what.c_str(), s->reason.c_str());
       return;
     }
-    std::printf("%-34s FIT %7.2f %%   RMSE %7.2f %%   RE %.4f\n", what.c_str(), m.fit_percent,
-                m.rmse_percent, m.re);
+    rheomag::app::print("%-34s FIT %7.2f %%   RMSE %7.2f %%   RE %.4f\n", what.c_str(),
+                        m.fit_percent, m.rmse_percent, m.re);
   };
-  std::printf("model %s (%s mode)\n", r.model.c_str(),
-              o.mode == EvalMode::simulation ? "simulation" : "prediction");
+  rheomag::app::print("model %s (%s mode)\n", r.model.c_str(),
+                      o.mode == EvalMode::simulation ? "simulation" : "prediction");
   line("train " + range_text(train), r.train, r.train_stability);
   if (r.validation)
     line("validation " + (val.range ? range_text(*val.range) : o.validate), *r.validation,
          r.validation_stability);
-  std::printf("parameters:\n");
+  rheomag::app::print("parameters:\n");
   for (const auto& [name, value] : r.params.items()) {
-    std::printf("  %-28s %.6g", name.c_str(), value.get<double>());
+    rheomag::app::print("  %-28s %.6g", name.c_str(), value.get<double>());
     if (r.standard_errors.is_object() && r.standard_errors.contains(name) &&
         r.standard_errors[name].is_number())
-      std::printf("  +- %.3g", r.standard_errors[name].get<double>());
-    std::printf("\n");
+      rheomag::app::print("  +- %.3g", r.standard_errors[name].get<double>());
+    rheomag::app::print("\n");
   }
 }
 
@@ -295,7 +297,7 @@ void run_fit(const FitOptions& o) {
   if (val.range) j["validation_range"] = {val.range->begin, val.range->end};
   if (val.other) j["validation_file"] = o.validate;
   j["mode"] = o.mode == EvalMode::simulation ? "simulation" : "prediction";
-  std::cout << j.dump() << std::endl;
+  rheomag::app::print_json(j);
 }
 
 const bool registered = rheomag::app::register_command([](CLI::App& root) {

@@ -47,10 +47,10 @@ nlohmann::json member_json(const FamilyMember& m) {
 }
 
 void print_members(const char* title, const std::vector<FamilyMember>& members) {
-  std::printf("%s\n  %-40s %8s %8s %8s\n", title, "recording", "field", "FIT%", "RE");
+  rheomag::app::print("%s\n  %-40s %8s %8s %8s\n", title, "recording", "field", "FIT%", "RE");
   for (const auto& m : members)
-    std::printf("  %-40s %8.3g %8.1f %8.3f\n", m.csv_path.c_str(), m.field, m.metrics.fit_percent,
-                m.metrics.re);
+    rheomag::app::print("  %-40s %8.3g %8.1f %8.3f\n", m.csv_path.c_str(), m.field,
+                        m.metrics.fit_percent, m.metrics.re);
 }
 
 void run_fit_family(const FamilyOptions& o) {
@@ -70,18 +70,18 @@ void run_fit_family(const FamilyOptions& o) {
   const FamilyFit r = fit_current_dependent(training, o.model, prediction, options);
   if (!o.report.empty()) write_family_report(o.report, r, training, prediction);
   if (!o.json) {
-    std::printf("model %s, joint fit on %zu recordings (every %d-th sample)\n", r.fit.model.c_str(),
-                training.size(), o.decimation);
+    rheomag::app::print("model %s, joint fit on %zu recordings (every %d-th sample)\n",
+                        r.fit.model.c_str(), training.size(), o.decimation);
     for (const auto& p : r.fit.params) {
-      std::printf("  %-24s %14.6g", p.name.c_str(), p.value);
+      rheomag::app::print("  %-24s %14.6g", p.name.c_str(), p.value);
       if (p.standard_error)
-        std::printf(" +- %-10.3g", *p.standard_error);
+        rheomag::app::print(" +- %-10.3g", *p.standard_error);
       else
-        std::printf("    %-10s", "");
-      std::printf(" %s%s\n", p.unit.c_str(),
-                  p.fixed      ? " (fixed)"
-                  : p.at_bound ? " (at bound)"
-                               : "");
+        rheomag::app::print("    %-10s", "");
+      rheomag::app::print(" %s%s\n", p.unit.c_str(),
+                          p.fixed      ? " (fixed)"
+                          : p.at_bound ? " (at bound)"
+                                       : "");
     }
     print_members("training recordings:", r.training);
     if (!r.predicted.empty()) print_members("predicted recordings:", r.predicted);
@@ -102,7 +102,7 @@ void run_fit_family(const FamilyOptions& o) {
   for (const auto& m : r.predicted) j["prediction"].push_back(member_json(m));
   j["decimation"] = o.decimation;
   j["mode"] = "simulation";
-  std::cout << j.dump() << std::endl;
+  rheomag::app::print_json(j);
 }
 
 const bool registered = rheomag::app::register_command([](CLI::App& root) {

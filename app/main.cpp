@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/command.hpp"
+#include "app/finite_stdout.hpp"
 #include "core/error.hpp"
 #include "lumped/recording_io.hpp"
 #include "magnetostatics/assembly.hpp"
@@ -108,14 +109,27 @@ int main(int argc, char** argv) {
   // serial; docs/performance.md, "Threads").
   if (std::getenv("OMP_NUM_THREADS") != nullptr) rheomag::magnetostatics::set_assembly_threads(0);
   rheomag::app::setup_commands(root);
+  std::string command_line = "rheomag";
+  for (int k = 1; k < argc; ++k) command_line += std::string(" ") + argv[k];
+  // Every line a command prints passes the non-finite guard (app/finite_stdout.hpp).
+  rheomag::app::GuardedStdout guarded;
   try {
     root.parse(argc, argv);
+    guarded.check(command_line);
   } catch (const CLI::ParseError& e) {
     int code = root.exit(e);
     return code == 0 ? 0 : 2;
   } catch (const rheomag::InputError& e) {
     std::cerr << "rheomag: error: " << e.what() << "\n";
     return 2;
+  } catch (const rheomag::NonFiniteOutputError& e) {
+    guarded.finish();
+    const std::string what = e.what();
+    std::cerr << "rheomag: result is not a finite number: " << what
+              << (what.find("produced by: ") == std::string::npos ? "; produced by: " + command_line
+                                                                  : std::string())
+              << "\n";
+    return 3;
   } catch (const rheomag::ConvergenceError& e) {
     std::cerr << "rheomag: solver did not converge: " << e.what() << "\n";
     return 3;

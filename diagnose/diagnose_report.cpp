@@ -10,6 +10,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/finite_output.hpp"
 
 namespace rheomag::diagnose {
 
@@ -170,7 +171,8 @@ std::string diagnosis_html(const Diagnosis& d) {
       o << "</td><td>";
       for (std::size_t j = 0; j < f.params.size(); ++j)
         o << escape(f.param_names[j]) << " = " << num(f.params[j]) << " &plusmn; "
-          << num(f.standard_errors[j], 2) << "<br>";
+          << (std::isfinite(f.standard_errors[j]) ? num(f.standard_errors[j], 2) : "unbounded")
+          << "<br>";
       o << "</td><td>" << num(f.fit_percent, 4) << " %</td><td>" << escape(f.evidence);
       if (!f.separating_measurement.empty())
         o << "<br><i>To separate: " << escape(f.separating_measurement) << "</i>";
@@ -269,7 +271,9 @@ void write_diagnosis_outputs(const Diagnosis& d, const std::string& dir) {
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError("--out " + dir + ": cannot create the folder (" + ec.message() + ")");
   const std::filesystem::path base(dir);
-  write_file_atomically(base / "diagnosis.json", diagnosis_json(d).dump(2) + "\n");
+  write_file_atomically(
+      base / "diagnosis.json",
+      finite_json_text(diagnosis_json(d), (base / "diagnosis.json").string(), 2) + "\n");
   write_file_atomically(base / "report.html", diagnosis_html(d));
   write_file_atomically(base / "traces.csv", diagnosis_traces_csv(d));
 }
