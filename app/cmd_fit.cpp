@@ -17,6 +17,7 @@
 
 #include "app/command.hpp"
 #include "core/error.hpp"
+#include "lumped/fit_model_json.hpp"
 #include "lumped/greybox.hpp"
 #include "lumped/ident_fit.hpp"
 #include "lumped/ident_plot.hpp"
@@ -48,6 +49,7 @@ struct Validation {
 /// What one fit produced, whatever the model kind.
 struct FitReport {
   std::string model;
+  nlohmann::json fitted;  ///< the fitted-model document (lumped/fit_model_json.hpp)
   nlohmann::json params = nlohmann::json::object();
   nlohmann::json standard_errors;  ///< grey-box only
   Metrics train;
@@ -102,6 +104,7 @@ FitReport fit_black_box_model(const FitOptions& o, const Recording& rec, const S
   FitReport report;
   report.model = model->name();
   for (const auto& [name, value] : model->params()) report.params[name] = value;
+  report.fitted = black_box_model_json(model->name(), model->params(), rec.meta);
   Eigen::VectorXd out;
   report.train = evaluate(*model, train_data, o.mode, &out);
   report.train_output = to_std(out);
@@ -168,8 +171,10 @@ FitReport fit_grey_box_model(const FitOptions& o, const Recording& rec, const Sa
   GreyboxOptions options;
   options.train = train;
   const GreyboxFit fit = fit_greybox(rec, o.model, options);
-  return grey_box_report(fit, rec, train, val,
-                         [&](const Recording& other) { return simulate_greybox(other, fit); });
+  FitReport report = grey_box_report(
+      fit, rec, train, val, [&](const Recording& other) { return simulate_greybox(other, fit); });
+  report.fitted = fit_model_json(fit, rec.meta);
+  return report;
 }
 
 FitReport fit_valve_chain_model(const FitOptions& o, const Recording& rec, const SampleRange& train,
@@ -178,8 +183,11 @@ FitReport fit_valve_chain_model(const FitOptions& o, const Recording& rec, const
   ValveChainFitOptions options;
   options.train = train;
   const ValveChainFit fit = fit_valve_chain(rec, options);
-  return grey_box_report(fit, rec, train, val,
-                         [&](const Recording& other) { return simulate_valve_chain(other, fit); });
+  FitReport report = grey_box_report(fit, rec, train, val, [&](const Recording& other) {
+    return simulate_valve_chain(other, fit);
+  });
+  report.fitted = fit_model_json(fit, rec.meta);
+  return report;
 }
 
 /// Metrics as JSON; an unstable free run has no meaningful metrics: nulls and the reason.
@@ -285,8 +293,8 @@ void run_fit(const FitOptions& o) {
     print_text(report, o, train, val);
     return;
   }
-  nlohmann::json j;
-  j["model"] = report.model;
+  // The fitted model itself (readable by read_fit_model_json), then how well it fits.
+  nlohmann::json j = report.fitted;
   j["params"] = report.params;
   if (report.standard_errors.is_object()) j["standard_errors"] = report.standard_errors;
   j["train"] = metrics_json(report.train, report.train_stability);
@@ -340,7 +348,9 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
                                           {"prediction", EvalMode::prediction}},
           CLI::ignore_case));
   cmd->add_flag("--json", o->json,
-                "Print one JSON object: model, params, train and validation "
+                "Print one JSON object: the fitted model (format, kind, model, rig, drive, output, "
+                "setup, parameters with units, static_map of valve-chain; readable back as a "
+                "model file, docs/fit-model-json.md), params, train and validation "
                 "({fit_percent, rmse_percent, re}), mode");
   cmd->add_option("--plot", o->plot,
                   "Write a PNG figure (measured vs model, residual) with gnuplot");

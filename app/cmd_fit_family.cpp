@@ -15,6 +15,7 @@
 #include "core/error.hpp"
 #include "lumped/current_dependent_fit.hpp"
 #include "lumped/family_report.hpp"
+#include "lumped/fit_model_json.hpp"
 #include "lumped/recording_io.hpp"
 
 namespace {
@@ -87,15 +88,8 @@ void run_fit_family(const FamilyOptions& o) {
     if (!r.predicted.empty()) print_members("predicted recordings:", r.predicted);
     return;
   }
-  nlohmann::json j;
-  j["model"] = r.fit.model;
-  j["params"] = nlohmann::json::object();
-  j["standard_errors"] = nlohmann::json::object();
-  for (const auto& p : r.fit.params) {
-    j["params"][p.name] = p.value;
-    j["standard_errors"][p.name] =
-        p.standard_error ? nlohmann::json(*p.standard_error) : nlohmann::json(nullptr);
-  }
+  // The fitted model itself (readable by read_fit_model_json), then each recording's metrics.
+  nlohmann::json j = fit_model_json(r.fit, training.front().meta);
   j["train"] = nlohmann::json::array();
   for (const auto& m : r.training) j["train"].push_back(member_json(m));
   j["prediction"] = nlohmann::json::array();
@@ -128,7 +122,8 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
                   "Write DIR/report.html: measured vs model loops of every recording, parameters "
                   "with standard errors and their field dependence, FIT per recording");
   cmd->add_flag("--json", o->json,
-                "Print one JSON object: model, params, train and prediction (arrays of {file, "
+                "Print one JSON object: the fitted model (readable back as a model file, "
+                "docs/fit-model-json.md), params, train and prediction (arrays of {file, "
                 "field, fit_percent, rmse_percent, re}), mode");
   cmd->callback([o]() { run_fit_family(*o); });
 });
