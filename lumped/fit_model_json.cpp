@@ -1,4 +1,5 @@
-// Writing and reading the fitted-model JSON (see fit_model_json.hpp).
+// Writing and reading the fitted-model JSON (see fit_model_json.hpp); running a model read back
+// is in fit_model_run.cpp, so this reader links without the fitting code (its fuzz test does).
 
 #include "lumped/fit_model_json.hpp"
 
@@ -259,6 +260,11 @@ FitModel parse_fit_model_json(std::string_view text, const std::string& file) {
   } catch (const json::parse_error& e) {
     throw InputError(file + ": not a JSON document (byte " + std::to_string(e.byte) +
                      "); expected the output of 'rheomag fit --json' or 'fit-family --json'");
+  } catch (const json::exception& e) {  // e.g. a number beyond the range of a double
+    const std::string what = e.what();
+    const std::size_t cut = what.find("] ");
+    throw InputError(file + ": not a readable JSON document: " +
+                     (cut == std::string::npos ? what : what.substr(cut + 2)));
   }
   const Field root(doc, file, "");
   if (!doc.is_object())
@@ -286,7 +292,8 @@ FitModel parse_fit_model_json(std::string_view text, const std::string& file) {
     PhenoKind k;
     if (!parse_pheno_kind(m.model, k)) {
       std::string names;
-      for (const std::string& n : greybox_model_names()) names += (names.empty() ? "" : ", ") + n;
+      for (int k = 0; k <= static_cast<int>(PhenoKind::damper); ++k)
+        names += (names.empty() ? "" : ", ") + pheno_name(static_cast<PhenoKind>(k));
       root.at("model").fail("expected a grey-box model (" + names + "), got \"" + m.model + "\"");
     }
     m.greybox = read_greybox(root, m.model);
@@ -300,14 +307,6 @@ FitModel read_fit_model_json(const std::filesystem::path& path) {
   std::ostringstream text;
   text << in.rdbuf();
   return parse_fit_model_json(text.str(), path.string());
-}
-
-std::vector<double> simulate_fit_model(const Recording& rec, const FitModel& model) {
-  if (rec.meta.output != model.output)
-    throw InputError(rec.csv_path + ": output column '" + rec.meta.output + "', the " +
-                     model.model + " model was fitted to '" + model.output + "'");
-  if (model.valve_chain) return simulate_valve_chain(rec, *model.valve_chain);
-  return simulate_greybox(rec, *model.greybox);
 }
 
 }  // namespace rheomag::lumped

@@ -163,6 +163,8 @@ TEST(FitModelJson, MalformedDocumentsNamed) {
   EXPECT_EQ(refusal("{\"format\": "),
             "model.json: not a JSON document (byte 12); expected the output of 'rheomag fit "
             "--json' or 'fit-family --json'");
+  EXPECT_EQ(refusal("{\"format\": 1e999}"),  // found by lumped.ReaderFuzz.FitModelJson
+            "model.json: not a readable JSON document: number overflow parsing '1e999'");
   EXPECT_EQ(refusal("[1, 2]"),
             "model.json: expected a JSON object (the output of 'rheomag fit --json')");
   EXPECT_EQ(with([](auto& j) { j.erase("format"); }), "model.json: key 'format' is missing");
