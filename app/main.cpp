@@ -3,6 +3,8 @@
 #include <dlfcn.h>
 
 #include <glog/logging.h>
+#include <vtkLogger.h>
+#include <vtkObject.h>
 #include <CLI/CLI.hpp>
 #include <cstdlib>
 #include <iostream>
@@ -88,10 +90,14 @@ void prefer_single_threaded_blas() {
     set(1);
 }
 
-/// Keeps third-party logging (Ceres reports failed trial steps through glog) off the user's
-/// stderr: rheomag reports what matters through its own messages and exit codes.
+/// Keeps third-party logging (Ceres reports failed trial steps through glog, VTK failed writes) off
+/// the user's stderr: rheomag reports what matters through its own messages and exit codes.
 void silence_third_party_logging() {
   FLAGS_minloglevel = google::GLOG_FATAL;
+  // VTK's writers report a failed write (a full disk) on stderr; the atomic writer checks their
+  // status and rheomag names the file in its own message.
+  vtkObject::GlobalWarningDisplayOff();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
 }
 
 }  // namespace rheomag::app

@@ -211,3 +211,30 @@ TEST_F(BadInputCli, OverflowingFitIsExit3NamingTheValue) {
             "finite number; the result was not written; produced by: rheomag fit big.csv --model "
             "arx:2,2,1 --json\n");
 }
+
+// `--vtk` on a full disk exited 0 with a truncated file in place of the old one, VTK's error on
+// stderr. Needs a small tmpfs (root); skipped where it cannot be mounted.
+TEST_F(BadInputCli, VtkOnFullDiskIsExit2KeepsTheOldFileAndNoVtkLogging) {
+  const fs::path full = dir / "full";
+  fs::create_directories(full);
+  if (std::system(
+          ("mount -t tmpfs -o size=16k tmpfs '" + full.string() + "' 2>/dev/null").c_str()) != 0)
+    GTEST_SKIP() << "cannot mount a tmpfs here";
+  write("full/fill", std::string(12000, '\0'));
+  write("full/field.vtu", "old");
+  const std::string c = std::string(RHEOMAG_SOURCE_DIR) + "/cases/annular_valve.toml";
+  const CliRun r = rheomag(dir, "mesh '" + c + "' --vtk full/field.vtu");
+  std::string kept;
+  {
+    std::ifstream in(full / "field.vtu");
+    kept.assign(std::istreambuf_iterator<char>(in), {});
+  }  // closed before the unmount
+  std::size_t temporaries = 0;
+  for (const auto& entry : fs::directory_iterator(full))
+    temporaries += entry.path().filename().string().find(".tmp") != std::string::npos;
+  std::system(("umount '" + full.string() + "'").c_str());
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_EQ(r.err, "rheomag: error: full/field.vtu: cannot write: the writer failed\n");
+  EXPECT_EQ(kept, "old");
+  EXPECT_EQ(temporaries, 0u);
+}
