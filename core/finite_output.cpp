@@ -85,6 +85,15 @@ void require_finite_json(const nlohmann::json& j, std::string_view output) {
                              "' is not a finite number; the result was not written");
 }
 
+void require_finite_values(std::span<const double> values, std::string_view output,
+                           std::string_view what) {
+  for (std::size_t k = 0; k < values.size(); ++k)
+    if (!std::isfinite(values[k]))
+      throw NonFiniteOutputError(std::string(output) + ": " + std::string(what) + " value " +
+                                 std::to_string(k) + " is not a finite number (" +
+                                 std::to_string(values[k]) + "); the result was not written");
+}
+
 std::string finite_json_text(const nlohmann::json& j, std::string_view output, int indent) {
   require_finite_json(j, output);
   return j.dump(indent);

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -38,6 +39,11 @@ void require_finite_text(std::string_view text, std::string_view output);
 /// Throws NonFiniteOutputError naming `output` and the key path (e.g. "fits[2].fit_percent")
 /// of the first non-finite number in `j` (nlohmann would print it as null).
 void require_finite_json(const nlohmann::json& j, std::string_view output);
+
+/// Throws NonFiniteOutputError naming `output`, `what` (e.g. "field 'B' per cell") and the
+/// index of the first non-finite number in `values` (for binary outputs such as .vtu files).
+void require_finite_values(std::span<const double> values, std::string_view output,
+                           std::string_view what);
 
 /// `j` as text (nlohmann's dump with `indent`; -1 is one line) once require_finite_json passed.
 std::string finite_json_text(const nlohmann::json& j, std::string_view output, int indent = -1);

@@ -9,6 +9,7 @@
 #include <functional>
 #include <limits>
 #include <sstream>
+#include <vector>
 
 #include "core/atomic_file.hpp"
 #include "core/finite_output.hpp"
@@ -77,4 +78,12 @@ TEST(FiniteOutput, AtomicWriterRefusesNonFiniteTextAndKeepsTheOldFile) {
   EXPECT_EQ(kept.str(), "t,force\n0,1\n");
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
   fs::remove_all(dir);
+}
+
+TEST(FiniteOutput, ValuesIndexNamed) {
+  const std::vector<double> v = {1.0, 2.0, -std::numeric_limits<double>::infinity()};
+  EXPECT_EQ(
+      message_of([&] { rheomag::require_finite_values(v, "out.vtu", "field 'B':"); }),
+      "out.vtu: field 'B': value 2 is not a finite number (-inf); the result was not written");
+  rheomag::require_finite_values(std::vector<double>{1.0, 0.0}, "out.vtu", "field 'B':");
 }
