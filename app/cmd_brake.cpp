@@ -65,15 +65,16 @@ void run_brake(const BrakeCli& o) {
       point["gaps"] = gaps;
       out["points"].push_back(point);
     }
-    std::cout << out.dump(2) << "\n";
+    rheomag::app::print_json(out, 2);
     return;
   }
-  std::printf("brake %s, fluid %s\n", c.name.c_str(), chain.fluid().name.c_str());
-  std::printf("%8s %12s %12s %12s %12s %12s\n", "I [A]", "w [rad/s]", "T [N m]", "T_yield",
-              "T_viscous", "T(0+) [N m]");
+  rheomag::app::print("brake %s, fluid %s\n", c.name.c_str(), chain.fluid().name.c_str());
+  rheomag::app::print("%8s %12s %12s %12s %12s %12s\n", "I [A]", "w [rad/s]", "T [N m]", "T_yield",
+                      "T_viscous", "T(0+) [N m]");
   for (const auto& p : points)
-    std::printf("%8.4g %12.4g %12.5g %12.5g %12.5g %12.5g\n", p.current, p.speed, p.torque.torque,
-                p.torque.torque_yield, p.torque.torque_viscous, p.torque.breakaway_torque);
+    rheomag::app::print("%8.4g %12.4g %12.5g %12.5g %12.5g %12.5g\n", p.current, p.speed,
+                        p.torque.torque, p.torque.torque_yield, p.torque.torque_viscous,
+                        p.torque.breakaway_torque);
 }
 
 const bool registered = rheomag::app::register_command([](CLI::App& root) {

@@ -68,20 +68,20 @@ void run_damper(const DamperCli& o) {
                                {"inductance", p.inductance},
                                {"gaps", gaps}});
     }
-    std::cout << out.dump(2) << "\n";
+    rheomag::app::print_json(out, 2);
     return;
   }
-  std::printf(
+  rheomag::app::print(
       "damper %s, fluid %s, gap wall %s; gas force %.4g N (%.4g .. %.4g N over the "
       "stroke)\n",
       c.name.c_str(), chain.fluid().name.c_str(),
       std::string(valve::kGapWallNames.name(options.gap_wall)).c_str(), points.front().force_gas,
       gas_extended, gas_compressed);
-  std::printf("%8s %10s %12s %12s %12s %12s\n", "I [A]", "v [m/s]", "F [N]", "F_dp [N]",
-              "F_wall [N]", "dp [bar]");
+  rheomag::app::print("%8s %10s %12s %12s %12s %12s\n", "I [A]", "v [m/s]", "F [N]", "F_dp [N]",
+                      "F_wall [N]", "dp [bar]");
   for (const auto& p : points)
-    std::printf("%8.4g %10.4g %12.5g %12.5g %12.5g %12.5g\n", p.current, p.velocity, p.force,
-                p.force_pressure, p.force_wall, p.dp * 1e-5);
+    rheomag::app::print("%8.4g %10.4g %12.5g %12.5g %12.5g %12.5g\n", p.current, p.velocity,
+                        p.force, p.force_pressure, p.force_wall, p.dp * 1e-5);
 }
 
 const bool registered = rheomag::app::register_command([](CLI::App& root) {

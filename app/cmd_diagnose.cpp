@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -57,9 +58,14 @@ void print_summary(const diagnose::Diagnosis& d) {
   if (d.findings.empty()) std::cout << "missing physics: none\n";
   for (const auto& f : d.findings) {
     std::cout << "missing physics: " << diagnose::effect_name(f.effect);
-    for (std::size_t j = 0; j < f.params.size(); ++j)
-      std::cout << "  " << f.param_names[j] << " = " << f.params[j] << " +- "
-                << f.standard_errors[j];
+    for (std::size_t j = 0; j < f.params.size(); ++j) {
+      std::cout << "  " << f.param_names[j] << " = " << f.params[j];
+      // A standard error is infinite (or unknown) where the parameter is not identified.
+      if (std::isfinite(f.standard_errors[j]))
+        std::cout << " +- " << f.standard_errors[j];
+      else
+        std::cout << " (standard error unbounded)";
+    }
     std::cout << "  (FIT " << f.fit_percent << " %)\n    " << f.evidence << "\n";
     if (!f.ambiguous_with.empty()) {
       std::cout << "    equally well explained by:";
@@ -118,7 +124,7 @@ const bool registered = app::register_command([](CLI::App& root) {
     const auto d = diagnose::diagnose(rec, options);
     if (!o->out.empty()) diagnose::write_diagnosis_outputs(d, o->out);
     if (o->json)
-      std::cout << diagnose::diagnosis_json(d).dump(2) << "\n";
+      rheomag::app::print_json(diagnose::diagnosis_json(d), 2);
     else
       print_summary(d);
   });

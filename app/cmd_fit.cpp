@@ -3,6 +3,7 @@
 // lumped/greybox.hpp; this file maps options to them and prints the result.
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <iostream>
@@ -16,6 +17,7 @@
 
 #include "app/command.hpp"
 #include "core/error.hpp"
+#include "lumped/fit_model_json.hpp"
 #include "lumped/greybox.hpp"
 #include "lumped/ident_fit.hpp"
 #include "lumped/ident_plot.hpp"
@@ -47,6 +49,7 @@ struct Validation {
 /// What one fit produced, whatever the model kind.
 struct FitReport {
   std::string model;
+  nlohmann::json fitted;  ///< the fitted-model document (lumped/fit_model_json.hpp)
   nlohmann::json params = nlohmann::json::object();
   nlohmann::json standard_errors;  ///< grey-box only
   Metrics train;
@@ -101,6 +104,7 @@ FitReport fit_black_box_model(const FitOptions& o, const Recording& rec, const S
   FitReport report;
   report.model = model->name();
   for (const auto& [name, value] : model->params()) report.params[name] = value;
+  report.fitted = black_box_model_json(model->name(), model->params(), rec.meta);
   Eigen::VectorXd out;
   report.train = evaluate(*model, train_data, o.mode, &out);
   report.train_output = to_std(out);
@@ -134,8 +138,9 @@ FitReport grey_box_report(
   for (const auto& p : fit.params) {
     if (p.fixed && fit.model == "valve-chain") continue;  // no compliance: the drive is Q itself
     report.params[p.name] = p.value;
-    report.standard_errors[p.name] =
-        p.standard_error ? nlohmann::json(*p.standard_error) : nlohmann::json(nullptr);
+    report.standard_errors[p.name] = p.standard_error && std::isfinite(*p.standard_error)
+                                         ? nlohmann::json(*p.standard_error)
+                                         : nlohmann::json(nullptr);
   }
   report.train = fit.train;
   report.train_output.assign(fit.simulated.begin() + static_cast<std::ptrdiff_t>(train.begin),
@@ -166,8 +171,10 @@ FitReport fit_grey_box_model(const FitOptions& o, const Recording& rec, const Sa
   GreyboxOptions options;
   options.train = train;
   const GreyboxFit fit = fit_greybox(rec, o.model, options);
-  return grey_box_report(fit, rec, train, val,
-                         [&](const Recording& other) { return simulate_greybox(other, fit); });
+  FitReport report = grey_box_report(
+      fit, rec, train, val, [&](const Recording& other) { return simulate_greybox(other, fit); });
+  report.fitted = fit_model_json(fit, rec.meta);
+  return report;
 }
 
 FitReport fit_valve_chain_model(const FitOptions& o, const Recording& rec, const SampleRange& train,
@@ -176,8 +183,11 @@ FitReport fit_valve_chain_model(const FitOptions& o, const Recording& rec, const
   ValveChainFitOptions options;
   options.train = train;
   const ValveChainFit fit = fit_valve_chain(rec, options);
-  return grey_box_report(fit, rec, train, val,
-                         [&](const Recording& other) { return simulate_valve_chain(other, fit); });
+  FitReport report = grey_box_report(fit, rec, train, val, [&](const Recording& other) {
+    return simulate_valve_chain(other, fit);
+  });
+  report.fitted = fit_model_json(fit, rec.meta);
+  return report;
 }
 
 /// Metrics as JSON; an unstable free run has no meaningful metrics: nulls and the reason.
@@ -199,26 +209,26 @@ void print_text(const FitReport& r, const FitOptions& o, const SampleRange& trai
   auto line = [](const std::string& what, const Metrics& m,
                  const std::optional<StabilityVerdict>& s) {
     if (s && !s->stable) {
-      std::printf("%-34s UNSTABLE in free-run simulation: %s (no FIT reported)\n", what.c_str(),
-                  s->reason.c_str());
+      rheomag::app::print("%-34s UNSTABLE in free-run simulation: %s (no FIT reported)\n",
+                          what.c_str(), s->reason.c_str());
       return;
     }
-    std::printf("%-34s FIT %7.2f %%   RMSE %7.2f %%   RE %.4f\n", what.c_str(), m.fit_percent,
-                m.rmse_percent, m.re);
+    rheomag::app::print("%-34s FIT %7.2f %%   RMSE %7.2f %%   RE %.4f\n", what.c_str(),
+                        m.fit_percent, m.rmse_percent, m.re);
   };
-  std::printf("model %s (%s mode)\n", r.model.c_str(),
-              o.mode == EvalMode::simulation ? "simulation" : "prediction");
+  rheomag::app::print("model %s (%s mode)\n", r.model.c_str(),
+                      o.mode == EvalMode::simulation ? "simulation" : "prediction");
   line("train " + range_text(train), r.train, r.train_stability);
   if (r.validation)
     line("validation " + (val.range ? range_text(*val.range) : o.validate), *r.validation,
          r.validation_stability);
-  std::printf("parameters:\n");
+  rheomag::app::print("parameters:\n");
   for (const auto& [name, value] : r.params.items()) {
-    std::printf("  %-28s %.6g", name.c_str(), value.get<double>());
+    rheomag::app::print("  %-28s %.6g", name.c_str(), value.get<double>());
     if (r.standard_errors.is_object() && r.standard_errors.contains(name) &&
         r.standard_errors[name].is_number())
-      std::printf("  +- %.3g", r.standard_errors[name].get<double>());
-    std::printf("\n");
+      rheomag::app::print("  +- %.3g", r.standard_errors[name].get<double>());
+    rheomag::app::print("\n");
   }
 }
 
@@ -283,8 +293,8 @@ void run_fit(const FitOptions& o) {
     print_text(report, o, train, val);
     return;
   }
-  nlohmann::json j;
-  j["model"] = report.model;
+  // The fitted model itself (readable by read_fit_model_json), then how well it fits.
+  nlohmann::json j = report.fitted;
   j["params"] = report.params;
   if (report.standard_errors.is_object()) j["standard_errors"] = report.standard_errors;
   j["train"] = metrics_json(report.train, report.train_stability);
@@ -295,7 +305,7 @@ void run_fit(const FitOptions& o) {
   if (val.range) j["validation_range"] = {val.range->begin, val.range->end};
   if (val.other) j["validation_file"] = o.validate;
   j["mode"] = o.mode == EvalMode::simulation ? "simulation" : "prediction";
-  std::cout << j.dump() << std::endl;
+  rheomag::app::print_json(j);
 }
 
 const bool registered = rheomag::app::register_command([](CLI::App& root) {
@@ -338,7 +348,9 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
                                           {"prediction", EvalMode::prediction}},
           CLI::ignore_case));
   cmd->add_flag("--json", o->json,
-                "Print one JSON object: model, params, train and validation "
+                "Print one JSON object: the fitted model (format, kind, model, rig, drive, output, "
+                "setup, parameters with units, static_map of valve-chain; readable back as a "
+                "model file, docs/fit-model-json.md), params, train and validation "
                 "({fit_percent, rmse_percent, re}), mode");
   cmd->add_option("--plot", o->plot,
                   "Write a PNG figure (measured vs model, residual) with gnuplot");

@@ -15,6 +15,7 @@
 #include "core/error.hpp"
 #include "lumped/current_dependent_fit.hpp"
 #include "lumped/family_report.hpp"
+#include "lumped/fit_model_json.hpp"
 #include "lumped/recording_io.hpp"
 
 namespace {
@@ -47,10 +48,10 @@ nlohmann::json member_json(const FamilyMember& m) {
 }
 
 void print_members(const char* title, const std::vector<FamilyMember>& members) {
-  std::printf("%s\n  %-40s %8s %8s %8s\n", title, "recording", "field", "FIT%", "RE");
+  rheomag::app::print("%s\n  %-40s %8s %8s %8s\n", title, "recording", "field", "FIT%", "RE");
   for (const auto& m : members)
-    std::printf("  %-40s %8.3g %8.1f %8.3f\n", m.csv_path.c_str(), m.field, m.metrics.fit_percent,
-                m.metrics.re);
+    rheomag::app::print("  %-40s %8.3g %8.1f %8.3f\n", m.csv_path.c_str(), m.field,
+                        m.metrics.fit_percent, m.metrics.re);
 }
 
 void run_fit_family(const FamilyOptions& o) {
@@ -70,39 +71,32 @@ void run_fit_family(const FamilyOptions& o) {
   const FamilyFit r = fit_current_dependent(training, o.model, prediction, options);
   if (!o.report.empty()) write_family_report(o.report, r, training, prediction);
   if (!o.json) {
-    std::printf("model %s, joint fit on %zu recordings (every %d-th sample)\n", r.fit.model.c_str(),
-                training.size(), o.decimation);
+    rheomag::app::print("model %s, joint fit on %zu recordings (every %d-th sample)\n",
+                        r.fit.model.c_str(), training.size(), o.decimation);
     for (const auto& p : r.fit.params) {
-      std::printf("  %-24s %14.6g", p.name.c_str(), p.value);
+      rheomag::app::print("  %-24s %14.6g", p.name.c_str(), p.value);
       if (p.standard_error)
-        std::printf(" +- %-10.3g", *p.standard_error);
+        rheomag::app::print(" +- %-10.3g", *p.standard_error);
       else
-        std::printf("    %-10s", "");
-      std::printf(" %s%s\n", p.unit.c_str(),
-                  p.fixed      ? " (fixed)"
-                  : p.at_bound ? " (at bound)"
-                               : "");
+        rheomag::app::print("    %-10s", "");
+      rheomag::app::print(" %s%s\n", p.unit.c_str(),
+                          p.fixed      ? " (fixed)"
+                          : p.at_bound ? " (at bound)"
+                                       : "");
     }
     print_members("training recordings:", r.training);
     if (!r.predicted.empty()) print_members("predicted recordings:", r.predicted);
     return;
   }
-  nlohmann::json j;
-  j["model"] = r.fit.model;
-  j["params"] = nlohmann::json::object();
-  j["standard_errors"] = nlohmann::json::object();
-  for (const auto& p : r.fit.params) {
-    j["params"][p.name] = p.value;
-    j["standard_errors"][p.name] =
-        p.standard_error ? nlohmann::json(*p.standard_error) : nlohmann::json(nullptr);
-  }
+  // The fitted model itself (readable by read_fit_model_json), then each recording's metrics.
+  nlohmann::json j = fit_model_json(r.fit, training.front().meta);
   j["train"] = nlohmann::json::array();
   for (const auto& m : r.training) j["train"].push_back(member_json(m));
   j["prediction"] = nlohmann::json::array();
   for (const auto& m : r.predicted) j["prediction"].push_back(member_json(m));
   j["decimation"] = o.decimation;
   j["mode"] = "simulation";
-  std::cout << j.dump() << std::endl;
+  rheomag::app::print_json(j);
 }
 
 const bool registered = rheomag::app::register_command([](CLI::App& root) {
@@ -128,7 +122,8 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
                   "Write DIR/report.html: measured vs model loops of every recording, parameters "
                   "with standard errors and their field dependence, FIT per recording");
   cmd->add_flag("--json", o->json,
-                "Print one JSON object: model, params, train and prediction (arrays of {file, "
+                "Print one JSON object: the fitted model (readable back as a model file, "
+                "docs/fit-model-json.md), params, train and prediction (arrays of {file, "
                 "field, fit_percent, rmse_percent, re}), mode");
   cmd->callback([o]() { run_fit_family(*o); });
 });

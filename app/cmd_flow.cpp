@@ -96,37 +96,38 @@ void run_flow(const CLI::App& cmd, const FlowOptions& o) {
       result.mixed ? std::string(rheomag::fluid::kMixedRegimeNames.name(result.mixed->regime))
                    : std::string(o.tau_y > 0.0 ? "floating_plug" : "fully_yielded");
   if (o.json) {
-    std::printf(
+    rheomag::app::print(
         "{\"kind\": \"%s\", \"model\": \"%s\", \"wall_velocity\": %.12g, \"regime\": \"%s\", "
         "\"dp\": %.12g, \"dp_yield\": %.12g, \"dp_viscous\": %.12g, \"plug_fraction\": %.12g, "
         "\"bingham_number\": %.12g",
         std::string(kind).c_str(), std::string(model).c_str(), o.wall_velocity, regime.c_str(),
         d.dp, d.dp_yield, d.dp_viscous, d.plug_fraction, d.bingham_number);
     if (result.mixed)
-      std::printf(
+      rheomag::app::print(
           ", \"plug_start\": %.12g, \"plug_end\": %.12g, \"moving_wall_stress\": %.12g, "
           "\"fixed_wall_stress\": %.12g, \"moving_wall_force\": %.12g",
           result.mixed->plug_start, result.mixed->plug_end, result.mixed->moving_wall_stress,
           result.mixed->fixed_wall_stress, result.mixed->moving_wall_force);
-    std::printf("}\n");
+    rheomag::app::print("}\n");
     return;
   }
-  std::printf("%s gap, %s model, wall velocity %g m/s\n", std::string(kind).c_str(),
-              std::string(model).c_str(), o.wall_velocity);
-  std::printf("  pressure drop        dp            = %.6g Pa (%.4g bar)\n", d.dp, d.dp * 1e-5);
-  std::printf("  viscous part         dp_viscous    = %.6g Pa\n", d.dp_viscous);
-  std::printf("  yield part           dp_yield      = %.6g Pa\n", d.dp_yield);
-  std::printf("  regime                               %s%s\n", regime.c_str(),
-              o.kind == GapKind::radial ? " (at the mean radius)" : "");
-  std::printf("  plug fraction        delta         = %.6g%s\n", d.plug_fraction,
-              o.kind == GapKind::radial ? " (at the mean radius)" : "");
-  std::printf("  Bingham number       Bi            = %.6g%s\n", d.bingham_number,
-              o.kind == GapKind::radial ? " (at the mean radius)" : "");
+  rheomag::app::print("%s gap, %s model, wall velocity %g m/s\n", std::string(kind).c_str(),
+                      std::string(model).c_str(), o.wall_velocity);
+  rheomag::app::print("  pressure drop        dp            = %.6g Pa (%.4g bar)\n", d.dp,
+                      d.dp * 1e-5);
+  rheomag::app::print("  viscous part         dp_viscous    = %.6g Pa\n", d.dp_viscous);
+  rheomag::app::print("  yield part           dp_yield      = %.6g Pa\n", d.dp_yield);
+  rheomag::app::print("  regime                               %s%s\n", regime.c_str(),
+                      o.kind == GapKind::radial ? " (at the mean radius)" : "");
+  rheomag::app::print("  plug fraction        delta         = %.6g%s\n", d.plug_fraction,
+                      o.kind == GapKind::radial ? " (at the mean radius)" : "");
+  rheomag::app::print("  Bingham number       Bi            = %.6g%s\n", d.bingham_number,
+                      o.kind == GapKind::radial ? " (at the mean radius)" : "");
   if (result.mixed) {
-    std::printf("  plug                 from %.6g to %.6g m off the moving wall\n",
-                result.mixed->plug_start, result.mixed->plug_end);
-    std::printf("  moving-wall force    F_wall        = %.6g N (shear stress %.6g Pa)\n",
-                result.mixed->moving_wall_force, result.mixed->moving_wall_stress);
+    rheomag::app::print("  plug                 from %.6g to %.6g m off the moving wall\n",
+                        result.mixed->plug_start, result.mixed->plug_end);
+    rheomag::app::print("  moving-wall force    F_wall        = %.6g N (shear stress %.6g Pa)\n",
+                        result.mixed->moving_wall_force, result.mixed->moving_wall_stress);
   }
 }
 

@@ -62,7 +62,7 @@ void run(const MeshCommandOptions& o) {
     nlohmann::json j = quality_json(quality);
     j["case"] = c.name;
     if (!o.vtk.empty()) j["vtk"] = o.vtk;
-    std::cout << j.dump(2) << "\n";
+    rheomag::app::print_json(j, 2);
     return;
   }
   std::cout << "case " << c.name << " (" << o.case_path << ")\n" << mesh::format_quality(quality);

@@ -97,7 +97,7 @@ int run_optimise(const OptimiseCli& o) {
                        {"second_alone", design_json(r.pareto->second_alone, r.spec)},
                        {"files", files}};
     }
-    std::cout << out.dump(2) << "\n";
+    rheomag::app::print_json(out, 2);
   } else {
     std::cout << optimise::format_summary(r);
   }

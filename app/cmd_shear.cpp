@@ -49,7 +49,7 @@ void run_shear(const CLI::App& cmd, const ShearOptions& o) {
           : disc_torque(DiscGeometry{o.r_in, o.r_out, o.gap, o.faces}, fluid, o.speed);
   const std::string kind(kShearKindNames.name(o.kind));
   if (o.json) {
-    std::printf(
+    rheomag::app::print(
         "{\"kind\": \"%s\", \"speed\": %.12g, \"torque\": %.12g, \"torque_yield\": %.12g, "
         "\"torque_viscous\": %.12g, \"breakaway_torque\": %.12g, \"yielded_fraction\": %.12g, "
         "\"yield_radius\": %.12g}\n",
@@ -57,14 +57,14 @@ void run_shear(const CLI::App& cmd, const ShearOptions& o) {
         t.yielded_fraction, t.yield_radius);
     return;
   }
-  std::printf("%s, speed %g rad/s\n", kind.c_str(), o.speed);
-  std::printf("  torque               T             = %.6g N m\n", t.torque);
-  std::printf("  viscous part         T_viscous     = %.6g N m\n", t.torque_viscous);
-  std::printf("  yield part           T_yield       = %.6g N m\n", t.torque_yield);
-  std::printf("  breakaway torque     T(0+)         = %.6g N m\n", t.breakaway_torque);
-  std::printf("  yielded fraction                   = %.6g\n", t.yielded_fraction);
+  rheomag::app::print("%s, speed %g rad/s\n", kind.c_str(), o.speed);
+  rheomag::app::print("  torque               T             = %.6g N m\n", t.torque);
+  rheomag::app::print("  viscous part         T_viscous     = %.6g N m\n", t.torque_viscous);
+  rheomag::app::print("  yield part           T_yield       = %.6g N m\n", t.torque_yield);
+  rheomag::app::print("  breakaway torque     T(0+)         = %.6g N m\n", t.breakaway_torque);
+  rheomag::app::print("  yielded fraction                   = %.6g\n", t.yielded_fraction);
   if (o.kind == ShearKind::drum)
-    std::printf("  yield radius         r_y           = %.6g m\n", t.yield_radius);
+    rheomag::app::print("  yield radius         r_y           = %.6g m\n", t.yield_radius);
 }
 
 const bool registered = rheomag::app::register_command([](CLI::App& root) {

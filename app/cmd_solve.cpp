@@ -58,7 +58,7 @@ void run_3d(const SolveCommandOptions& o, const Case& c) {
     j["case"] = c.name;
     j["mesh_seconds"] = solved.mesh_seconds;
     if (!o.vtk.empty()) j["vtk"] = o.vtk;
-    std::cout << j.dump(2) << "\n";
+    rheomag::app::print_json(j, 2);
     return;
   }
   std::cout << "case " << c.name << " (" << o.case_path << ")\n";
@@ -121,7 +121,7 @@ void run(const SolveCommandOptions& o) {
                         {"newton_iterations", p.newton_iterations}});
       j["sweep"] = rows;
     }
-    std::cout << j.dump(2) << "\n";
+    rheomag::app::print_json(j, 2);
     return;
   }
   std::cout << "case " << c.name << " (" << o.case_path << ")\n";

@@ -40,21 +40,23 @@ void print_summary(const SweepSummary& s, bool json) {
                      {"seconds", s.seconds},
                      {"designs_per_minute", s.designs_per_minute},
                      {"interrupted", s.interrupted}};
-    std::cout << j.dump() << "\n";
+    rheomag::app::print_json(j);
     return;
   }
-  std::printf("sweep: %lld designs (%lld from an earlier run), %lld solved now, %lld error rows\n",
-              s.designs, s.resumed, s.evaluated, s.errors);
+  rheomag::app::print(
+      "sweep: %lld designs (%lld from an earlier run), %lld solved now, %lld error rows\n",
+      s.designs, s.resumed, s.evaluated, s.errors);
   if (s.meshes_built + s.meshes_reused > 0) {
-    std::printf(
+    rheomag::app::print(
         "meshes: %lld generated, %lld reused (same geometry); solvers: %lld reused "
         "(only the currents changed)\n",
         s.meshes_built, s.meshes_reused, s.solvers_reused);
   }
-  std::printf("%.1f s, %.1f designs/min\nresults: %s\n", s.seconds, s.designs_per_minute,
-              s.csv.c_str());
+  rheomag::app::print("%.1f s, %.1f designs/min\nresults: %s\n", s.seconds, s.designs_per_minute,
+                      s.csv.c_str());
   if (s.interrupted) {
-    std::printf("interrupted: every finished row is kept; run the same command to resume\n");
+    rheomag::app::print(
+        "interrupted: every finished row is kept; run the same command to resume\n");
   }
 }
 
@@ -77,7 +79,7 @@ void run(const SweepCommandOptions& o) {
   }
   print_summary(summary, o.json);
   if (summary.interrupted) {
-    std::fflush(stdout);
+    std::cout.flush();
     std::exit(130);
   }
 }

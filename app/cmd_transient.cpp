@@ -147,7 +147,7 @@ void run(const TransientCliOptions& o) {
     j["case"] = c.name;
     j["seconds"] = seconds;
     if (series) j["vtk_series"] = o.vtk_series;
-    std::cout << j.dump(2) << "\n";
+    rheomag::app::print_json(j, 2);
     return;
   }
   std::cout << "case " << c.name << " (" << o.case_path << ")\n"

@@ -114,28 +114,30 @@ void run_valve(const ValveCli& o) {
                        {"incremental_inductance", points[i].incremental_inductance}});
     coil_json["inductance_table"] = table;
     out["coil"] = coil_json;
-    std::cout << out.dump(2) << "\n";
+    rheomag::app::print_json(out, 2);
     return;
   }
-  std::printf("valve %s, fluid %s\n", c.name.c_str(), chain.fluid().name.c_str());
-  std::printf("%10s %12s %12s %12s %12s %14s\n", "I [A]", "Q [m3/s]", "dp [bar]", "yield [bar]",
-              "visc. [bar]", "avg-B [bar]");
+  rheomag::app::print("valve %s, fluid %s\n", c.name.c_str(), chain.fluid().name.c_str());
+  rheomag::app::print("%10s %12s %12s %12s %12s %14s\n", "I [A]", "Q [m3/s]", "dp [bar]",
+                      "yield [bar]", "visc. [bar]", "avg-B [bar]");
   for (const auto& p : points)
-    std::printf("%10.4g %12.4g %12.5g %12.5g %12.5g %14.5g\n", p.current, p.flow, p.dp_total * 1e-5,
-                p.dp_yield * 1e-5, p.dp_viscous * 1e-5, p.dp_total_average_b * 1e-5);
-  std::printf("%10s %14s %14s %16s\n", "I [A]", "lambda [Wb]", "L = l/I [H]", "dl/dI [H]");
+    rheomag::app::print("%10.4g %12.4g %12.5g %12.5g %12.5g %14.5g\n", p.current, p.flow,
+                        p.dp_total * 1e-5, p.dp_yield * 1e-5, p.dp_viscous * 1e-5,
+                        p.dp_total_average_b * 1e-5);
+  rheomag::app::print("%10s %14s %14s %16s\n", "I [A]", "lambda [Wb]", "L = l/I [H]", "dl/dI [H]");
   for (std::size_t i = 0; i < points.size(); i += flows.size())
-    std::printf("%10.4g %14.5g %14.5g %16.5g\n", points[i].current, points[i].flux_linkage,
-                points[i].inductance, points[i].incremental_inductance);
-  std::printf("coil: %g turns, L = %.4g H at %g A", chain.turns(), peak->inductance, peak->current);
+    rheomag::app::print("%10.4g %14.5g %14.5g %16.5g\n", points[i].current, points[i].flux_linkage,
+                        points[i].inductance, points[i].incremental_inductance);
+  rheomag::app::print("coil: %g turns, L = %.4g H at %g A", chain.turns(), peak->inductance,
+                      peak->current);
   if (have_wire)
-    std::printf(
+    rheomag::app::print(
         ", R = %.4g Ohm (%s, %g C), L/R = %.4g s, P = %.4g W, J = %.4g A/mm^2, copper fill "
         "%.3f\n",
         coil.resistance, options.wire.c_str(), options.temperature, coil.time_constant, coil.power,
         coil.current_density * 1e-6, coil.copper_fill);
   else
-    std::printf("; R, L/R and power need the wire: [valve] wire = \"AWG 24\" or --wire\n");
+    rheomag::app::print("; R, L/R and power need the wire: [valve] wire = \"AWG 24\" or --wire\n");
 }
 
 const bool registered = rheomag::app::register_command([](CLI::App& root) {

@@ -5,6 +5,7 @@
 #include <functional>
 #include <string>
 
+#include "app/finite_stdout.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "lumped/recording.hpp"

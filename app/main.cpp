@@ -3,6 +3,8 @@
 #include <dlfcn.h>
 
 #include <glog/logging.h>
+#include <vtkLogger.h>
+#include <vtkObject.h>
 #include <CLI/CLI.hpp>
 #include <cstdlib>
 #include <iostream>
@@ -10,6 +12,7 @@
 #include <vector>
 
 #include "app/command.hpp"
+#include "app/finite_stdout.hpp"
 #include "core/error.hpp"
 #include "lumped/recording_io.hpp"
 #include "magnetostatics/assembly.hpp"
@@ -87,10 +90,14 @@ void prefer_single_threaded_blas() {
     set(1);
 }
 
-/// Keeps third-party logging (Ceres reports failed trial steps through glog) off the user's
-/// stderr: rheomag reports what matters through its own messages and exit codes.
+/// Keeps third-party logging (Ceres reports failed trial steps through glog, VTK failed writes) off
+/// the user's stderr: rheomag reports what matters through its own messages and exit codes.
 void silence_third_party_logging() {
   FLAGS_minloglevel = google::GLOG_FATAL;
+  // VTK's writers report a failed write (a full disk) on stderr; the atomic writer checks their
+  // status and rheomag names the file in its own message.
+  vtkObject::GlobalWarningDisplayOff();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
 }
 
 }  // namespace rheomag::app
@@ -108,14 +115,27 @@ int main(int argc, char** argv) {
   // serial; docs/performance.md, "Threads").
   if (std::getenv("OMP_NUM_THREADS") != nullptr) rheomag::magnetostatics::set_assembly_threads(0);
   rheomag::app::setup_commands(root);
+  std::string command_line = "rheomag";
+  for (int k = 1; k < argc; ++k) command_line += std::string(" ") + argv[k];
+  // Every line a command prints passes the non-finite guard (app/finite_stdout.hpp).
+  rheomag::app::GuardedStdout guarded;
   try {
     root.parse(argc, argv);
+    guarded.check(command_line);
   } catch (const CLI::ParseError& e) {
     int code = root.exit(e);
     return code == 0 ? 0 : 2;
   } catch (const rheomag::InputError& e) {
     std::cerr << "rheomag: error: " << e.what() << "\n";
     return 2;
+  } catch (const rheomag::NonFiniteOutputError& e) {
+    guarded.finish();
+    const std::string what = e.what();
+    std::cerr << "rheomag: result is not a finite number: " << what
+              << (what.find("produced by: ") == std::string::npos ? "; produced by: " + command_line
+                                                                  : std::string())
+              << "\n";
+    return 3;
   } catch (const rheomag::ConvergenceError& e) {
     std::cerr << "rheomag: solver did not converge: " << e.what() << "\n";
     return 3;

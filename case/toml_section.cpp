@@ -33,8 +33,11 @@ std::string TomlSection::key_path(std::string_view key) const {
 }
 
 std::string TomlSection::where(std::string_view key) const {
-  const toml::node* n = node(key);
-  const toml::source_region region = n ? n->source() : table_->source();
+  // A value set by a program (a sweep's design edits a copy of the base case) has no source;
+  // its key keeps the line it had in the file.
+  toml::source_region region = table_->source();
+  if (const auto it = table_->find(key); it != table_->end())
+    region = it->second.source().begin.line != 0 ? it->second.source() : it->first.source();
   return toml_location(file_, region) + ": " + key_path(key);
 }
 

@@ -11,6 +11,7 @@
 #include <system_error>
 
 #include "core/error.hpp"
+#include "core/finite_output.hpp"
 
 namespace rheomag {
 namespace {
@@ -78,6 +79,7 @@ void check_output_path(const std::filesystem::path& path, std::string_view what)
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
   check_output_path(path, "output");
+  require_finite_text(content, path.string());
   const std::filesystem::path temporary = temporary_beside(path);
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw InputError(path.string() + ": cannot write: " + reason(errno));

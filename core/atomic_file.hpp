@@ -10,7 +10,8 @@ namespace rheomag {
 
 /// Writes `content` to `path` atomically. InputError naming the path (and the system's reason)
 /// when it cannot, or when `path` exists and is not a regular file (a device node, a directory);
-/// the old file, if any, is then untouched.
+/// the old file, if any, is then untouched. Text holding a non-finite number ("nan", "-inf") is
+/// refused with NonFiniteOutputError (core/finite_output.hpp) before anything is written.
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);
 
 /// Lets `produce` write a file at a temporary path beside `path` (for writers that take a file

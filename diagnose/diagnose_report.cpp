@@ -10,6 +10,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/finite_output.hpp"
 #include "core/html_text.hpp"
 
 namespace rheomag::diagnose {
@@ -149,7 +150,9 @@ std::string diagnosis_html(const Diagnosis& d) {
       o << "</td><td>";
       for (std::size_t j = 0; j < f.params.size(); ++j)
         o << html_escape(f.param_names[j]) << " = " << html_number(f.params[j]) << " &plusmn; "
-          << html_number(f.standard_errors[j], 2) << "<br>";
+          << (std::isfinite(f.standard_errors[j]) ? html_number(f.standard_errors[j], 2)
+                                                  : "unbounded")
+          << "<br>";
       o << "</td><td>" << html_number(f.fit_percent, 4) << " %</td><td>" << html_escape(f.evidence);
       if (!f.separating_measurement.empty())
         o << "<br><i>To separate: " << html_escape(f.separating_measurement) << "</i>";
@@ -253,7 +256,9 @@ void write_diagnosis_outputs(const Diagnosis& d, const std::string& dir) {
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError("--out " + dir + ": cannot create the folder (" + ec.message() + ")");
   const std::filesystem::path base(dir);
-  write_file_atomically(base / "diagnosis.json", diagnosis_json(d).dump(2) + "\n");
+  write_file_atomically(
+      base / "diagnosis.json",
+      finite_json_text(diagnosis_json(d), (base / "diagnosis.json").string(), 2) + "\n");
   write_file_atomically(base / "report.html", diagnosis_html(d));
   write_file_atomically(base / "traces.csv", diagnosis_traces_csv(d));
 }

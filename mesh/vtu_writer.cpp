@@ -22,6 +22,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/finite_output.hpp"
 
 namespace rheomag::mesh {
 
@@ -137,6 +138,9 @@ void write_vtu(const std::string& path, const VtuGrid& in, const VtuFields& fiel
           std::to_string(field.components) + " per " + (on_cells ? "cell" : "node") + ")");
     if (field.name == "region")
       throw std::invalid_argument("write_vtu: the field name 'region' is reserved");
+    require_finite_values(field.values, path,
+                          "field '" + field.name + "' (" + std::to_string(field.components) +
+                              " per " + (on_cells ? "cell" : "node") + "):");
     auto array = to_vtk(field);
     if (on_cells)
       grid->GetCellData()->AddArray(array);

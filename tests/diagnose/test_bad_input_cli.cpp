@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -161,4 +162,79 @@ TEST_F(BadInputCli, VtkOntoNonRegularFileIsRefusedAndTheFileKept) {
   EXPECT_TRUE(fs::is_fifo(fifo));
   for (const auto& entry : fs::directory_iterator(dir))
     EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+}
+
+// In-domain but extreme values whose result overflows: `flow` printed "dp = inf Pa" with exit 0.
+// The stdout guard holds the line back and ends the command with exit 3 naming it and the
+// command line.
+TEST_F(BadInputCli, InfiniteFlowResultIsExit3AndNotPrinted) {
+  const std::string args =
+      "flow --kind annular --gap 1e-3 --length 1e300 --radius 0.01 --tau-y 1e5 --viscosity 1 "
+      "--flow 1e-5";
+  const CliRun text = rheomag(dir, args);
+  EXPECT_EQ(text.code, 3) << text.err;
+  EXPECT_EQ(text.out, "annular gap, exact model, wall velocity 0 m/s\n");
+  EXPECT_EQ(text.err,
+            "rheomag: result is not a finite number: stdout line 2 holds a non-finite number "
+            "('inf' in \"  pressure drop        dp            = inf Pa (inf bar)\"); it and the "
+            "rest of the output were held back; produced by: rheomag " +
+                args + "\n");
+  const CliRun json = rheomag(dir, args + " --json");
+  EXPECT_EQ(json.code, 3) << json.err;
+  EXPECT_EQ(json.out, "");
+  EXPECT_NE(json.err.find("'inf' in \"{\"kind\": \"annular\""), std::string::npos) << json.err;
+}
+
+/// A force of 1e200 N: in the CSV's domain (finite), but its squares overflow.
+double overflowing_force(int k) {
+  return 1e200 * std::sin(0.1 * k);
+}
+
+// A fit whose metrics or parameters overflow printed "FIT -nan %" (text) or null (JSON, nlohmann
+// writes NaN as null) with exit 0; now exit 3 naming the line or the JSON key, and nothing from
+// Ceres/glog on stderr.
+TEST_F(BadInputCli, OverflowingFitIsExit3NamingTheValue) {
+  recording("big", damper_sidecar("1.0e-3"), overflowing_force);
+  const CliRun grey = rheomag(dir, "fit big.csv --model bingham");
+  EXPECT_EQ(grey.code, 3) << grey.err;
+  EXPECT_EQ(grey.out, "model bingham (simulation mode)\n");
+  EXPECT_EQ(grey.err.find("rheomag: result is not a finite number: stdout line 2 holds a "
+                          "non-finite number ('-nan' in \"train 0:400 "),
+            0u)
+      << grey.err;
+  EXPECT_EQ(std::count(grey.err.begin(), grey.err.end(), '\n'), 1) << grey.err;
+  const CliRun json = rheomag(dir, "fit big.csv --model arx:2,2,1 --json");
+  EXPECT_EQ(json.code, 3) << json.err;
+  EXPECT_EQ(json.out, "");
+  EXPECT_EQ(json.err,
+            "rheomag: result is not a finite number: stdout (JSON): key 'params.a1' is not a "
+            "finite number; the result was not written; produced by: rheomag fit big.csv --model "
+            "arx:2,2,1 --json\n");
+}
+
+// `--vtk` on a full disk exited 0 with a truncated file in place of the old one, VTK's error on
+// stderr. Needs a small tmpfs (root); skipped where it cannot be mounted.
+TEST_F(BadInputCli, VtkOnFullDiskIsExit2KeepsTheOldFileAndNoVtkLogging) {
+  const fs::path full = dir / "full";
+  fs::create_directories(full);
+  if (std::system(
+          ("mount -t tmpfs -o size=16k tmpfs '" + full.string() + "' 2>/dev/null").c_str()) != 0)
+    GTEST_SKIP() << "cannot mount a tmpfs here";
+  write("full/fill", std::string(12000, '\0'));
+  write("full/field.vtu", "old");
+  const std::string c = std::string(RHEOMAG_SOURCE_DIR) + "/cases/annular_valve.toml";
+  const CliRun r = rheomag(dir, "mesh '" + c + "' --vtk full/field.vtu");
+  std::string kept;
+  {
+    std::ifstream in(full / "field.vtu");
+    kept.assign(std::istreambuf_iterator<char>(in), {});
+  }  // closed before the unmount
+  std::size_t temporaries = 0;
+  for (const auto& entry : fs::directory_iterator(full))
+    temporaries += entry.path().filename().string().find(".tmp") != std::string::npos;
+  std::system(("umount '" + full.string() + "'").c_str());
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_EQ(r.err, "rheomag: error: full/field.vtu: cannot write: the writer failed\n");
+  EXPECT_EQ(kept, "old");
+  EXPECT_EQ(temporaries, 0u);
 }

@@ -14,7 +14,9 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "lumped/fit_model_json.hpp"
 #include "lumped/greybox.hpp"
+#include "lumped/metrics.hpp"
 #include "lumped/recording_io.hpp"
 
 namespace fs = std::filesystem;
@@ -144,6 +146,12 @@ TEST(FitFamilyCli, ReportRendersInHeadlessChromium) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["standard_errors"].contains("yield_per_field"));
   EXPECT_GT(j["prediction"][0]["fit_percent"].get<double>(), 99.0);
+  // The printed model reads back (lumped/fit_model_json.hpp) and predicts c.csv as printed.
+  const FitModel back = parse_fit_model_json(r.out, "stdout");
+  const Recording rc = read_recording(c);
+  const std::vector<double> y = simulate_fit_model(rc, back);
+  EXPECT_NEAR(compute_metrics(rc.column("force"), y).fit_percent,
+              j["prediction"][0]["fit_percent"].get<double>(), 1e-9);
   std::ifstream in(dir / "out" / "report.html");
   const std::string html((std::istreambuf_iterator<char>(in)), {});
   std::size_t svgs = 0;

@@ -13,10 +13,12 @@
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "core/finite_output.hpp"
 #include "mesh/mesher.hpp"
 #include "mesh/vtu_writer.hpp"
 #include "pslg_fixtures.hpp"
@@ -121,6 +123,32 @@ TEST(WriteVtu, FieldOfTheWrongLengthIsRejected) {
   EXPECT_THROW(write_vtu(path.string(), mesh, fields), std::invalid_argument);
   EXPECT_FALSE(std::filesystem::exists(path));
   EXPECT_THROW(fields.add_point_scalar("short", {}), std::invalid_argument);  // duplicate name
+  std::filesystem::remove_all(scratch_dir());
+}
+
+// A field holding NaN or inf is refused before the file is written (the non-finite guard of
+// every output, core/finite_output.hpp): the old file stays.
+TEST(WriteVtu, NonFiniteFieldIsRefusedAndTheOldFileKept) {
+  MeshOptions options;
+  options.order = 1;
+  const Mesh mesh = generate_mesh(fixtures::valve_like_pslg(), options);
+  const auto path = scratch_dir() / "field.vtu";
+  write_vtu(path.string(), mesh);
+  const auto size = std::filesystem::file_size(path);
+  std::vector<double> b(mesh.triangles.size(), 0.5);
+  b[7] = std::nan("");
+  VtuFields fields;
+  fields.add_cell_scalar("B", b);
+  try {
+    write_vtu(path.string(), mesh, fields);
+    ADD_FAILURE() << "no error";
+  } catch (const NonFiniteOutputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              path.string() +
+                  ": field 'B' (1 per cell): value 7 is not a finite number (nan); the result was "
+                  "not written");
+  }
+  EXPECT_EQ(std::filesystem::file_size(path), size);
   std::filesystem::remove_all(scratch_dir());
 }
 

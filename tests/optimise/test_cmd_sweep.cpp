@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <thread>
@@ -91,6 +92,39 @@ TEST(SweepCliErrors, UnknownKeyExitsTwoWithTheSuggestionAndWritesNothing) {
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("did you mean 'geometry.gap_width'"), std::string::npos) << run.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
+// A design outside a key's domain is an error row citing the key's line of the base case (the
+// probe found the line of a comment above it): comments precede both keys here.
+TEST(SweepCliErrors, ErrorRowsCiteTheKeyLineOfTheBaseCase) {
+  const auto dir = scratch_dir("cli-error-line");
+  std::string base = read_text(tiny_valve());
+  base.replace(base.find("gap_width = 1.0"), 0, "# the clearance under study\n# (mm)\n");
+  base.replace(base.find("outer_radius_factor"), 0, "# open boundary distance\n");
+  const auto base_path = write_file(dir, "base.toml", base);
+  auto line_of = [&](const std::string& key) {
+    const std::size_t at = base.find("\n" + key + " = ");
+    return 2 + std::count(base.begin(), base.begin() + static_cast<std::ptrdiff_t>(at), '\n');
+  };
+  const auto sweep = write_file(dir, "sweep.toml",
+                                "[sweep]\nbase = \"" + base_path.string() +
+                                    "\"\n[[axis]]\nkey = \"geometry.gap_width\"\nvalues = [0.0, "
+                                    "1.0]\n[[axis]]\nkey = \"solver.outer_radius_factor\"\n"
+                                    "values = [3.0, 1e9]\n[output]\ncsv = \"results.csv\"\n");
+  const CliRun run = run_cli({"sweep", sweep.string(), "--out", (dir / "out").string()}, dir);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::vector<std::string> rows = lines_of(read_text(dir / "out/results.csv"));
+  ASSERT_EQ(rows.size(), 5u);
+  const std::string gap = base_path.string() + ":" + std::to_string(line_of("gap_width")) +
+                          ": geometry.gap_width: expected a positive number, got 0\"";
+  const std::string radius = base_path.string() + ":" +
+                             std::to_string(line_of("outer_radius_factor")) +
+                             ": solver.outer_radius_factor: expected a number in (1, 100], got "
+                             "1000000000\"";
+  EXPECT_NE(rows[1].find(gap), std::string::npos) << rows[1];
+  EXPECT_NE(rows[2].find(gap), std::string::npos) << rows[2];
+  EXPECT_NE(rows[4].find(radius), std::string::npos) << rows[4];
+  EXPECT_NE(rows[3].find(",ok,"), std::string::npos) << rows[3];
 }
 
 TEST(SweepCliErrors, UnwritableOutputDirectoryExitsTwo) {

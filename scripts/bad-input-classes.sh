@@ -1,0 +1,73 @@
+#!/bin/bash
+# Re-runs the bad-input classes of docs/bad-input.md against a built rheomag: prints each class,
+# the exit code it should end in, the one it ended in and the first stderr line. The full-disk
+# class needs root (a 16 KiB tmpfs) and is skipped otherwise.
+# Usage: scripts/bad-input-classes.sh build/app/rheomag .
+set -u
+B=$(realpath "${1:-build/app/rheomag}"); S=$(realpath "${2:-.}"); D=$(mktemp -d); cd "$D"
+MISMATCHES=0
+run() { local name=$1 want=$2; shift 2; "$@" >out.txt 2>err.txt; local rc=$?
+  [ "$rc" = "$want" ] || MISMATCHES=$((MISMATCHES + 1))
+  printf '%-42s want %s got %s  %s\n' "$name" "$want" "$rc" "$(head -c 230 err.txt | head -1)"; }
+py() { python3 -c "$1"; }
+py "
+import math
+def rec(stem, side, force):
+  with open(stem+'.csv','w') as f:
+    f.write('t,velocity,force\n')
+    for k in range(400): f.write(f'{k*0.005},{0.05*math.sin(0.1*k)},{force(k)}\n')
+  open(stem+'.toml','w').write(side)
+side='[recording]\ndrive = [\"velocity\"]\noutput = \"force\"\n[rig]\nkind = \"damper\"\npiston_area = AREA\nchamber_volume = VOL\n[valve]\nyield_current = [0.0, 1.0]\nyield_pressure = [0.0, 6.0e4]\nviscous_resistance = VR\n'
+def s(a='1.0e-3', v='2.0e-5', r='1.3e8'): return side.replace('AREA',a).replace('VOL',v).replace('VR',r)
+sine=lambda k: 400*math.tanh(math.sin(0.1*k)/0.3)
+rec('flat', s(), lambda k: 5.0)
+rec('zero', s('0.0'), sine); rec('neg', s('-1e-3'), sine); rec('absurd', s('1.0e300'), sine)
+rec('negvol', s(v='-2e-5'), sine); rec('negvr', s(r='-1.3e8'), sine); rec('ok', s(), sine)
+rec('big', s(), lambda k: 1e200*math.sin(0.1*k))
+open('bom.csv','w',encoding='utf-8-sig').write(open('ok.csv').read()); open('bom.toml','w').write(s())
+open('semi.csv','w').write(open('ok.csv').read().replace(',',';')); open('semi.toml','w').write(s())
+open('typo.csv','w').write(open('ok.csv').read()); open('typo.toml','w').write(s().replace('piston_area','piston_aera'))
+"
+C=$S/cases/annular_valve.toml
+sed 's/^turns = .*/turns = 600.5/' $C > turns.toml
+sed 's/^fluid_material = .*/fluid_material = "AISI 1010"/' $C > steel.toml
+grep -q outer_radius_factor $C && sed 's/^outer_radius_factor = .*/outer_radius_factor = 1e9/' $C > orf.toml || { cp $C orf.toml; printf '\n' >> orf.toml; }
+run "narx of a constant output"               2 $B fit flat.csv --model narx:2,2,1
+run "constant output, bingham"                2 $B fit flat.csv --model bingham
+run "zero piston area (diagnose)"             2 $B diagnose zero.csv --quiet
+run "negative piston area (diagnose)"         2 $B diagnose neg.csv --quiet
+run "negative chamber volume"                 2 $B diagnose negvol.csv --quiet
+run "negative viscous resistance"             2 $B diagnose negvr.csv --quiet
+run "piston area 1e300"                       2 $B diagnose absurd.csv --quiet
+echo "   stderr lines of the 1e300 run: $(wc -l < err.txt)"
+run "force 1e200 (overflow) fit bingham"      3 $B fit big.csv --model bingham
+run "force 1e200 fit arx --json"              3 $B fit big.csv --model arx:2,2,1 --json
+echo "   stdout bytes of that run: $(wc -c < out.txt)"
+run "flow --length 1e300 (dp = inf)"          3 $B flow --kind annular --gap 1e-3 --length 1e300 --radius 0.01 --tau-y 1e5 --viscosity 1 --flow 1e-5
+run "turns = 600.5"                           2 $B solve turns.toml
+run "steel fluid_material"                    2 $B solve steel.toml
+run "outer_radius_factor 1e9"                 2 $B mesh orf.toml
+run "CSV with UTF-8 BOM (valid)"              0 $B fit bom.csv --model arx:2,2,1
+run "semicolon CSV"                           2 $B fit semi.csv --model arx:2,2,1
+run "misspelt sidecar key"                    2 $B fit typo.csv --model arx:2,2,1
+run "--vtk ''"                                2 $B mesh $C --vtk ''
+mkfifo node.vtu
+run "--vtk onto a FIFO (non-regular)"         2 $B mesh $C --vtk node.vtu
+[ -p node.vtu ] && echo "   node.vtu still a FIFO"
+run "--vtk /dev/null"                         2 $B mesh $C --vtk /dev/null
+[ -c /dev/null ] && echo "   /dev/null still a character device"
+run "simulate --out into a missing folder"    2 $B simulate $S/cases/rigs/bypass_cylinder.toml --signal displacement=sine:amplitude=0.025,frequency=0.75 --signal current=constant:value=1 --duration 1 --out nowhere/rec.csv
+run "diagnose --out onto a file"              2 $B diagnose ok.csv --quiet --out ok.csv
+echo "   temporaries left: $(ls -a | grep -c '\.tmp')"
+mkdir -p full
+if mount -t tmpfs -o size=16k tmpfs full 2>/dev/null; then
+  head -c 12000 /dev/zero > full/fill; echo old > full/field.vtu
+  run "--vtk on a full disk"                  2 $B mesh $C --vtk full/field.vtu
+  echo "   old file kept: $(cat full/field.vtu); temporaries left: $(ls -a full | grep -c '\.tmp')"
+  run "simulate --out on a full disk"         2 $B simulate $S/cases/rigs/bypass_cylinder.toml --signal displacement=sine:amplitude=0.025,frequency=0.75 --signal current=constant:value=1 --duration 1 --out full/rec.csv
+  echo "   temporaries left: $(ls -a full | grep -c '\.tmp')"
+  umount full
+else echo "   (no tmpfs mount here: full-disk class not run)"; fi
+cd /; rm -rf "$D"
+echo "classes whose exit code differs from the expected one: $MISMATCHES"
+[ "$MISMATCHES" = 0 ]
