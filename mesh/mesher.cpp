@@ -154,19 +154,27 @@ double automatic_size(const Cdt& cdt) {
 }
 
 /// Boundary marker of the coarse constrained edge that contains point m (a midpoint of a fine
-/// constrained edge): the constrained edge of the located face nearest to m.
+/// constrained edge): the nearest constrained edge of the located face and its neighbours. The
+/// neighbours matter where m, rounded, falls just beside its edge: outside the convex hull
+/// (an infinite face) or in the sliver that a nearly collinear split point makes.
 int marker_at(const Cdt& coarse, const CgalPoint& m, Cdt::Face_handle& hint) {
   hint = coarse.locate(m, hint);
-  int best = -1;
+  int best_marker = -1;
   double best_distance = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < 3; ++i) {
-    if (!coarse.is_constrained({hint, i})) continue;
-    const CgalPoint& a = hint->vertex(Cdt::ccw(i))->point();
-    const CgalPoint& b = hint->vertex(Cdt::cw(i))->point();
-    const double d = CGAL::squared_distance(m, Cdt::Geom_traits::Segment_2(a, b));
-    if (d < best_distance) best_distance = d, best = i;
-  }
-  return best < 0 ? -1 : hint->info().boundary[best];
+  const auto consider = [&](const Cdt::Face_handle& f) {
+    if (coarse.is_infinite(f)) return;
+    for (int i = 0; i < 3; ++i) {
+      if (!coarse.is_constrained({f, i})) continue;
+      const CgalPoint& a = f->vertex(Cdt::ccw(i))->point();
+      const CgalPoint& b = f->vertex(Cdt::cw(i))->point();
+      const double d = CGAL::squared_distance(m, Cdt::Geom_traits::Segment_2(a, b));
+      if (d < best_distance) best_distance = d, best_marker = f->info().boundary[i];
+    }
+  };
+  consider(hint);
+  for (int i = 0; i < 3; ++i) consider(hint->neighbor(i));
+  if (coarse.is_infinite(hint)) hint = hint->neighbor(hint->index(coarse.infinite_vertex()));
+  return best_marker;
 }
 
 /// Copies the refined in-domain faces of `fine` into a linear Mesh.

@@ -306,6 +306,33 @@ TEST(GenerateMesh, SegmentMaxLengthIsHonoured) {
   EXPECT_NEAR(length, 0.02, 1e-15);
 }
 
+// A straight outer side given as many pieces whose split points were computed in floating
+// point (as a FEMM segment with a MaxSideLength is split): the points lie a rounding error off
+// the line, so a refined edge's midpoint can fall just outside the convex hull or into the sliver
+// that a point makes. Every refined piece must still carry its side's marker: the marked length
+// equals the side's length (relative 1e-9). Found on xfemm's antiperiodic motor model.
+TEST(GenerateMesh, NearlyCollinearSplitPointsKeepTheirMarkers) {
+  PslgBuilder b;
+  const Point a{0.0062116570824605, 0.0231822198309376}, c{0.0064650817217880, 0.0241280134607978};
+  const int pieces = 3;
+  std::vector<Point> corners;
+  for (int k = 0; k <= pieces; ++k) {
+    const double t = static_cast<double>(k) / pieces;
+    corners.push_back({a.r + t * (c.r - a.r), a.z + t * (c.z - a.z)});
+  }
+  corners.push_back({0.0, 0.0245});
+  corners.push_back({0.0, 0.023});
+  b.polygon(corners);
+  for (int k = 0; k < pieces; ++k) b.pslg.segments[static_cast<std::size_t>(k)].boundary = 5;
+  b.region(0.003, 0.0238, "block", 0.1e-3);
+  const Mesh mesh = generate_mesh(b.pslg, linear());
+  double marked = 0.0;
+  for (const BoundaryEdge& e : mesh.boundary_edges)
+    if (e.boundary == 5) marked += fixtures::edge_length(mesh, e.nodes[0], e.nodes[1]);
+  const double side = std::hypot(c.r - a.r, c.z - a.z);
+  EXPECT_NEAR(marked, side, 1e-9 * side);
+}
+
 // Each side of a rectangle carries its own marker: the marked edges of each side must lie on it,
 // add up to its length (relative 1e-12) and run counter-clockwise (domain on the left).
 TEST(GenerateMesh, BoundaryEdgesCarryTheSegmentMarkers) {
