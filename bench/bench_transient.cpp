@@ -11,6 +11,7 @@
 #include "case/case_file.hpp"
 #include "magnetostatics/solve_problem.hpp"
 #include "transient/transient_solver.hpp"
+#include "valve/valve_chain.hpp"  // registers the case's [valve] section
 
 namespace {
 

@@ -202,8 +202,8 @@ bool Assembler::nonlinear() const {
                      [](const Reluctivity& l) { return l.nonlinear(); });
 }
 
-void Assembler::assemble(const Eigen::VectorXd& a, Eigen::VectorXd& residual,
-                         SparseMatrix* tangent) const {
+void Assembler::assemble(const Eigen::VectorXd& a, Eigen::VectorXd& residual, SparseMatrix* tangent,
+                         ElementSet set) const {
   residual.setZero(dofs_.free_count());
   const int m = mesh_.nodes_per_triangle();
   const int elements = static_cast<int>(mesh_.triangles.size());
@@ -222,6 +222,8 @@ void Assembler::assemble(const Eigen::VectorXd& a, Eigen::VectorXd& residual,
 #pragma omp for schedule(dynamic, 1)
       for (std::size_t c = 0; c < chunks.size(); ++c) {
         for_chunk_elements(chunks[c], [&](int e) {
+          if (set != ElementSet::all && law(e).nonlinear() != (set == ElementSet::nonlinear))
+            return;
           const auto& t = mesh_.triangles[e];
           for (int i = 0; i < m; ++i) a_local[i] = a[t[i]];
           quadrature(e, q);
@@ -239,7 +241,7 @@ void Assembler::assemble(const Eigen::VectorXd& a, Eigen::VectorXd& residual,
       }
     }
   }
-  scatter_robin(a, residual, tangent);
+  if (set != ElementSet::nonlinear) scatter_robin(a, residual, tangent);
 }
 
 void Assembler::robin_local(const RobinEdge& edge, const Eigen::VectorXd& a, double* r_local,

@@ -23,6 +23,11 @@ void set_assembly_threads(int threads);
 /// The setting of set_assembly_threads.
 int assembly_threads();
 
+/// Triangles an assembly covers: every one, those whose material has a constant reluctivity
+/// (with the mixed boundary edges, which are linear too), or those with a B-H curve. The linear
+/// and nonlinear sets add up to all (a solver can assemble the linear part once and reuse it).
+enum class ElementSet { all, linear, nonlinear };
+
 /// A set of free dofs with every triangle and mixed-boundary edge touching them (the patch of a
 /// local correction): the residual rows of `dofs` are complete over `elements` and `edges`.
 struct Patch {
@@ -47,8 +52,9 @@ class Assembler {
 
   /// Free-dof residual of the internal forces plus mixed (Robin) boundary terms at the nodal
   /// values `a` (all nodes, prescribed ones included); also the lower-triangular tangent when
-  /// `tangent` is not null (it must be a copy of pattern()).
-  void assemble(const Eigen::VectorXd& a, Eigen::VectorXd& residual, SparseMatrix* tangent) const;
+  /// `tangent` is not null (it must be a copy of pattern()), over the triangles of `set`.
+  void assemble(const Eigen::VectorXd& a, Eigen::VectorXd& residual, SparseMatrix* tangent,
+                ElementSet set = ElementSet::all) const;
 
   /// The tangent's sparsity pattern (lower triangle, free dofs), values zero.
   const SparseMatrix& pattern() const { return pattern_; }

@@ -142,6 +142,25 @@ double BhCurve::dnu_db2(double b2) const {
   return (dh_db(b) - h(b) / b) / (2.0 * b2);
 }
 
+std::pair<double, double> BhCurve::nu_and_dnu_db2(double b2) const {
+  const double b = std::sqrt(b2);
+  if (b <= b_[1]) return {a_ + c_ * b2, c_};
+  const int k = interval(b);
+  double h = 0.0, dh = 0.0;
+  if (k < 0) {
+    h = b * (a_ + c_ * b * b);
+    dh = a_ + 3.0 * c_ * b * b;
+  } else if (k == static_cast<int>(cubics_.size())) {
+    const double x = b - b_.back();
+    h = h_.back() + kNu0 * x - (end_slope_ - kNu0) * tau_ * std::expm1(-x / tau_);
+    dh = kNu0 + (end_slope_ - kNu0) * std::exp(-x / tau_);
+  } else {
+    h = cubic_h(cubics_[k], b);
+    dh = cubic_dh(cubics_[k], b);
+  }
+  return {h / b, (dh - h / b) / (2.0 * b2)};
+}
+
 double BhCurve::energy_density(double b) const {
   const int k = interval(b);
   if (k < 0) return 0.5 * a_ * b * b + 0.25 * c_ * b * b * b * b;

@@ -2,6 +2,7 @@
 // Monotone smooth B-H curve: H(B), reluctivity nu(|B|^2) = H/B, its derivative and the energy.
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "case/problem.hpp"
@@ -38,6 +39,8 @@ class BhCurve {
   double nu(double b2) const;
   /// d nu / d(b2) [m/(H T^2)], finite at b2 = 0.
   double dnu_db2(double b2) const;
+  /// {nu(b2), dnu_db2(b2)} from one interval search (the same values as the two calls).
+  std::pair<double, double> nu_and_dnu_db2(double b2) const;
   /// Magnetic energy density w(B) = integral_0^B H(b) db [J/m^3].
   double energy_density(double b) const;
 

@@ -122,14 +122,16 @@ void residual_tangent(const ElementQuadrature& q, const double* a, const Relucti
       bz += a[i] * g_z[i];
     }
     const double b2 = br * br + bz * bz;
-    const double nu = law.nu(b2), w = q.weight[p];
+    // One B-H curve evaluation for nu and its slope when the tangent is wanted.
+    const auto [nu, dnu_db2] = tangent ? law.nu_and_dnu_db2(b2) : std::pair{law.nu(b2), 0.0};
+    const double w = q.weight[p];
     double b_dot_g[M];
     for (int i = 0; i < M; ++i) {
       b_dot_g[i] = br * g_r[i] + bz * g_z[i];
       res[i] += w * nu * b_dot_g[i];
     }
     if (!tangent) continue;
-    const double rank_one = 2.0 * law.dnu_db2(b2);
+    const double rank_one = 2.0 * dnu_db2;
     for (int i = 0; i < M; ++i) {
       for (int j = 0; j <= i; ++j) {  // lower triangle; mirrored below (K is symmetric)
         k[i * M + j] +=

@@ -22,6 +22,10 @@ class Reluctivity {
   double nu(double b2) const { return curve_ ? curve_->nu(b2) : nu_linear_; }
   /// d nu/d(b2); 0 for a linear material.
   double dnu_db2(double b2) const { return curve_ ? curve_->dnu_db2(b2) : 0.0; }
+  /// {nu(b2), dnu_db2(b2)} in one evaluation of the curve.
+  std::pair<double, double> nu_and_dnu_db2(double b2) const {
+    return curve_ ? curve_->nu_and_dnu_db2(b2) : std::pair{nu_linear_, 0.0};
+  }
   /// Energy density integral_0^|B| H db [J/m^3] at b2 = |B|^2.
   double energy_density(double b2) const;
 

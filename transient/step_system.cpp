@@ -6,12 +6,22 @@
 
 namespace rheomag::transient {
 
+using magnetostatics::ElementSet;
 using magnetostatics::SparseMatrix;
+
+LinearPart linear_part(const magnetostatics::MagnetostaticSolver& statics) {
+  LinearPart part;
+  part.matrix = statics.assembler().pattern();
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(statics.dofs().free_count());
+  statics.assembler().assemble(statics.free_to_nodes(zero), part.offset, &part.matrix,
+                               ElementSet::linear);
+  return part;
+}
 
 StepSystem::StepSystem(const StepOperators& ops, Setup setup)
     : ops_(ops), setup_(std::move(setup)), n_(static_cast<int>(setup_.x0.size())) {
   if (setup_.jump) setup_.points = {{1.0, 1.0}};
-  for (const auto& [s, w] : setup_.points) s_bar_ += w * s;
+  for (const auto& [s, w] : setup_.points) s_bar_ += w * s, w_sum_ += w;
 }
 
 Eigen::VectorXd StepSystem::nodes(const Eigen::VectorXd& x_free) const {
@@ -38,15 +48,27 @@ double StepSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r) {
   const Eigen::VectorXd delta = x.head(n_) - setup_.x0;
   const double i_bar = mean_current(x);
   r.resize(x.size());
-  Eigen::VectorXd field = Eigen::VectorXd::Zero(n_), part;
-  k_ = assembler.pattern();
-  SparseMatrix tangent = assembler.pattern();
+  Eigen::VectorXd field = Eigen::VectorXd::Zero(n_);
+  const SparseMatrix& pattern = assembler.pattern();
+  if (k_.nonZeros() != pattern.nonZeros()) k_ = tangent_ = pattern;
   Eigen::Map<Eigen::VectorXd> values(k_.valuePtr(), k_.nonZeros());
-  const Eigen::Map<const Eigen::VectorXd> t_values(tangent.valuePtr(), tangent.nonZeros());
-  for (const auto& [s, w] : setup_.points) {
-    assembler.assemble(nodes(setup_.x0 + s * delta), part, &tangent);
-    field += w * part;
-    values += (w * s) * t_values;
+  values.setZero();
+  const Eigen::Map<const Eigen::VectorXd> t_values(tangent_.valuePtr(), tangent_.nonZeros());
+  const ElementSet set = ops_.linear ? ElementSet::nonlinear : ElementSet::all;
+  if (set == ElementSet::all || assembler.nonlinear()) {
+    for (const auto& [s, w] : setup_.points) {
+      assembler.assemble(nodes(setup_.x0 + s * delta), part_, &tangent_, set);
+      field += w * part_;
+      values += (w * s) * t_values;
+    }
+  }
+  if (ops_.linear) {
+    // The affine part at the points: sum_g w_g (c + K x_g) = w_sum c + K (w_sum x0 + s_bar delta).
+    const LinearPart& lin = *ops_.linear;
+    field += w_sum_ * lin.offset +
+             lin.matrix.selfadjointView<Eigen::Lower>() * (w_sum_ * setup_.x0 + s_bar_ * delta);
+    values +=
+        s_bar_ * Eigen::Map<const Eigen::VectorXd>(lin.matrix.valuePtr(), lin.matrix.nonZeros());
   }
   field_work_ = field.dot(delta);
   field -= i_bar * *ops_.drive_source + *ops_.other_source;

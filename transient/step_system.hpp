@@ -12,6 +12,17 @@
 
 namespace rheomag::transient {
 
+/// The linear materials' share of the step residual (triangles without a B-H curve and the
+/// mixed boundary edges), assembled once per run: over the free dofs x it is affine,
+/// r_lin(x) = offset + K x, with K their exact (constant) tangent.
+struct LinearPart {
+  magnetostatics::SparseMatrix matrix;  ///< K, lower triangle, the pattern of the tangent
+  Eigen::VectorXd offset;               ///< r_lin at x = 0 (prescribed values, Robin sources)
+};
+
+/// Assembles the linear part of `statics`' problem once.
+LinearPart linear_part(const magnetostatics::MagnetostaticSolver& statics);
+
 /// Matrices and sources shared by every step of a run (free dofs; matrices lower-triangular,
 /// all with the pattern of the static tangent).
 struct StepOperators {
@@ -21,6 +32,8 @@ struct StepOperators {
   const Eigen::VectorXd* drive_source = nullptr;        ///< F: first circuit at 1 A
   const Eigen::VectorXd* other_source = nullptr;        ///< other circuits, held
   const std::vector<char>* conducting = nullptr;        ///< dofs that cannot jump
+  /// The linear part, or null to assemble every triangle at every point (the reference).
+  const LinearPart* linear = nullptr;
   Eigen::CholmodSupernodalLLT<magnetostatics::SparseMatrix, Eigen::Lower>* cholesky = nullptr;
   /// The factorised step matrix, kept across Newton iterations and steps: a matrix equal to it
   /// is solved directly, one within kRefactorChange by conjugate gradients preconditioned with
@@ -74,6 +87,8 @@ class StepSystem : public magnetostatics::NonlinearSystem {
   static constexpr double kRefactorChange = magnetostatics::MagnetostaticSolver::kRefactorChange;
   /// Sum of w_g s_g (1/2 midpoint, 1 backward Euler).
   double s_bar() const { return s_bar_; }
+  /// The step matrix K (lower triangle) of the last residual call.
+  const magnetostatics::SparseMatrix& step_matrix() const { return k_; }
 
  private:
   Eigen::VectorXd nodes(const Eigen::VectorXd& x_free) const;
@@ -83,11 +98,14 @@ class StepSystem : public magnetostatics::NonlinearSystem {
   Setup setup_;
   int n_ = 0;
   double s_bar_ = 0.0;
+  double w_sum_ = 0.0;              // sum of w_g (1 for every scheme)
   magnetostatics::SparseMatrix k_;  // step matrix at residual_x_ (assembled with the residual)
-  Eigen::VectorXd residual_x_;      // where k_ was assembled
-  double field_work_ = 0.0;         // sum_g w_g R(A_g) . delta at residual_x_
-  bool reuse_ = false;              // solve with CG preconditioned by the kept factor
-  Eigen::VectorXd k_inv_f_;         // K^-1 F (voltage drive)
+  magnetostatics::SparseMatrix tangent_;  // tangent at one point (storage kept across calls)
+  Eigen::VectorXd part_;                  // residual at one point
+  Eigen::VectorXd residual_x_;            // where k_ was assembled
+  double field_work_ = 0.0;               // sum_g w_g R(A_g) . delta at residual_x_
+  bool reuse_ = false;                    // solve with CG preconditioned by the kept factor
+  Eigen::VectorXd k_inv_f_;               // K^-1 F (voltage drive)
   int factorizations_ = 0;
 };
 

@@ -88,6 +88,7 @@ TransientSolver::TransientSolver(magnetostatics::MagnetostaticSolver& statics,
   const auto& assembler = statics_.assembler();
   mass_ = assembler.region_matrix(eddy_.sigma, false);
   micro_ = assembler.region_matrix(eddy_.kappa, true);
+  linear_ = linear_part(statics_);
   drive_source_ = statics_.nodes_to_free(statics_.circuit_source(0));
   other_source_ = Eigen::VectorXd::Zero(drive_source_.size());
   for (std::size_t c = 1; c < problem.circuits.size(); ++c)
@@ -157,8 +158,8 @@ TransientResult TransientSolver::run(const TransientOptions& options,
   record(0.0, before.a, Eigen::VectorXd::Zero(before.a.size()), 0.0);
 
   StepOperators::Factor factor;
-  StepOperators ops{&statics_,      &mass_,       &micro_,    &drive_source_,
-                    &other_source_, &conducting_, &cholesky_, &factor};
+  StepOperators ops{&statics_,    &mass_,   &micro_,    &drive_source_, &other_source_,
+                    &conducting_, &linear_, &cholesky_, &factor};
   const double reference_current =
       std::max({std::abs(options.from_current), std::abs(result.final_current), 1e-3});
   const double scale = std::max(drive_source_.norm(), 1e-300) * reference_current;

@@ -11,6 +11,7 @@
 
 #include "magnetostatics/solver.hpp"
 #include "transient/eddy.hpp"
+#include "transient/step_system.hpp"
 #include "transient/transient_options.hpp"
 
 namespace rheomag::transient {
@@ -110,6 +111,7 @@ class TransientSolver {
   Eigen::VectorXd drive_source_;        // first circuit's unit-current source, free dofs
   Eigen::VectorXd other_source_;        // other circuits at their problem currents, free dofs
   std::vector<char> conducting_;        // free dof has a mass or micro-eddy row
+  LinearPart linear_;                   // linear materials' residual and tangent, assembled once
   Eigen::CholmodSupernodalLLT<magnetostatics::SparseMatrix, Eigen::Lower> cholesky_;
 };
 

@@ -47,6 +47,17 @@ TEST(BhCurve, IsStrictlyMonotoneWithConsistentDerivatives) {
   }
 }
 
+TEST(BhCurve, CombinedReluctivityAndSlopeEqualTheSeparateCalls) {
+  // The element kernel's single evaluation must give exactly nu and dnu_db2 (bitwise: the same
+  // arithmetic), over the first interval, the cubics and the extrapolation beyond the table.
+  const BhCurve curve(test::aisi1010().bh, "AISI 1010");
+  for (double b = 0.0; b < 4.0; b += 0.00731) {
+    const auto [nu, dnu] = curve.nu_and_dnu_db2(b * b);
+    EXPECT_EQ(nu, curve.nu(b * b)) << "B = " << b;
+    EXPECT_EQ(dnu, curve.dnu_db2(b * b)) << "B = " << b;
+  }
+}
+
 TEST(BhCurve, ReluctivityHasAFiniteLimitAtZero) {
   // Reference: nu(0) is the limit of H/B for B -> 0 (tolerance 1e-6 relative) and d nu/d(B^2)
   // is continuous there (no 1/B singularity).
