@@ -64,6 +64,17 @@ OptimiseEvaluator::OptimiseEvaluator(cases::Case base, OptimiseSpec spec)
                        "\" needs the coil wire: set [valve] wire = \"AWG 24\" (or \"0.5 mm\")");
   if (spec_.velocity != 0.0) damper_ = valve::read_damper_options(base_);
   if (spec_.speed != 0.0) brake_ = valve::read_brake_options(base_);
+  for (const auto& [name, density] : spec_.densities) {
+    const auto& materials = base_.problem.materials;
+    const auto used = std::find_if(materials.begin(), materials.end(),
+                                   [&](const auto& m) { return m.name == name; });
+    if (used == materials.end()) {
+      std::string known;
+      for (const auto& m : materials) known += (known.empty() ? "\"" : ", \"") + m.name + "\"";
+      throw InputError(where + ": [optimise.density] names \"" + name +
+                       "\", which is no material of the case (expected one of " + known + ")");
+    }
+  }
   if (uses(spec_, Quantity::mass) || uses(spec_, Quantity::torque_per_mass)) {
     if (base_.problem.symmetry != cases::Symmetry::axisymmetric)
       throw InputError(where + ": \"mass\" needs an axisymmetric case");

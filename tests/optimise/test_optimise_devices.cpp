@@ -123,7 +123,8 @@ TEST(OptimiseDevices, ShortRunsOfTheExamplesImproveAndStayFeasible) {
 }
 
 // Bad input: a device quantity without its operating point names the missing key; mass without
-// a density names the material; a damper velocity on a case without [damper] says so.
+// a density names the material, a density of a material the case does not use (a typo) names it
+// and lists the case's materials; a damper velocity on a case without [damper] says so.
 TEST(OptimiseDevices, MissingOperatingPointsAndDensitiesAreInputErrors) {
   const auto error = [](const cases::Case& c) -> std::string {
     try {
@@ -146,6 +147,14 @@ TEST(OptimiseDevices, MissingOperatingPointsAndDensitiesAreInputErrors) {
     const std::string message = error(cases::parse_case(text, "b.toml"));
     EXPECT_NE(message.find("Copper"), std::string::npos) << message;
     EXPECT_NE(message.find("optimise.density"), std::string::npos) << message;
+  }
+  {
+    std::string text =
+        cases::read_input_file(std::string(RHEOMAG_SOURCE_DIR) + "/cases/optimise_brake.toml");
+    replace(text, "\"Copper\" = 8960.0", "\"Coper\" = 8960.0");
+    const std::string message = error(cases::parse_case(text, "b.toml"));
+    EXPECT_NE(message.find("\"Coper\""), std::string::npos) << message;
+    EXPECT_NE(message.find("\"Copper\""), std::string::npos) << message;
   }
   {
     const auto c = optimise_fixture::make_case(R"(
