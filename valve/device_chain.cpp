@@ -8,7 +8,10 @@
 namespace rheomag::valve {
 
 DeviceChain::DeviceChain(const cases::Case& c, std::string device)
-    : device_(std::move(device)), valve_options_(read_valve_options(c)) {
+    : DeviceChain(c, std::move(device), read_valve_options(c)) {}
+
+DeviceChain::DeviceChain(const cases::Case& c, std::string device, ValveOptions options)
+    : device_(std::move(device)), valve_options_(std::move(options)) {
   fluid_ = case_fluid(c);
   if (c.problem.circuits.empty())
     throw InputError(c.source.string() + ": the case has no coil circuit");
@@ -18,8 +21,10 @@ DeviceChain::DeviceChain(const cases::Case& c, std::string device)
 
 CoilProperties DeviceChain::coil(double current, double inductance) const {
   if (valve_options_.wire.empty())
-    throw InputError(device_ +
-                     ": the coil resistance needs the wire: set [valve] wire in the case");
+    throw InputError(
+        device_ +
+        ": the coil resistance needs the wire: set [valve] wire = \"AWG 24\" (or \"0.5 mm\") "
+        "in the case (or pass --wire where the command offers it)");
   return coil_properties(coil_, current, inductance);
 }
 

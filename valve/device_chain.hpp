@@ -12,7 +12,7 @@
 #include "magnetostatics/solver.hpp"
 #include "valve/coil.hpp"
 #include "valve/field_solve.hpp"
-#include "valve/valve_chain.hpp"
+#include "valve/valve_options.hpp"
 
 namespace rheomag::valve {
 
@@ -22,6 +22,8 @@ class DeviceChain {
   /// `device` names the device in messages ("damper", "brake"). InputError if the case has no
   /// coil or no fluid.
   DeviceChain(const cases::Case& c, std::string device);
+  /// The same with the [valve] options given (e.g. overridden on the command line).
+  DeviceChain(const cases::Case& c, std::string device, ValveOptions options);
   /// Coil quantities at `current` with inductance `inductance` (needs [valve] wire).
   CoilProperties coil(double current, double inductance) const;
   const fluid::Fluid& fluid() const { return fluid_; }

@@ -14,26 +14,10 @@
 #include "fluid/passage.hpp"
 #include "magnetostatics/solve_problem.hpp"
 #include "valve/coil.hpp"
+#include "valve/device_chain.hpp"
+#include "valve/valve_options.hpp"
 
 namespace rheomag::valve {
-
-/// [valve] (this layer's) and [damper] (reserved for damper devices) are sections of case files.
-inline const bool kValveSectionsRegistered =
-    cases::register_case_section("valve") && cases::register_case_section("damper");
-
-/// Options of the [valve] table of a case file (docs/fluid.md); all optional except where noted.
-struct ValveOptions {
-  std::string wire;            ///< wire gauge, e.g. "AWG 24" (needed for the coil resistance)
-  double wire_diameter = 0.0;  ///< its bare diameter [m] (0: from `wire`'s text)
-  double temperature = 20.0;   ///< coil temperature [deg C]
-  double inlet_radius = 0.0;   ///< radial gaps starting on the axis start here instead [m]
-  std::vector<double> flows;   ///< default flow rates [m^3/s]
-  std::vector<fluid::Passage> passages;  ///< unmagnetised passages in series ([[valve.passage]])
-  std::vector<fluid::MinorLoss> losses;  ///< minor losses in series ([[valve.loss]])
-};
-
-/// Reads the [valve] table of a case (absent: defaults). InputError names unknown keys.
-ValveOptions read_valve_options(const cases::Case& c);
 
 /// What a segment of the valve's flow path is.
 enum class SegmentKind {
@@ -73,7 +57,7 @@ struct ValvePoint {
 
 /// A case's valve: mesh and solver set up once, then any number of operating points. (For a
 /// field that is already solved, use SolvedValve in fluid/solved_valve.hpp.)
-class ValveChain {
+class ValveChain : public DeviceChain {
  public:
   /// Meshes the case and prepares the solver (no solve yet); InputError if it has no gap, no
   /// coil or no fluid.
@@ -82,18 +66,8 @@ class ValveChain {
   /// (current-major order).
   std::vector<ValvePoint> evaluate(const std::vector<double>& currents,
                                    const std::vector<double>& flows);
-  /// Coil quantities at `current` with inductance `inductance` (needs ValveOptions::wire).
-  CoilProperties coil(double current, double inductance) const;
-  /// The fluid of the gaps.
-  const fluid::Fluid& fluid() const { return fluid_; }
   /// The turns of the first circuit.
   double turns() const { return coil_.turns; }
-
- private:
-  std::unique_ptr<magnetostatics::MagnetostaticSolver> solver_;
-  fluid::Fluid fluid_;
-  ValveOptions options_;
-  CoilSpec coil_;
 };
 
 }  // namespace rheomag::valve
