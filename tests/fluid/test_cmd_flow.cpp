@@ -3,10 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <array>
 #include <cmath>
-#include <cstdio>
 #include <regex>
 #include <string>
 #include <vector>
@@ -16,26 +13,16 @@
 #include "fluid/radial_bingham.hpp"
 #include "fluid/shear_mode.hpp"
 #include "fluid/slit_bingham.hpp"
+#include "tests/cli_run.hpp"
 
 using namespace rheomag::fluid;
 
 namespace {
 
-struct CliRun {
-  int exit_code = -1;
-  std::string out;
-};
+using rheomag::cli_test::CliRun;
 
 CliRun run(const std::string& args) {
-  const std::string command = std::string(RHEOMAG_BINARY) + " " + args + " 2>/dev/null";
-  CliRun result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 512> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe)) result.out += buffer.data();
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
+  return rheomag::cli_test::run_rheomag(args);
 }
 
 double json_number(const std::string& json, const std::string& key) {
@@ -69,10 +56,10 @@ TEST(CmdFlow, AnnularExactAndApproxJson) {
       "--viscosity 0.106 --flow 1e-6 --json";
   const AnnulusGeometry g{1e-3, 0.0195, 0.01};
   const CliRun exact = run(common);
-  ASSERT_EQ(exact.exit_code, 0) << exact.out;
+  ASSERT_EQ(exact.code, 0) << exact.out;
   expect_matches(exact.out, annulus_bingham(g, 2e4, 0.106, 1e-6));
   const CliRun approx = run(common + " --model approx");
-  ASSERT_EQ(approx.exit_code, 0);
+  ASSERT_EQ(approx.code, 0);
   expect_matches(approx.out, annulus_paper000(g, 2e4, 0.106, 1e-6));
   // Sanity of magnitude: dp ~ 2 tau_y L / h = 4 bar for Bi >> 1 (slit limit c -> 2).
   EXPECT_NEAR(json_number(exact.out, "dp") / 4e5, 1.0, 0.05);
@@ -82,7 +69,7 @@ TEST(CmdFlow, RadialJson) {
   const CliRun r =
       run("flow --kind radial --gap 0.5e-3 --r-in 0.005 --r-out 0.02 --tau-y 3e4 --viscosity 0.11 "
           "--flow 2e-5 --json");
-  ASSERT_EQ(r.exit_code, 0) << r.out;
+  ASSERT_EQ(r.code, 0) << r.out;
   expect_matches(r.out, radial_bingham(RadialGeometry{0.5e-3, 0.005, 0.02}, 3e4, 0.11, 2e-5));
 }
 
@@ -105,7 +92,7 @@ TEST(CmdFlow, BadInputExitsTwo) {
            "flow --kind annular --gap 1e-3 --length 0.01 --radius 0.02 --model magic" + tail,
        }) {
     const CliRun r = run(args);
-    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_EQ(r.code, 2) << args;
     EXPECT_TRUE(r.out.empty()) << args << " printed " << r.out;
   }
 }
@@ -115,7 +102,7 @@ TEST(CmdShear, DrumAndDiscJson) {
   const CliRun drum =
       run("shear --kind drum --r-in 0.02 --r-out 0.021 --length 0.03 --tau-y 2e4 --viscosity 0.1 "
           "--speed 10 --json");
-  ASSERT_EQ(drum.exit_code, 0) << drum.out;
+  ASSERT_EQ(drum.code, 0) << drum.out;
   const ShearTorque t =
       drum_torque(DrumGeometry{0.02, 0.021, 0.03}, GapRheology{2e4, 0.1, 1.0}, 10.0);
   EXPECT_NEAR(json_number(drum.out, "torque") / t.torque, 1.0, 1e-10);
@@ -125,7 +112,7 @@ TEST(CmdShear, DrumAndDiscJson) {
   const CliRun disc =
       run("shear --kind disc --r-in 0.01 --r-out 0.05 --gap 1e-3 --faces 2 --tau-y 3e4 "
           "--viscosity 0.1 --speed -50 --json");
-  ASSERT_EQ(disc.exit_code, 0) << disc.out;
+  ASSERT_EQ(disc.code, 0) << disc.out;
   const ShearTorque d =
       disc_torque(DiscGeometry{0.01, 0.05, 1e-3, 2}, GapRheology{3e4, 0.1, 1.0}, -50.0);
   EXPECT_NEAR(json_number(disc.out, "torque") / d.torque, 1.0, 1e-10);
@@ -138,7 +125,7 @@ TEST(CmdShear, FlowWithWallVelocityAndSlit) {
   const CliRun slit =
       run("flow --kind slit --gap 1e-3 --width 0.05 --length 0.02 --tau-y 2e4 --viscosity 0.1 "
           "--flow 1e-7 --wall-velocity 0.1 --json");
-  ASSERT_EQ(slit.exit_code, 0) << slit.out;
+  ASSERT_EQ(slit.code, 0) << slit.out;
   const MixedModeDrop s =
       slit_mixed_mode(SlitGeometry{1e-3, 0.05, 0.02}, GapRheology{2e4, 0.1, 1.0}, 0.1, 1e-7);
   EXPECT_NEAR(json_number(slit.out, "dp"), s.drop.dp, 1e-10 * std::abs(s.drop.dp));
@@ -150,7 +137,7 @@ TEST(CmdShear, FlowWithWallVelocityAndSlit) {
   const CliRun back = run(
       "flow --kind annular --gap 1e-3 --length 0.02 --radius 0.0195 --tau-y 2e4 --viscosity 0.1 "
       "--flow -1e-6 --wall-velocity -0.1 --json");
-  ASSERT_EQ(back.exit_code, 0) << back.out;
+  ASSERT_EQ(back.code, 0) << back.out;
   EXPECT_LT(json_number(back.out, "dp"), 0.0);
 }
 
@@ -180,7 +167,7 @@ TEST(CmdShear, BadInputExitsTwo) {
            "--flow 1e-6 --wall-velocity 0.1",
        }) {
     const CliRun r = run(args);
-    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_EQ(r.code, 2) << args;
     EXPECT_TRUE(r.out.empty()) << args << " printed " << r.out;
   }
 }

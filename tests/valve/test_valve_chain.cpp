@@ -2,9 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <array>
-#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -12,6 +9,7 @@
 #include "core/error.hpp"
 #include "fluid/newtonian.hpp"
 #include "magnetostatics/solve_problem.hpp"
+#include "tests/cli_run.hpp"
 #include "valve/valve_chain.hpp"
 
 using namespace rheomag;
@@ -79,16 +77,10 @@ TEST(ValveChain, BadInputThrows) {
 
 // The CLI: keys of the fixed interface and values equal to the library's.
 TEST(CmdValve, JsonKeysAndValues) {
-  const std::string command = std::string(RHEOMAG_BINARY) + " valve " + kCase +
-                              " --current 0,1 --flow 1e-6 --wire 'AWG 24' --json 2>/dev/null";
-  FILE* pipe = popen(command.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string out;
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe)) out += buffer.data();
-  const int status = pclose(pipe);
-  ASSERT_TRUE(WIFEXITED(status));
-  ASSERT_EQ(WEXITSTATUS(status), 0) << out;
+  const auto run = cli_test::run_rheomag(std::string("valve ") + kCase +
+                                         " --current 0,1 --flow 1e-6 --wire 'AWG 24' --json");
+  ASSERT_EQ(run.code, 0) << run.err;
+  const std::string& out = run.out;
   const auto json = nlohmann::json::parse(out);
   ASSERT_EQ(json["points"].size(), 2u);
   for (const char* key : {"current", "flow", "dp_total", "dp_yield", "dp_viscous", "segments"})
@@ -98,11 +90,9 @@ TEST(CmdValve, JsonKeysAndValues) {
   const auto points = annular_chain().evaluate({1.0}, {1e-6});
   EXPECT_NEAR(json["points"][1]["dp_total"].get<double>() / points[0].dp_total, 1.0, 1e-9);
   EXPECT_EQ(json["points"][0]["dp_yield"].get<double>(), 0.0);
-  const std::string bad =
-      std::string(RHEOMAG_BINARY) + " valve " + std::string(RHEOMAG_SOURCE_DIR) +
-      "/cases/radial_valve.toml --current 1 2>/dev/null >/dev/null";  // no flow rate
-  const int bad_status = std::system(bad.c_str());
-  EXPECT_EQ(WEXITSTATUS(bad_status), 2);
+  const auto bad = cli_test::run_rheomag("valve " + std::string(RHEOMAG_SOURCE_DIR) +
+                                         "/cases/radial_valve.toml --current 1");  // no flow rate
+  EXPECT_EQ(bad.code, 2);
 }
 
 // L(I) table of `rheomag valve --json`. References: lambda = L I by definition of the secant
@@ -111,14 +101,10 @@ TEST(CmdValve, JsonKeysAndValues) {
 // MagnetostaticSolver::sweep on the same case within Newton's tolerance (1e-6 relative; the
 // sweep warm-starts each current, the valve starts each from A = 0).
 TEST(CmdValve, InductanceTable) {
-  const std::string command = std::string(RHEOMAG_BINARY) + " valve " + kCase +
-                              " --current 0,0.5,1 --flow 1e-6 --json 2>/dev/null";
-  FILE* pipe = popen(command.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string out;
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe)) out += buffer.data();
-  ASSERT_EQ(WEXITSTATUS(pclose(pipe)), 0) << out;
+  const auto run = cli_test::run_rheomag(std::string("valve ") + kCase +
+                                         " --current 0,0.5,1 --flow 1e-6 --json");
+  ASSERT_EQ(run.code, 0) << run.err;
+  const std::string& out = run.out;
   const auto table = nlohmann::json::parse(out)["coil"]["inductance_table"];
   ASSERT_EQ(table.size(), 3u);
   auto solved = magnetostatics::solve_problem(cases::load_case(kCase).problem);
