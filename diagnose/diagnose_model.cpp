@@ -509,18 +509,21 @@ std::vector<double> DiagnosisModel::delayed(std::vector<double> y,
                                             const std::vector<double>& values) const {
   const double delay = values.at(static_params().size() - nuisance_count());
   if (delay == 0.0) return y;
-  // y(t - delay) by linear interpolation between samples (held at the ends).
+  // y(t - delay) by linear interpolation between samples (held at the ends). The shifted times
+  // increase with k, so one sweep finds each one's interval (no search per sample).
   const auto& t = rec_.t;
+  const std::size_t n = t.size();
   std::vector<double> out(y.size());
-  for (std::size_t k = 0; k < t.size(); ++k) {
+  std::size_t upper = 0;  // first sample after the shifted time
+  for (std::size_t k = 0; k < n; ++k) {
     const double tk = t[k] - delay;
-    auto it = std::upper_bound(t.begin(), t.end(), tk);
-    if (it == t.begin()) {
+    while (upper < n && t[upper] <= tk) ++upper;
+    if (upper == 0) {
       out[k] = y.front();
-    } else if (it == t.end()) {
+    } else if (upper == n) {
       out[k] = y.back();
     } else {
-      const auto j = static_cast<std::size_t>(it - t.begin()) - 1;
+      const std::size_t j = upper - 1;
       const double w = (tk - t[j]) / (t[j + 1] - t[j]);
       out[k] = (1.0 - w) * y[j] + w * y[j + 1];
     }
