@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "diagnose/diagnose_report.hpp"
 #include "diagnose/diagnose_run.hpp"
+#include "lumped/fit_model_json.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording_excerpt.hpp"
 #include "lumped/recording_io.hpp"
@@ -25,6 +26,7 @@ struct DiagnoseCliOptions {
   std::string meta;
   std::string out;
   std::string samples;
+  std::string baseline;
   bool json = false;
   bool quiet = false;
 };
@@ -101,10 +103,16 @@ const bool registered = app::register_command([](CLI::App& root) {
       "   forward selection, then a joint re-fit. Candidates that explain the data equally are\n"
       "   reported together.\n"
       "Exit 2 for bad input (recording format, missing sidecar keys, a [valve] case that does not\n"
-      "exist or solve, recording too short/flat).");
+      "exist or solve, a --baseline model of another rig or other columns, recording too\n"
+      "short/flat).");
   cmd->add_option("recording", o->recording, "Recording CSV (fixed format; sidecar beside it)")
       ->required();
   cmd->add_option("--meta", o->meta, "Sidecar TOML to use instead of the one beside the CSV");
+  cmd->add_option("--baseline", o->baseline,
+                  "Fitted-model JSON ('rheomag fit --json' or 'fit-family --json', grey-box or "
+                  "valve-chain) to use as the baseline instead of the sidecar's rig: its output "
+                  "is the baseline, its parameters are held, its output scale and offset "
+                  "calibrated; candidates act on its inputs and output");
   cmd->add_option("--out", o->out, "Folder for diagnosis.json, report.html and traces.csv");
   cmd->add_option("--samples", o->samples,
                   "Diagnose only samples a:b (half-open indices; 'a:' to the end), e.g. an excerpt "
@@ -117,6 +125,9 @@ const bool registered = app::register_command([](CLI::App& root) {
     if (!o->samples.empty())
       rec = lumped::excerpt(rec, lumped::parse_sample_range(o->samples, rec.t.size(), "--samples"));
     diagnose::DiagnoseOptions options;
+    if (!o->baseline.empty())
+      options.baseline_model =
+          diagnose::ModelBaseline{lumped::read_fit_model_json(o->baseline), o->baseline};
     if (!o->quiet)
       options.progress = [](const ProgressEvent& e) {
         std::cerr << "diagnose: " << e.stage << (e.detail.empty() ? "" : " ") << e.detail << "\n";

@@ -53,7 +53,22 @@ bool has(const std::vector<std::string>& list, const std::string& name) {
 
 }  // namespace
 
-DiagnosisModel::DiagnosisModel(const lumped::Recording& rec) : rec_(rec) {
+double median_interval(const std::vector<double>& t) {
+  if (t.size() < 2) return 1.0;
+  std::vector<double> dt(t.size() - 1);
+  for (std::size_t k = 0; k + 1 < t.size(); ++k) dt[k] = t[k + 1] - t[k];
+  std::nth_element(dt.begin(), dt.begin() + static_cast<std::ptrdiff_t>(dt.size() / 2), dt.end());
+  return dt[dt.size() / 2];
+}
+
+namespace {}  // namespace
+
+DiagnosisModel::DiagnosisModel(const lumped::Recording& rec, const ModelBaseline* fitted)
+    : rec_(rec) {
+  if (fitted) {
+    from_fitted_model(*fitted);
+    return;
+  }
   const auto& meta = rec.meta;
   const std::string where = meta.sidecar_path.empty() ? std::string("sidecar") : meta.sidecar_path;
   auto include = [&](const std::string& name, double value, const std::string& unit,
@@ -114,13 +129,7 @@ DiagnosisModel::DiagnosisModel(const lumped::Recording& rec) : rec_(rec) {
             voltage_driven ? "sidecar [coil] inductance (L-R coil)"
                            : "sidecar [coil] inductance (no effect: the current is imposed)");
   }
-  const auto& t = rec.t;
-  if (t.size() >= 2) {
-    std::vector<double> dt(t.size() - 1);
-    for (std::size_t k = 0; k + 1 < t.size(); ++k) dt[k] = t[k + 1] - t[k];
-    std::nth_element(dt.begin(), dt.begin() + static_cast<std::ptrdiff_t>(dt.size() / 2), dt.end());
-    sample_interval_ = dt[dt.size() / 2];
-  }
+  sample_interval_ = median_interval(rec.t);
   if (base_.kind != RigKind::coil_bench) {
     if (!has(meta.drive, "velocity"))
       throw InputError(where + ": [recording] drive must include velocity for a " + kind_name +
@@ -180,21 +189,7 @@ DiagnosisModel::DiagnosisModel(const lumped::Recording& rec) : rec_(rec) {
     for (double& y : measured_) y *= o->second;
     include("orientation", o->second, "", "sidecar [rig] orientation");
   }
-  for (const auto& c : lumped::rig_drive_columns(base_)) {
-    const auto& u = rec_.column(c);
-    if (!constant_field_ || c != "current") drive_noise_[c] = noise_sigma(u);
-  }
-  // A noisy velocity is smoothed before the model sees it: the inertance reads its slope, which
-  // white noise of std s makes noisy by sqrt(2) s / dt (errors in variables).
-  if (base_.kind != RigKind::coil_bench) {
-    const auto& v = rec_.column("velocity");
-    const auto [vmin, vmax] = std::minmax_element(v.begin(), v.end());
-    if (drive_noise_["velocity"] > kNoisyDrive * (*vmax - *vmin)) {
-      auto smooth = savitzky_golay(v, sample_interval_, kVelocityFilterHalfWidth);
-      rec_.columns["velocity"] = std::move(smooth.values);
-      velocity_filter_bandwidth_ = smooth.bandwidth;
-    }
-  }
+  drive_noise_and_filter();
   // The pre-yield smoothness is a nuisance only where the flow reverses (beyond its noise).
   if (base_.kind != RigKind::coil_bench) {
     const auto& v = rec_.column("velocity");
@@ -203,11 +198,34 @@ DiagnosisModel::DiagnosisModel(const lumped::Recording& rec) : rec_(rec) {
     smoothing_nuisance_ =
         *vmin < -std::max(floor, 0.01 * *vmax) && *vmax > std::max(floor, 0.01 * -*vmin);
   }
-  const double mean = std::accumulate(measured_.begin(), measured_.end(), 0.0) /
-                      static_cast<double>(measured_.size());
+  output_rms_ = spread(measured_);
+}
+
+double DiagnosisModel::spread(const std::vector<double>& y) {
+  const double mean = std::accumulate(y.begin(), y.end(), 0.0) / static_cast<double>(y.size());
   double var = 0.0;
-  for (double y : measured_) var += (y - mean) * (y - mean);
-  output_rms_ = std::max(std::sqrt(var / static_cast<double>(measured_.size())), 1e-300);
+  for (double v : y) var += (v - mean) * (v - mean);
+  return std::max(std::sqrt(var / static_cast<double>(y.size())), 1e-300);
+}
+
+void DiagnosisModel::drive_noise_and_filter() {
+  const std::vector<std::string> columns =
+      fitted_ ? rec_.meta.drive : lumped::rig_drive_columns(base_);
+  for (const auto& c : columns) {
+    const auto& u = rec_.column(c);
+    if (!constant_field_ || c != "current") drive_noise_[c] = noise_sigma(u);
+  }
+  // A noisy velocity is smoothed before the model sees it: the inertance reads its slope, which
+  // white noise of std s makes noisy by sqrt(2) s / dt (errors in variables).
+  if (base_.kind != RigKind::coil_bench && rec_.columns.count("velocity")) {
+    const auto& v = rec_.column("velocity");
+    const auto [vmin, vmax] = std::minmax_element(v.begin(), v.end());
+    if (drive_noise_["velocity"] > kNoisyDrive * (*vmax - *vmin)) {
+      auto smooth = savitzky_golay(v, sample_interval_, kVelocityFilterHalfWidth);
+      rec_.columns["velocity"] = std::move(smooth.values);
+      velocity_filter_bandwidth_ = smooth.bandwidth;
+    }
+  }
 }
 
 void DiagnosisModel::chain_map(const std::string& where) {
@@ -267,6 +285,29 @@ lumped::DuhemBlock duhem_field(double a, double d) {
 
 std::vector<Effect> DiagnosisModel::applicable_effects() const {
   std::vector<Effect> out;
+  if (fitted_) {
+    // Blocks on the model's inputs (field lags, hysteresis, the coil's L/R) and on its output
+    // (inertia, friction); chamber compliances and coil heating sit inside the rig's hydraulic or
+    // electric loop and cannot be composed with a model that is not a rig (docs/diagnosis.md).
+    if (!field_column_.empty() && !constant_field_) {
+      out.push_back(Effect::mr_response_time);
+      out.push_back(Effect::eddy_currents);
+      if (field_column_ == "current" || field_column_ == "current_cmd")
+        out.push_back(Effect::magnetic_hysteresis);
+      else if (rec_.meta.coil.resistance && !(base_.coil.inductance > 0.0))
+        out.push_back(Effect::coil_inductance);
+    }
+    if (base_.kind != RigKind::coil_bench && base_.piston_area > 0.0 &&
+        rec_.columns.count("velocity")) {
+      const auto& v = rec_.column("velocity");
+      const auto [vmin, vmax] = std::minmax_element(v.begin(), v.end());
+      const double noise = drive_noise_.count("velocity") ? drive_noise_.at("velocity") : 0.0;
+      if (*vmax - *vmin > 10.0 * noise) out.push_back(Effect::fluid_inertia);
+    }
+    if (base_.kind == RigKind::damper && rec_.columns.count("velocity"))
+      out.push_back(Effect::friction);
+    return out;
+  }
   if (base_.kind != RigKind::coil_bench) {
     out.push_back(Effect::compressibility);
     // The pre-yield branch shows where the flow reverses and the plug re-forms.
@@ -296,7 +337,13 @@ std::vector<Effect> DiagnosisModel::applicable_effects() const {
 
 std::vector<ParamDef> DiagnosisModel::static_params() const {
   std::vector<ParamDef> p;
-  if (base_.kind == RigKind::coil_bench) {
+  if (fitted_) {
+    // The model's own parameters are held; its output's level is calibrated (a drift of the
+    // fluid, temperature or sensor gain between the two test days is not missing physics).
+    p.push_back({"output_scale", 1.0, 0.5, 2.0, false, 1.0});
+    p.push_back(
+        {"output_offset", 0.0, -10.0 * output_rms_, 10.0 * output_rms_, false, output_rms_});
+  } else if (base_.kind == RigKind::coil_bench) {
     const double r = base_.coil.resistance_20c;
     p.push_back({"coil_resistance", r, 0.2 * r, 5.0 * r, true, 1.0});
   } else {
@@ -389,7 +436,9 @@ RigSpec DiagnosisModel::spec(const std::vector<Effect>& effects,
                              const std::vector<double>& values) const {
   RigSpec s = base_;
   std::size_t k = 0;
-  if (s.kind == RigKind::coil_bench) {
+  if (fitted_) {
+    k = static_params().size();  // output scale and offset, delay: applied to the output
+  } else if (s.kind == RigKind::coil_bench) {
     s.coil.resistance_20c = values.at(k++);
   } else {
     s.valve.yield_scale = values.at(k++);
@@ -399,8 +448,10 @@ RigSpec DiagnosisModel::spec(const std::vector<Effect>& effects,
       s.valve.viscous_resistance = values.at(k++);
     if (s.kind == RigKind::damper) s.gas_force = values.at(k++);
   }
-  ++k;  // delay: applied to the output (predict)
-  if (smoothing_nuisance_) s.valve.regularisation_flow = values.at(k++);
+  if (!fitted_) {
+    ++k;  // delay: applied to the output (predict)
+    if (smoothing_nuisance_) s.valve.regularisation_flow = values.at(k++);
+  }
   double linear_compliance = 0.0;
   for (Effect e : effects) {
     switch (e) {
@@ -458,18 +509,21 @@ std::vector<double> DiagnosisModel::delayed(std::vector<double> y,
                                             const std::vector<double>& values) const {
   const double delay = values.at(static_params().size() - nuisance_count());
   if (delay == 0.0) return y;
-  // y(t - delay) by linear interpolation between samples (held at the ends).
+  // y(t - delay) by linear interpolation between samples (held at the ends). The shifted times
+  // increase with k, so one sweep finds each one's interval (no search per sample).
   const auto& t = rec_.t;
+  const std::size_t n = t.size();
   std::vector<double> out(y.size());
-  for (std::size_t k = 0; k < t.size(); ++k) {
+  std::size_t upper = 0;  // first sample after the shifted time
+  for (std::size_t k = 0; k < n; ++k) {
     const double tk = t[k] - delay;
-    auto it = std::upper_bound(t.begin(), t.end(), tk);
-    if (it == t.begin()) {
+    while (upper < n && t[upper] <= tk) ++upper;
+    if (upper == 0) {
       out[k] = y.front();
-    } else if (it == t.end()) {
+    } else if (upper == n) {
       out[k] = y.back();
     } else {
-      const auto j = static_cast<std::size_t>(it - t.begin()) - 1;
+      const std::size_t j = upper - 1;
       const double w = (tk - t[j]) / (t[j + 1] - t[j]);
       out[k] = (1.0 - w) * y[j] + w * y[j + 1];
     }
@@ -479,6 +533,7 @@ std::vector<double> DiagnosisModel::delayed(std::vector<double> y,
 
 std::vector<double> DiagnosisModel::predict(const std::vector<Effect>& effects,
                                             const std::vector<double>& values) const {
+  if (fitted_) return delayed(predict_fitted(effects, values), values);
   auto sim = lumped::simulate_rig(spec(effects, values), rec_);
   return delayed(std::move(sim.columns.at(output_)), values);
 }
@@ -486,6 +541,8 @@ std::vector<double> DiagnosisModel::predict(const std::vector<Effect>& effects,
 std::vector<double> DiagnosisModel::predict_column(const std::vector<Effect>& effects,
                                                    const std::vector<double>& values,
                                                    const std::string& column) const {
+  // A fitted model simulates its output only: other columns are what was recorded.
+  if (fitted_) return column == output_ ? predict(effects, values) : rec_.column(column);
   auto sim = lumped::simulate_rig(spec(effects, values), rec_);
   return delayed(std::move(sim.columns.at(column)), values);
 }

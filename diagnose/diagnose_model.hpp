@@ -6,9 +6,11 @@
 // named SI parameters.
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "lumped/fit_model_json.hpp"
 #include "lumped/recording.hpp"
 #include "lumped/rig_model.hpp"
 
@@ -63,12 +65,22 @@ inline constexpr int kDiagnosisGridSubsteps = 1;
 /// dh/dt = a |di/dt| (i - h) + d di/dt (paper 004 eqs. 2-3 with b1 b2 = 1, b2 -> 0).
 lumped::DuhemBlock duhem_field(double a, double d);
 
+/// [s] median interval between the sample times `t` (1 for fewer than two samples).
+double median_interval(const std::vector<double>& t);
+
 /// One thing the baseline contains, and where it came from (reported as baseline.includes).
 struct BaselineItem {
   std::string name;    ///< e.g. "coil_inductance"
   double value = 0.0;  ///< SI (0 for non-numeric items such as the valve case)
   std::string unit;    ///< SI unit of value ("" when dimensionless or not numeric)
   std::string source;  ///< e.g. "sidecar [coil] inductance", with how it is used
+};
+
+/// A fitted model (`rheomag fit --json`, read by lumped::read_fit_model_json) as the baseline of a
+/// diagnosis, and the file it came from (named in messages and in baseline.includes).
+struct ModelBaseline {
+  lumped::FitModel model;
+  std::string file;
 };
 
 /// One fitted parameter: its SI name, start value and bounds; log-scaled parameters are fitted as
@@ -85,8 +97,11 @@ struct ParamDef {
 /// The baseline rig of a recording and the layout of the parameter vector for a set of effects.
 class DiagnosisModel {
  public:
-  /// Builds the baseline from the sidecar of `rec`; throws InputError naming a missing key.
-  explicit DiagnosisModel(const lumped::Recording& rec);
+  /// Builds the baseline from the sidecar of `rec`, or from `fitted` when given (its simulated
+  /// output, parameters held, output scale and offset calibrated; candidates as blocks on its
+  /// inputs and output). Throws InputError naming a missing key, or a model of another rig kind
+  /// or other drive/output columns than the recording.
+  explicit DiagnosisModel(const lumped::Recording& rec, const ModelBaseline* fitted = nullptr);
 
   /// Effects that can show in this recording (e.g. friction only on a damper's force, coil
   /// effects only when the coil is voltage driven).
@@ -133,6 +148,8 @@ class DiagnosisModel {
   bool constant_field() const { return constant_field_; }
   /// What the baseline contains from the sidecar (or the model it was given).
   const std::vector<BaselineItem>& includes() const { return includes_; }
+  /// True when the baseline is a fitted model (ModelBaseline) rather than the sidecar's rig.
+  bool fitted_baseline() const { return fitted_ != nullptr; }
   /// [s] median sample interval.
   double sample_interval() const { return sample_interval_; }
   /// [m^3/s] largest |piston flow| of the recording (0 on a coil bench).
@@ -155,10 +172,21 @@ class DiagnosisModel {
   double peak_flow_ = 0.0;
   double velocity_filter_bandwidth_ = 0.0;
   bool smoothing_nuisance_ = false;  ///< the flow reverses: the pre-yield smoothness is calibrated
-  bool fe_chain_ = false;  ///< the static map is the FE chain of [valve] case  ///< the flow
-                           ///< reverses: the pre-yield smoothness is calibrated
+  bool fe_chain_ = false;            ///< the static map is the FE chain of [valve] case
+  std::shared_ptr<const lumped::FitModel> fitted_;  ///< the fitted-model baseline, if any
+  std::string field_column_;  ///< fitted baseline: the model's field drive column ("" if none)
+  double model_sign_ = 1.0;   ///< fitted baseline: sign of its output's correlation with velocity
   std::vector<BaselineItem> includes_;
   std::map<std::string, double> drive_noise_;
+  /// Standard deviation of `y` about its mean (floored at 1e-300).
+  static double spread(const std::vector<double>& y);
+  /// Builds the baseline from a fitted model (diagnose_fitted_baseline.cpp).
+  void from_fitted_model(const ModelBaseline& fitted);
+  /// Estimates the drives' white noise and smooths a noisy velocity (errors in variables).
+  void drive_noise_and_filter();
+  /// Output of the fitted-model baseline with `effects` as blocks on its inputs and output.
+  std::vector<double> predict_fitted(const std::vector<Effect>& effects,
+                                     const std::vector<double>& values) const;
   /// Tabulates the FE chain of [valve] case as the static map (InputError naming it if it fails).
   void chain_map(const std::string& where);
   /// Puts the stated chambers' oil compliance in the baseline when it is not negligible.

@@ -438,7 +438,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
          "in " + num(std::chrono::duration<double>(now - stage_start).count()) + " s"});
     stage_start = now;
   };
-  DiagnosisModel model(rec);
+  DiagnosisModel model(rec, options.baseline_model ? &*options.baseline_model : nullptr);
   check_informative(model);
   Diagnosis d;
   d.recording = rec.csv_path;
@@ -647,6 +647,10 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
     d.notes.push_back(
         "[rig] chamber_volume not given: compressibility assumed 2e-5 m^3 of oil "
         "per chamber");
+  if (model.fitted_baseline())
+    d.notes.push_back(
+        "the baseline is a fitted model: compressibility, pre_yield and coil_heating sit inside "
+        "the rig's hydraulic or electric loop and are not candidates on it");
   if (model.constant_field())
     d.notes.push_back("the recording has no coil input: the field is taken as constant");
   if (d.findings.empty() && !d.baseline_stats.white)

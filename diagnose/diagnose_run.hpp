@@ -4,6 +4,7 @@
 
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,8 @@ struct DiagnoseOptions {
   int max_iterations = 15;       ///< Levenberg-Marquardt iterations per fit
   ProgressCallback progress;     ///< told each stage and candidate fit with its time (or none)
   int threads = 2;               ///< threads for Jacobian columns, grid points and held-out folds
+  /// A fitted model as the baseline instead of the sidecar's rig (`--baseline MODEL.json`).
+  std::optional<ModelBaseline> baseline_model;
 };
 
 /// One candidate tried at one step of forward selection.

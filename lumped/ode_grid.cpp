@@ -19,11 +19,19 @@ constexpr double kNewtonTolerance = 1e-10;  // on scaled states (typical magnitu
 constexpr int kNewtonIterations = 25;
 constexpr int kMaxHalvings = 12;
 
-using Vec = Eigen::VectorXd;
+/// Largest state count whose vectors and Newton matrix live on the stack (every rig of the
+/// diagnosis has fewer states): the stages' temporaries then cost no heap allocation, which was a
+/// fifth of the time of a diagnosis on the whole dyke1996 record. Larger systems use the heap.
+constexpr int kStackStates = 12;
 
-/// x' = f(t, x) in scaled states xi = x / scale, with its Newton stage solver.
+/// x' = f(t, x) in scaled states xi = x / scale, with its Newton stage solver; MaxN bounds the
+/// state count at compile time (Eigen::Dynamic: unbounded, on the heap).
+template <int MaxN>
 class ScaledStepper {
  public:
+  using Vec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, MaxN, 1>;
+  using Mat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, MaxN, MaxN>;
+
   explicit ScaledStepper(const OdeSystem& sys) : sys_(sys), n_(sys.state_size()) {
     scale_ = Vec::Ones(static_cast<Eigen::Index>(n_));
     const auto s = sys.state_scales();
@@ -47,7 +55,7 @@ class ScaledStepper {
   /// Factorises I - hg J with J the forward-difference Jacobian at (t, xi), f(t, xi) = f0.
   void factorise(double t, const Vec& xi, const Vec& f0, double hg) {
     const auto n = static_cast<Eigen::Index>(n_);
-    Eigen::MatrixXd m(n, n);
+    Mat m(n, n);
     Vec xp = xi;
     for (Eigen::Index j = 0; j < n; ++j) {
       const double d = 1e-7 * std::max(1.0, std::abs(xi[j]));
@@ -74,8 +82,8 @@ class ScaledStepper {
       const Vec delta = lu_.solve(-g);
       if (!delta.allFinite()) return false;
       y += delta;
-      const double size = delta.lpNorm<Eigen::Infinity>();
-      if (size <= kNewtonTolerance * std::max(1.0, y.lpNorm<Eigen::Infinity>())) return true;
+      const double size = delta.template lpNorm<Eigen::Infinity>();
+      if (size <= kNewtonTolerance * std::max(1.0, y.template lpNorm<Eigen::Infinity>())) return true;
       if (it > 0 && size > 0.3 * previous) fresh_ = false;  // slow: new Jacobian at the iterate
       previous = size;
     }
@@ -118,7 +126,7 @@ class ScaledStepper {
   std::size_t n_;
   Vec scale_;
   mutable std::vector<double> x_, dx_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  Eigen::PartialPivLU<Mat> lu_;
   bool fresh_ = false;
 };
 
@@ -130,16 +138,21 @@ std::vector<std::vector<double>> integrate_on_grid(const OdeSystem& system, std:
   return integrate_on_grid(system, std::move(x0), times, each);
 }
 
-std::vector<std::vector<double>> integrate_on_grid(const OdeSystem& system, std::vector<double> x0,
-                                                   const std::vector<double>& times,
-                                                   const std::vector<int>& substeps) {
+namespace {
+
+/// integrate_on_grid with the stepper of state bound MaxN.
+template <int MaxN>
+std::vector<std::vector<double>> integrate_with(const OdeSystem& system,
+                                                const std::vector<double>& x0,
+                                                const std::vector<double>& times,
+                                                const std::vector<int>& substeps) {
+  using Stepper = ScaledStepper<MaxN>;
   const std::size_t n = system.state_size();
-  if (times.empty() || n == 0) return std::vector<std::vector<double>>(times.size());
   std::vector<std::vector<double>> out;
   out.reserve(times.size());
-  ScaledStepper stepper(system);
-  const Vec& scale = stepper.scale();
-  Vec xi(static_cast<Eigen::Index>(n));
+  Stepper stepper(system);
+  const typename Stepper::Vec& scale = stepper.scale();
+  typename Stepper::Vec xi(static_cast<Eigen::Index>(n));
   for (std::size_t k = 0; k < n; ++k) xi[static_cast<Eigen::Index>(k)] = x0.at(k) / scale[k];
   auto record = [&](double t) {
     std::vector<double> x(n);
@@ -151,9 +164,6 @@ std::vector<std::vector<double>> integrate_on_grid(const OdeSystem& system, std:
     }
     out.push_back(std::move(x));
   };
-  if (substeps.size() + 1 != times.size())
-    throw InputError("grid integrator: " + std::to_string(substeps.size()) +
-                     " substep counts for " + std::to_string(times.size() - 1) + " intervals");
   record(times.front());
   for (std::size_t i = 1; i < times.size(); ++i) {
     const int m = std::max(substeps[i - 1], 1);
@@ -162,6 +172,21 @@ std::vector<std::vector<double>> integrate_on_grid(const OdeSystem& system, std:
     record(times[i]);
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<std::vector<double>> integrate_on_grid(const OdeSystem& system, std::vector<double> x0,
+                                                   const std::vector<double>& times,
+                                                   const std::vector<int>& substeps) {
+  const std::size_t n = system.state_size();
+  if (times.empty() || n == 0) return std::vector<std::vector<double>>(times.size());
+  if (substeps.size() + 1 != times.size())
+    throw InputError("grid integrator: " + std::to_string(substeps.size()) +
+                     " substep counts for " + std::to_string(times.size() - 1) + " intervals");
+  if (n <= static_cast<std::size_t>(kStackStates))
+    return integrate_with<kStackStates>(system, x0, times, substeps);
+  return integrate_with<Eigen::Dynamic>(system, x0, times, substeps);
 }
 
 }  // namespace rheomag::lumped

@@ -238,3 +238,27 @@ TEST_F(BadInputCli, VtkOnFullDiskIsExit2KeepsTheOldFileAndNoVtkLogging) {
   EXPECT_EQ(kept, "old");
   EXPECT_EQ(temporaries, 0u);
 }
+
+// diagnose --baseline MODEL.json: the model written by `fit --json` is read back and used as the
+// baseline (its output and parameters listed in baseline.includes); a model of another rig kind
+// is exit 2 naming the model file, its key and both rig kinds.
+TEST_F(BadInputCli, FittedModelBaselineIsUsedAndAnotherRigKindIsExit2) {
+  recording("rec", damper_sidecar("1.0e-3"), sine_force);
+  const CliRun fit = rheomag(dir, "fit rec.csv --model bingham --json");
+  ASSERT_EQ(fit.code, 0) << fit.err;
+  write("model.json", fit.out);
+  const CliRun ok = rheomag(dir, "diagnose rec.csv --baseline model.json --json --quiet");
+  EXPECT_EQ(ok.code, 0) << ok.err;
+  EXPECT_NE(ok.out.find("\"fitted_model\""), std::string::npos) << ok.out;
+  EXPECT_NE(ok.out.find("\"output_scale\""), std::string::npos) << ok.out;
+
+  std::string pump = damper_sidecar("1.0e-3");
+  pump.replace(pump.find("damper"), 6, "bypass_cylinder");
+  recording("other", pump, sine_force);
+  const CliRun r = rheomag(dir, "diagnose other.csv --baseline model.json --quiet");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("model.json: key 'rig': the model was fitted on a damper rig, but the "
+                       "recording (other.toml) is from a bypass_cylinder rig"),
+            std::string::npos)
+      << r.err;
+}

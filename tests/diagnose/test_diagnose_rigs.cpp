@@ -44,6 +44,7 @@ void print(const Diagnosis& d, double ceiling) {
       std::cout << " " << f.param_names[j] << "=" << f.params[j];
     std::cout << "\n";
   }
+  for (const auto& note : d.notes) std::cout << "  note: " << note << "\n";
 }
 
 rheomag::lumped::Recording bypass_drive() {
