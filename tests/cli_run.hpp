@@ -18,14 +18,15 @@ struct CliRun {
   std::string out, err;
 };
 
-/// Runs `rheomag ARGS` through the shell (ARGS is shell text: quote what needs quoting).
-inline CliRun run_rheomag(const std::string& args) {
+/// Runs `rheomag ARGS` through the shell (ARGS is shell text: quote what needs quoting), in the
+/// directory `dir` when one is given.
+inline CliRun run_rheomag(const std::string& args, const std::filesystem::path& dir = {}) {
   static int serial = 0;
   const std::filesystem::path err_file =
       std::filesystem::temp_directory_path() /
       ("rheomag_test_err_" + std::to_string(::getpid()) + "_" + std::to_string(++serial));
-  const std::string command =
-      std::string(RHEOMAG_BINARY) + " " + args + " 2>'" + err_file.string() + "'";
+  const std::string command = (dir.empty() ? "" : "cd '" + dir.string() + "' && ") + "'" +
+                              RHEOMAG_BINARY + "' " + args + " 2>'" + err_file.string() + "'";
   CliRun run;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return run;

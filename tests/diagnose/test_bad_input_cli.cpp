@@ -14,30 +14,17 @@
 #include <sstream>
 #include <string>
 
+#include "tests/cli_run.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-/// Exit code, stdout and stderr of one run of the binary.
-struct CliRun {
-  int code = -1;
-  std::string out, err;
-};
+using rheomag::cli_test::CliRun;
 
 /// Runs `rheomag ARGS` in `dir`.
-CliRun rheomag(const fs::path& dir, const std::string& args) {
-  const fs::path err = dir / "stderr.txt";
-  const std::string command =
-      "cd '" + dir.string() + "' && '" + RHEOMAG_BINARY + "' " + args + " 2>'" + err.string() + "'";
-  CliRun r;
-  FILE* pipe = popen(command.c_str(), "r");
-  char buffer[4096];
-  while (std::size_t got = std::fread(buffer, 1, sizeof buffer, pipe)) r.out.append(buffer, got);
-  const int status = pclose(pipe);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream e(err);
-  r.err.assign(std::istreambuf_iterator<char>(e), {});
-  return r;
+CliRun run_in(const fs::path& dir, const std::string& args) {
+  return rheomag::cli_test::run_rheomag(args, dir);
 }
 
 class BadInputCli : public ::testing::Test {
@@ -101,7 +88,7 @@ double constant_force(int) {
 TEST_F(BadInputCli, ConstantOutputNarxIsExit2NamingFileAndColumn) {
   recording("flat", damper_sidecar("1.0e-3"), constant_force);
   for (const char* model : {"narx:2,2,1", "arx:2,2,1", "bingham"}) {
-    const CliRun r = rheomag(dir, std::string("fit flat.csv --model ") + model);
+    const CliRun r = run_in(dir, std::string("fit flat.csv --model ") + model);
     EXPECT_EQ(r.code, 2) << model << ": " << r.err;
     EXPECT_NE(r.err.find("flat.csv: column 'force' is constant (5) on samples 0:400"),
               std::string::npos)
@@ -112,7 +99,7 @@ TEST_F(BadInputCli, ConstantOutputNarxIsExit2NamingFileAndColumn) {
 // A zero piston area sent diagnose to 16.8 GB and std::bad_alloc (exit 1).
 TEST_F(BadInputCli, ZeroPistonAreaIsExit2AtReadTime) {
   recording("rec", damper_sidecar("0.0"), sine_force);
-  const CliRun r = rheomag(dir, "diagnose rec.csv --quiet");
+  const CliRun r = run_in(dir, "diagnose rec.csv --quiet");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("rec.toml:6: rig.piston_area: expected a number in (0, 10] (m^2), got 0"),
             std::string::npos)
@@ -122,7 +109,7 @@ TEST_F(BadInputCli, ZeroPistonAreaIsExit2AtReadTime) {
 // 1e300 m^2 printed "FIT -inf %" with exit 0 and Ceres' glog lines on stderr.
 TEST_F(BadInputCli, AbsurdPistonAreaIsExit2WithoutThirdPartyLogging) {
   recording("rec", damper_sidecar("1.0e300"), sine_force);
-  const CliRun r = rheomag(dir, "diagnose rec.csv --quiet");
+  const CliRun r = run_in(dir, "diagnose rec.csv --quiet");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_EQ(r.err,
             "rheomag: error: rec.toml:6: rig.piston_area: expected a number in (0, 10] (m^2), got "
@@ -138,7 +125,7 @@ TEST_F(BadInputCli, ByteOrderMarkCsvIsRead) {
   text << "\xEF\xBB\xBF" << in.rdbuf();
   write("bom.csv", text.str());
   write("bom.toml", damper_sidecar("1.0e-3"));
-  const CliRun r = rheomag(dir, "fit bom.csv --model arx:2,2,1");
+  const CliRun r = run_in(dir, "fit bom.csv --model arx:2,2,1");
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.err.find("unknown column"), std::string::npos) << r.err;
 }
@@ -146,7 +133,7 @@ TEST_F(BadInputCli, ByteOrderMarkCsvIsRead) {
 // `--vtk ""` wrote nothing and said nothing.
 TEST_F(BadInputCli, EmptyVtkPathIsExit2) {
   const std::string c = std::string(RHEOMAG_SOURCE_DIR) + "/cases/annular_valve.toml";
-  const CliRun r = rheomag(dir, "mesh '" + c + "' --vtk ''");
+  const CliRun r = run_in(dir, "mesh '" + c + "' --vtk ''");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("--vtk"), std::string::npos) << r.err;
 }
@@ -157,7 +144,7 @@ TEST_F(BadInputCli, VtkOntoNonRegularFileIsRefusedAndTheFileKept) {
   const fs::path fifo = dir / "field.vtu";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   const std::string c = std::string(RHEOMAG_SOURCE_DIR) + "/cases/annular_valve.toml";
-  const CliRun r = rheomag(dir, "mesh '" + c + "' --vtk field.vtu");
+  const CliRun r = run_in(dir, "mesh '" + c + "' --vtk field.vtu");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_TRUE(fs::is_fifo(fifo));
   for (const auto& entry : fs::directory_iterator(dir))
@@ -171,7 +158,7 @@ TEST_F(BadInputCli, InfiniteFlowResultIsExit3AndNotPrinted) {
   const std::string args =
       "flow --kind annular --gap 1e-3 --length 1e300 --radius 0.01 --tau-y 1e5 --viscosity 1 "
       "--flow 1e-5";
-  const CliRun text = rheomag(dir, args);
+  const CliRun text = run_in(dir, args);
   EXPECT_EQ(text.code, 3) << text.err;
   EXPECT_EQ(text.out, "annular gap, exact model, wall velocity 0 m/s\n");
   EXPECT_EQ(text.err,
@@ -179,7 +166,7 @@ TEST_F(BadInputCli, InfiniteFlowResultIsExit3AndNotPrinted) {
             "('inf' in \"  pressure drop        dp            = inf Pa (inf bar)\"); it and the "
             "rest of the output were held back; produced by: rheomag " +
                 args + "\n");
-  const CliRun json = rheomag(dir, args + " --json");
+  const CliRun json = run_in(dir, args + " --json");
   EXPECT_EQ(json.code, 3) << json.err;
   EXPECT_EQ(json.out, "");
   EXPECT_NE(json.err.find("'inf' in \"{\"kind\": \"annular\""), std::string::npos) << json.err;
@@ -195,7 +182,7 @@ double overflowing_force(int k) {
 // Ceres/glog on stderr.
 TEST_F(BadInputCli, OverflowingFitIsExit3NamingTheValue) {
   recording("big", damper_sidecar("1.0e-3"), overflowing_force);
-  const CliRun grey = rheomag(dir, "fit big.csv --model bingham");
+  const CliRun grey = run_in(dir, "fit big.csv --model bingham");
   EXPECT_EQ(grey.code, 3) << grey.err;
   EXPECT_EQ(grey.out, "model bingham (simulation mode)\n");
   EXPECT_EQ(grey.err.find("rheomag: result is not a finite number: stdout line 2 holds a "
@@ -203,7 +190,7 @@ TEST_F(BadInputCli, OverflowingFitIsExit3NamingTheValue) {
             0u)
       << grey.err;
   EXPECT_EQ(std::count(grey.err.begin(), grey.err.end(), '\n'), 1) << grey.err;
-  const CliRun json = rheomag(dir, "fit big.csv --model arx:2,2,1 --json");
+  const CliRun json = run_in(dir, "fit big.csv --model arx:2,2,1 --json");
   EXPECT_EQ(json.code, 3) << json.err;
   EXPECT_EQ(json.out, "");
   EXPECT_EQ(json.err,
@@ -223,7 +210,7 @@ TEST_F(BadInputCli, VtkOnFullDiskIsExit2KeepsTheOldFileAndNoVtkLogging) {
   write("full/fill", std::string(12000, '\0'));
   write("full/field.vtu", "old");
   const std::string c = std::string(RHEOMAG_SOURCE_DIR) + "/cases/annular_valve.toml";
-  const CliRun r = rheomag(dir, "mesh '" + c + "' --vtk full/field.vtu");
+  const CliRun r = run_in(dir, "mesh '" + c + "' --vtk full/field.vtu");
   std::string kept;
   {
     std::ifstream in(full / "field.vtu");
@@ -244,10 +231,10 @@ TEST_F(BadInputCli, VtkOnFullDiskIsExit2KeepsTheOldFileAndNoVtkLogging) {
 // is exit 2 naming the model file, its key and both rig kinds.
 TEST_F(BadInputCli, FittedModelBaselineIsUsedAndAnotherRigKindIsExit2) {
   recording("rec", damper_sidecar("1.0e-3"), sine_force);
-  const CliRun fit = rheomag(dir, "fit rec.csv --model bingham --json");
+  const CliRun fit = run_in(dir, "fit rec.csv --model bingham --json");
   ASSERT_EQ(fit.code, 0) << fit.err;
   write("model.json", fit.out);
-  const CliRun ok = rheomag(dir, "diagnose rec.csv --baseline model.json --json --quiet");
+  const CliRun ok = run_in(dir, "diagnose rec.csv --baseline model.json --json --quiet");
   EXPECT_EQ(ok.code, 0) << ok.err;
   EXPECT_NE(ok.out.find("\"fitted_model\""), std::string::npos) << ok.out;
   EXPECT_NE(ok.out.find("\"output_scale\""), std::string::npos) << ok.out;
@@ -255,7 +242,7 @@ TEST_F(BadInputCli, FittedModelBaselineIsUsedAndAnotherRigKindIsExit2) {
   std::string pump = damper_sidecar("1.0e-3");
   pump.replace(pump.find("damper"), 6, "bypass_cylinder");
   recording("other", pump, sine_force);
-  const CliRun r = rheomag(dir, "diagnose other.csv --baseline model.json --quiet");
+  const CliRun r = run_in(dir, "diagnose other.csv --baseline model.json --quiet");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("model.json: key 'rig': the model was fitted on a damper rig, but the "
                        "recording (other.toml) is from a bypass_cylinder rig"),
