@@ -72,9 +72,9 @@ Solve3dOptions swept_options() {
   o.mesher = Mesher3d::swept;
   o.gap_layers = 2;
   o.region_fraction = 0.25;
-  o.facet_angle = 10.0 * std::numbers::pi / 180.0;
-  o.fine_angle = 2.0 * std::numbers::pi / 180.0;
-  o.angle_growth = 1.5;
+  o.facet_angle = 15.0 * std::numbers::pi / 180.0;
+  o.fine_angle = 3.0 * std::numbers::pi / 180.0;
+  o.angle_growth = 2.0;
   return o;
 }
 
@@ -126,9 +126,14 @@ Solve3dResult solve_problem_3d(const cases::Problem& problem, const std::vector<
   mesh::Mesh swept_meridian;
   if (options.mesher == Mesher3d::swept) {
     // The meridian mesh at the 3D sizes, swept through graded angles (prism layers).
+    // Regions holding cuts are refined so the cuts' staircase is a third of their size.
     mesh::Pslg sized = closed.geometry;
-    for (std::size_t r = 0; r < sizes.size(); ++r)
-      if (sizes[r] > 0) sized.regions[r].mesh_size = sizes[r];
+    const std::vector<double> cut_sizes = feature_cell_sizes(features, closed);
+    for (std::size_t r = 0; r < sizes.size(); ++r) {
+      double h = sizes[r];
+      if (cut_sizes[r] > 0) h = h > 0 ? std::min(h, cut_sizes[r]) : cut_sizes[r];
+      if (h > 0) sized.regions[r].mesh_size = h;
+    }
     mesh::MeshOptions sweep_options = meridian_options;
     sweep_options.min_gap_elements = options.gap_layers;
     sweep_options.grading = options.meridian_grading;
@@ -145,7 +150,7 @@ Solve3dResult solve_problem_3d(const cases::Problem& problem, const std::vector<
   }
   const mesh::Mesh& source_meridian = options.mesher == Mesher3d::swept ? swept_meridian : meridian;
   const std::vector<Eigen::Vector3d> undeformed =
-      apply_features(features, closed, boxes, *out.mesh);
+      apply_features(features, closed, boxes, span, *out.mesh);
   out.mesh_seconds = seconds_since(start);
 
   report("solve", std::to_string(out.mesh->tets.size()) + " tetrahedra, " +

@@ -47,10 +47,11 @@ struct Solve3dOptions {
 };
 
 /// Settings of the swept mesher for half and full models of valves with features: two layers
-/// across a gap, regions at 0.25 of their smaller side, 10-degree angular steps refined to
-/// 2 degrees at a feature's edges (growth 1.5). The bundled annular valve's lead-slot half model
-/// solves in about a minute on 2 cores with its gap field within 1 % of 2D where the body is
-/// axisymmetric (docs/magnetostatics3d.md).
+/// across a gap, regions at 0.25 of their smaller side, 15-degree angular steps refined to
+/// 3 degrees at a feature's edges (growth 2). The bundled annular valve's lead-slot half model
+/// (238k tetrahedra) solves in about 20 s on 2 cores, its gap field within 1 % of 2D where the
+/// body is axisymmetric; the flux linkage loses the chords' O(step^2) volume, -2 %
+/// (docs/magnetostatics3d.md).
 Solve3dOptions swept_options();
 
 /// Everything a 3D solve produces (the mesh and solver stay alive for .vtu output).
