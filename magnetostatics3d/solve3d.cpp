@@ -116,7 +116,10 @@ Solve3dResult solve_problem_3d(const cases::Problem& problem, const std::vector<
   double span = kTwoPi;
   if (!options.force_full && features.empty()) {
     part = ModelPart::wedge;
-    span = options.wedge_angle > 0 ? options.wedge_angle : options.facet_angle;
+    // A swept wedge is one prism layer whatever its angle: the fine step keeps the chords short.
+    const double automatic =
+        options.mesher == Mesher3d::swept ? options.fine_angle : options.facet_angle;
+    span = options.wedge_angle > 0 ? options.wedge_angle : automatic;
   } else if (!options.force_full && features_allow_half_model(features)) {
     part = ModelPart::half;
     span = 0.5 * kTwoPi;

@@ -32,6 +32,7 @@ struct Solve3dOptions {
   double region_fraction = 0.15;  ///< other regions: edge length = this x smallest side of the
                                   ///< region's meridian bounding box
   double wedge_angle = 0.0;       ///< wedge of an axisymmetric body [rad]; 0 = automatic
+                                  ///< (facet_angle; swept: fine_angle)
   double facet_angle = 5.0 * 3.14159265358979323846 / 180.0;  ///< largest angle of a revolved
                                                               ///< facet [rad]
   Mesher3d mesher = Mesher3d::tetgen;

@@ -114,7 +114,6 @@ TEST(SweptMesh, AnnularValveWedgeMatches2dWithinOnePercent) {
   const cases::Case c = annular_valve();
   const magnetostatics::SolveResult two = magnetostatics::solve_problem(c.problem);
   Solve3dOptions options = swept_options();
-  options.facet_angle = 5 * kDeg;
   options.gap_layers = 3;
   options.region_fraction = 0.15;
   const Solve3dResult three = solve_problem_3d(c.problem, {}, options);
