@@ -31,6 +31,7 @@ struct SolveCommandOptions {
   bool json = false;
   bool three_d = false;
   bool full = false;
+  std::string mesher = "tetgen";
 };
 
 void check_current(double current, const char* option) {
@@ -43,7 +44,9 @@ void run_3d(const SolveCommandOptions& o, const Case& c) {
   if (!o.sweep.empty() || o.order)
     throw rheomag::InputError("--sweep and --order are not available with --3d");
   namespace m3 = rheomag::magnetostatics3d;
-  m3::Solve3dOptions options;
+  const m3::Mesher3d mesher = m3::kMesher3dNames.parse(o.mesher, "--mesher");
+  m3::Solve3dOptions options =
+      mesher == m3::Mesher3d::swept ? m3::swept_options() : m3::Solve3dOptions{};
   options.force_full = o.full;
   if (!o.json) {
     options.progress = [](const rheomag::ProgressEvent& e) {
@@ -181,6 +184,10 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
   cmd->add_flag("--full", o->full,
                 "With --3d: mesh the whole revolution even where a symmetry allows a wedge or "
                 "half model");
+  cmd->add_option("--mesher", o->mesher,
+                  "With --3d: \"tetgen\" (isotropic tetrahedra, default) or \"swept\" (the "
+                  "meridian mesh swept through angles graded towards the features: much faster "
+                  "for half and full models)");
   cmd->callback([o] { run(*o); });
 });
 

@@ -115,10 +115,29 @@ std::vector<Feature> read_features(const cases::Case& c) {
 }
 
 bool features_allow_half_model(const std::vector<Feature>& features) {
-  return std::all_of(features.begin(), features.end(), [](const Feature& f) {
-    const double s = std::abs(std::sin(f.angle));
-    return s < 1e-9;
+  // Every feature is its own mirror image (angle 0 or pi) or has a mirror twin: the same cut at
+  // the opposite angle (e.g. a ring of bolt holes).
+  auto twins = [](const Feature& a, const Feature& b) {
+    return a.kind == b.kind && a.region == b.region && a.material == b.material &&
+           a.width == b.width && a.depth == b.depth && a.radius == b.radius &&
+           a.position == b.position && a.z == b.z && a.offset == b.offset &&
+           std::abs(angle_difference(a.angle, -b.angle)) < 1e-9;
+  };
+  return std::all_of(features.begin(), features.end(), [&](const Feature& f) {
+    return std::any_of(features.begin(), features.end(),
+                       [&](const Feature& g) { return twins(f, g); });
   });
+}
+
+std::vector<double> feature_cell_sizes(const std::vector<Feature>& features,
+                                       const cases::Problem& closed) {
+  std::vector<double> size(closed.regions.size(), 0.0);
+  for (const Feature& f : features) {
+    if (f.kind != FeatureKind::hole && f.kind != FeatureKind::port) continue;
+    double& s = size[find_region(closed, f)];
+    s = s > 0 ? std::min(s, f.radius / 2.0) : f.radius / 2.0;
+  }
+  return size;
 }
 
 std::vector<double> feature_walls(const std::vector<Feature>& features,
@@ -139,7 +158,8 @@ std::vector<double> feature_walls(const std::vector<Feature>& features,
 
 std::vector<Eigen::Vector3d> apply_features(const std::vector<Feature>& features,
                                             cases::Problem& closed,
-                                            const std::vector<RegionBox>& boxes, TetMesh& mesh) {
+                                            const std::vector<RegionBox>& boxes, double span,
+                                            TetMesh& mesh) {
   const std::vector<Eigen::Vector3d> undeformed = mesh.nodes;
   const std::vector<int> original_region = mesh.region;
   std::vector<int> cut_by(mesh.tets.size(), -1);
@@ -205,6 +225,10 @@ std::vector<Eigen::Vector3d> apply_features(const std::vector<Feature>& features
       mesh.region[t] = new_region;
       ++cut;
     }
+    // A feature of the mirrored half (its twin is cut in the meshed one) cuts nothing here.
+    const double meshed = span - 1e-9;
+    const double axis = std::fmod(std::fmod(f.angle, 2 * kPi) + 2 * kPi, 2 * kPi);
+    if (cut == 0 && axis > meshed && axis < 2 * kPi - 1e-9) continue;
     if (cut == 0) {
       throw InputError(f.label + ": cuts nothing of region '" + f.region +
                        "' (outside the body, or smaller than its tetrahedra)");

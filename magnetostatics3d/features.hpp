@@ -41,24 +41,33 @@ struct Feature {
 /// Reads the case's [[feature]] tables (InputError naming file, line and key).
 std::vector<Feature> read_features(const cases::Case& c);
 
-/// True when every feature is mirror-symmetric about the plane y = 0 (angle 0 or 180 degrees):
-/// then the half 0 <= phi <= pi is an exact model.
+/// True when the set of features is mirror-symmetric about the plane y = 0 (each feature at 0 or
+/// 180 degrees or with a twin at minus its angle, e.g. a ring of holes): then the half
+/// 0 <= phi <= pi is an exact model.
 bool features_allow_half_model(const std::vector<Feature>& features);
+
+/// Element size [m] per region that resolves the round cuts in it (holes, ports): half
+/// the smallest radius; 0 for regions without one. (A lead slot's depth is left to the region's
+/// own size: a slot is cut into the largest region, the core.)
+std::vector<double> feature_cell_sizes(const std::vector<Feature>& features,
+                                       const cases::Problem& closed);
 
 /// Angles [rad] in [0, span] where meridian walls make the angular edges of cuts exact.
 std::vector<double> feature_walls(const std::vector<Feature>& features,
                                   const cases::Problem& closed, const std::vector<RegionBox>& boxes,
                                   double span);
 
-/// Applies the cuts to the mesh: tetrahedra of the cut region whose centroid lies inside a cut
-/// get a new region (appended to closed, named after the feature, material = fill). Radial and
-/// axial extents are resolved by the region's tetrahedra (angular edges are exact walls).
-/// Applies an eccentricity by moving the nodes: r <= inner gap radius shift by the offset,
-/// linearly less across the gap, none outside it. Returns the undeformed node positions.
-/// InputError naming the feature for unknown regions or materials, features outside their
-/// region, overlapping features, or coils the eccentricity would cut through.
+/// Applies the cuts to the mesh of the part 0 <= phi <= span: tetrahedra of the cut region whose
+/// centroid lies inside a cut get a new region (appended to closed, named after the feature,
+/// material = fill). Radial and axial extents are resolved by the region's tetrahedra (angular
+/// edges are exact walls). Applies an eccentricity by moving the nodes: r <= inner gap radius shift
+/// by the offset, linearly less across the gap, none outside it. Returns the undeformed node
+/// positions. InputError naming the feature for unknown regions or materials, features outside
+/// their region (or cutting nothing although their axis is in the meshed part), overlapping
+/// features, or coils the eccentricity would cut through.
 std::vector<Eigen::Vector3d> apply_features(const std::vector<Feature>& features,
                                             cases::Problem& closed,
-                                            const std::vector<RegionBox>& boxes, TetMesh& mesh);
+                                            const std::vector<RegionBox>& boxes, double span,
+                                            TetMesh& mesh);
 
 }  // namespace rheomag::magnetostatics3d

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <numbers>
 
 #include "core/error.hpp"
@@ -14,6 +12,7 @@
 #include "magnetostatics3d/plc.hpp"
 #include "magnetostatics3d/region_box.hpp"
 #include "magnetostatics3d/revolve.hpp"
+#include "magnetostatics3d/swept_mesh.hpp"
 #include "mesh/mesher.hpp"
 
 namespace rheomag::magnetostatics3d {
@@ -26,9 +25,9 @@ double tet_volume(double h) {
   return h * h * h / (6.0 * std::sqrt(2.0));
 }
 
-std::vector<double> region_volume_limits(const cases::Problem& closed,
-                                         const std::vector<RegionBox>& box,
-                                         const Solve3dOptions& options) {
+/// Target element edge length per region [m] (0: none, the background).
+std::vector<double> region_sizes(const cases::Problem& closed, const std::vector<RegionBox>& box,
+                                 const Solve3dOptions& options) {
   // Gaps first: thickness / layers; other regions no finer than the finest gap.
   std::vector<double> h(closed.regions.size(), 0.0);
   double finest_gap = INFINITY;
@@ -39,7 +38,7 @@ std::vector<double> region_volume_limits(const cases::Problem& closed,
            options.gap_layers;
     finest_gap = std::min(finest_gap, h[r]);
   }
-  std::vector<double> limit(closed.regions.size(), 0.0);
+  std::vector<double> size(closed.regions.size(), 0.0);
   for (std::size_t r = 0; r < closed.regions.size(); ++r) {
     if (static_cast<int>(r) == closed.geometry.default_region || box[r].r1 < box[r].r0) continue;
     if (h[r] == 0.0) {
@@ -49,8 +48,16 @@ std::vector<double> region_volume_limits(const cases::Problem& closed,
     }
     const double requested = closed.geometry.regions[r].mesh_size;
     if (requested > 0) h[r] = std::min(h[r], requested);
-    limit[r] = tet_volume(h[r]);
+    size[r] = h[r];
   }
+  return size;
+}
+
+/// TetGen volume limit per region: a regular tetrahedron of the region's size (0: none).
+std::vector<double> volume_limits(const std::vector<double>& sizes) {
+  std::vector<double> limit(sizes.size(), 0.0);
+  for (std::size_t r = 0; r < sizes.size(); ++r)
+    if (sizes[r] > 0) limit[r] = tet_volume(sizes[r]);
   return limit;
 }
 
@@ -59,6 +66,17 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 }  // namespace
+
+Solve3dOptions swept_options() {
+  Solve3dOptions o;
+  o.mesher = Mesher3d::swept;
+  o.gap_layers = 2;
+  o.region_fraction = 0.25;
+  o.facet_angle = 15.0 * std::numbers::pi / 180.0;
+  o.fine_angle = 3.0 * std::numbers::pi / 180.0;
+  o.angle_growth = 2.0;
+  return o;
+}
 
 Solve3dResult solve_problem_3d(const cases::Problem& problem, const std::vector<Feature>& features,
                                const Solve3dOptions& options) {
@@ -98,25 +116,44 @@ Solve3dResult solve_problem_3d(const cases::Problem& problem, const std::vector<
   double span = kTwoPi;
   if (!options.force_full && features.empty()) {
     part = ModelPart::wedge;
-    span = options.wedge_angle > 0 ? options.wedge_angle : options.facet_angle;
+    // A swept wedge is one prism layer whatever its angle: the fine step keeps the chords short.
+    const double automatic =
+        options.mesher == Mesher3d::swept ? options.fine_angle : options.facet_angle;
+    span = options.wedge_angle > 0 ? options.wedge_angle : automatic;
   } else if (!options.force_full && features_allow_half_model(features)) {
     part = ModelPart::half;
     span = 0.5 * kTwoPi;
   }
-  const Revolution rev =
-      make_revolution(span, options.facet_angle, feature_walls(features, closed, boxes, span));
-  const Plc plc = revolve(closed, rev, region_volume_limits(closed, boxes, options),
-                          feature_walls(features, closed, boxes, span));
-  out.mesh = std::make_unique<TetMesh>(tetrahedralize(plc));
-  if (getenv("COUNTS")) {
-    std::vector<int> n(closed.regions.size() + 1);
-    for (int r : out.mesh->region) ++n[r];
-    for (std::size_t r = 0; r < closed.regions.size(); ++r)
-      std::fprintf(stderr, "region %s: %d tets, limit %g\n",
-                   closed.geometry.regions[r].name.c_str(), n[r], plc.regions[r].max_volume);
+  const std::vector<double> walls = feature_walls(features, closed, boxes, span);
+  const std::vector<double> sizes = region_sizes(closed, boxes, options);
+  mesh::Mesh swept_meridian;
+  if (options.mesher == Mesher3d::swept) {
+    // The meridian mesh at the 3D sizes, swept through graded angles (prism layers).
+    // Regions holding cuts are refined so the cuts' staircase is a third of their size.
+    mesh::Pslg sized = closed.geometry;
+    const std::vector<double> cut_sizes = feature_cell_sizes(features, closed);
+    for (std::size_t r = 0; r < sizes.size(); ++r) {
+      double h = sizes[r];
+      if (cut_sizes[r] > 0) h = h > 0 ? std::min(h, cut_sizes[r]) : cut_sizes[r];
+      if (h > 0) sized.regions[r].mesh_size = h;
+    }
+    mesh::MeshOptions sweep_options = meridian_options;
+    sweep_options.min_gap_elements = options.gap_layers;
+    sweep_options.grading = options.meridian_grading;
+    swept_meridian = mesh::generate_mesh(sized, sweep_options);
+    const Revolution rev = part == ModelPart::wedge
+                               ? make_revolution(span, span)
+                               : graded_revolution(span, walls, options.fine_angle,
+                                                   options.facet_angle, options.angle_growth);
+    out.mesh = std::make_unique<TetMesh>(sweep_mesh(swept_meridian, rev));
+  } else {
+    const Revolution rev = make_revolution(span, options.facet_angle, walls);
+    out.mesh = std::make_unique<TetMesh>(
+        tetrahedralize(revolve(closed, rev, volume_limits(sizes), walls)));
   }
+  const mesh::Mesh& source_meridian = options.mesher == Mesher3d::swept ? swept_meridian : meridian;
   const std::vector<Eigen::Vector3d> undeformed =
-      apply_features(features, closed, boxes, *out.mesh);
+      apply_features(features, closed, boxes, span, *out.mesh);
   out.mesh_seconds = seconds_since(start);
 
   report("solve", std::to_string(out.mesh->tets.size()) + " tetrahedra, " +
@@ -126,7 +163,7 @@ Solve3dResult solve_problem_3d(const cases::Problem& problem, const std::vector<
   Eigen::VectorXd fixed = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(out.mesh->edges.size()));
   out.solver = std::make_unique<EdgeSolver>(
       *out.mesh, magnetostatics::build_reluctivities(closed), material_of_region, fixed,
-      circuit_loads(closed, meridian, *out.mesh, undeformed), options.newton);
+      circuit_loads(closed, source_meridian, *out.mesh, undeformed), options.newton);
   std::vector<double> currents;
   for (const cases::Circuit& c : closed.circuits) currents.push_back(c.current);
   out.solution = out.solver->solve(currents);
