@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <numeric>
 #include <random>
 
@@ -484,8 +486,8 @@ void run_fit(const FitData& data, const GreyboxSetup& setup, const ParamGuess& g
     ceres::Problem problem;
     for (const FitResidual<N>& functor : functors)
       problem.AddResidualBlock(
-          new ceres::AutoDiffCostFunction<FitResidual<N>, ceres::DYNAMIC, N>(
-              new FitResidual<N>(functor), static_cast<int>(functor.range.size())),
+          new CachedCostFunction(new ceres::AutoDiffCostFunction<FitResidual<N>, ceres::DYNAMIC, N>(
+              new FitResidual<N>(functor), static_cast<int>(functor.range.size()))),
           nullptr, theta.data());
     for (int k = 0; k < N; ++k) {
       if (guess.fixed[k]) continue;
@@ -496,6 +498,11 @@ void run_fit(const FitData& data, const GreyboxSetup& setup, const ParamGuess& g
     const ceres::Solver::Options so =
         greybox_solver_options(options.max_iterations, 50);  // trial steps into unstable regions
     ceres::Solve(so, &problem, &summaries[start]);
+    fprintf(stderr, "PROFILE start %zu: %s\n", start, summaries[start].BriefReport().c_str());
+    fprintf(stderr, "  residual evals %d jacobian evals %d, res time %.2f jac time %.2f\n",
+            summaries[start].num_residual_evaluations, summaries[start].num_jacobian_evaluations,
+            summaries[start].residual_evaluation_time_in_seconds,
+            summaries[start].jacobian_evaluation_time_in_seconds);
   };
   for_each_start(static_cast<std::size_t>(starts), fit_threads(options.threads), solve_start);
   BestStart<N> best;
