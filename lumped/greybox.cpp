@@ -12,6 +12,7 @@
 #include <cmath>
 #include <numeric>
 #include <random>
+#include <stdexcept>
 
 #include "core/error.hpp"
 #include "lumped/multistart_fit.hpp"
@@ -165,14 +166,18 @@ bool simulate_rk4(PhenoKind kind, const T* p, const DriveSeries& d, const PhenoS
   return true;
 }
 
-/// Residuals (model - orientation * measured) / y_scale on a sample range, in normalised params.
-template <int N>
+/// Residuals (model - orientation * measured) / y_scale on a sample range, as a function of the NF
+/// free ones of the N normalised parameters (the held ones are constants, so the Jets carry only
+/// the free derivatives).
+template <int N, int NF>
 struct FitResidual {
   const DriveSeries* d;
   PhenoKind kind;
   PhenoSettings settings;
   SampleRange range;
   std::array<double, N> scale;
+  std::array<double, N> held;      ///< normalised values of the held parameters
+  std::array<int, NF> free_index;  ///< parameter number of each free parameter
   double orientation;
   double y_scale;
   double max_substep;
@@ -180,7 +185,8 @@ struct FitResidual {
   template <class T>
   bool operator()(const T* theta, T* residual) const {
     std::array<T, N> p;
-    for (int k = 0; k < N; ++k) p[k] = theta[k] * scale[k];
+    for (int k = 0; k < N; ++k) p[k] = T(held[k] * scale[k]);
+    for (int j = 0; j < NF; ++j) p[free_index[j]] = theta[j] * scale[free_index[j]];
     std::vector<T> yhat(range.size());
     if (!simulate_rk4(kind, p.data(), *d, settings, range.begin, range.end, max_substep,
                       yhat.data()))
@@ -439,66 +445,71 @@ struct FitData {
   std::vector<double> y_scales;
 };
 
-/// One multi-start fit of a model with N parameters; fills `fit`.
-template <int N>
+/// One multi-start fit of a model with N parameters of which NF are free; fills `fit`.
+template <int N, int NF>
 void run_fit(const FitData& data, const GreyboxSetup& setup, const ParamGuess& guess,
              const GreyboxOptions& options, GreyboxFit& fit) {
-  std::vector<FitResidual<N>> functors;
+  std::array<int, NF> free{};
+  for (int k = 0, j = 0; k < N; ++k)
+    if (!guess.fixed[k]) free[j++] = k;
+  std::vector<FitResidual<N, NF>> functors;
   for (std::size_t r = 0; r < data.series.size(); ++r) {
-    FitResidual<N> functor{&data.series[r],
-                           setup.kind,
-                           setup.settings,
-                           data.ranges[r],
-                           {},
-                           setup.orientation,
-                           data.y_scales[r],
-                           fit_step(setup.kind, options)};
-    for (int k = 0; k < N; ++k) functor.scale[k] = guess.scale[k];
+    FitResidual<N, NF> functor{&data.series[r],
+                               setup.kind,
+                               setup.settings,
+                               data.ranges[r],
+                               {},
+                               {},
+                               free,
+                               setup.orientation,
+                               data.y_scales[r],
+                               fit_step(setup.kind, options)};
+    for (int k = 0; k < N; ++k) {
+      functor.scale[k] = guess.scale[k];
+      functor.held[k] = guess.nominal[k] / guess.scale[k];
+    }
     functors.push_back(functor);
   }
-  std::vector<int> fixed;
-  for (int k = 0; k < N; ++k)
-    if (guess.fixed[k]) fixed.push_back(k);
 
   // Starting points are drawn first, in order, so the result does not depend on which thread
   // finishes first; the starts are independent Ceres problems, solved `threads` at a time.
   std::mt19937 rng(options.seed);
   std::normal_distribution<double> normal(0.0, 1.0);
   const int starts = std::max(1, options.starts);
-  std::vector<std::array<double, N>> thetas(static_cast<std::size_t>(starts));
+  std::vector<std::array<double, NF>> thetas(static_cast<std::size_t>(starts));
   for (int start = 0; start < starts; ++start) {
-    for (int k = 0; k < N; ++k) {
+    for (int j = 0; j < NF; ++j) {
+      const int k = free[j];
       double value = guess.nominal[k];
-      if (start > 0 && !guess.fixed[k]) {
+      if (start > 0) {
         value =
             value != 0.0 ? value * std::exp(0.7 * normal(rng)) : 0.3 * guess.scale[k] * normal(rng);
         const double margin = 1e-6 * (guess.upper[k] - guess.lower[k]);
         value = std::clamp(value, guess.lower[k] + margin, guess.upper[k] - margin);
       }
-      thetas[static_cast<std::size_t>(start)][k] = value / guess.scale[k];
+      thetas[static_cast<std::size_t>(start)][j] = value / guess.scale[k];
     }
   }
   std::vector<ceres::Solver::Summary> summaries(static_cast<std::size_t>(starts));
   const auto solve_start = [&](std::size_t start) {
-    std::array<double, N>& theta = thetas[start];
+    std::array<double, NF>& theta = thetas[start];
     ceres::Problem problem;
-    for (const FitResidual<N>& functor : functors)
+    for (const FitResidual<N, NF>& functor : functors)
       problem.AddResidualBlock(
-          new ceres::AutoDiffCostFunction<FitResidual<N>, ceres::DYNAMIC, N>(
-              new FitResidual<N>(functor), static_cast<int>(functor.range.size())),
+          new CachedCostFunction(
+              new ceres::AutoDiffCostFunction<FitResidual<N, NF>, ceres::DYNAMIC, NF>(
+                  new FitResidual<N, NF>(functor), static_cast<int>(functor.range.size()))),
           nullptr, theta.data());
-    for (int k = 0; k < N; ++k) {
-      if (guess.fixed[k]) continue;
-      problem.SetParameterLowerBound(theta.data(), k, guess.lower[k] / guess.scale[k]);
-      problem.SetParameterUpperBound(theta.data(), k, guess.upper[k] / guess.scale[k]);
+    for (int j = 0; j < NF; ++j) {
+      problem.SetParameterLowerBound(theta.data(), j, guess.lower[free[j]] / guess.scale[free[j]]);
+      problem.SetParameterUpperBound(theta.data(), j, guess.upper[free[j]] / guess.scale[free[j]]);
     }
-    if (!fixed.empty()) problem.SetManifold(theta.data(), new ceres::SubsetManifold(N, fixed));
     const ceres::Solver::Options so =
         greybox_solver_options(options.max_iterations, 50);  // trial steps into unstable regions
     ceres::Solve(so, &problem, &summaries[start]);
   };
   for_each_start(static_cast<std::size_t>(starts), fit_threads(options.threads), solve_start);
-  BestStart<N> best;
+  BestStart<NF> best;
   for (int start = 0; start < starts; ++start) {
     ++fit.starts_run;
     best.offer(summaries[static_cast<std::size_t>(start)], thetas[static_cast<std::size_t>(start)],
@@ -511,27 +522,21 @@ void run_fit(const FitData& data, const GreyboxSetup& setup, const ParamGuess& g
   // Standard errors: cov = (J^T J)^-1 sigma^2 on the free parameters (normalised), then scaled;
   // the rows of every series stacked.
   int m = 0;
-  for (const FitResidual<N>& functor : functors) m += static_cast<int>(functor.range.size());
-  Eigen::Matrix<double, Eigen::Dynamic, N, Eigen::RowMajor> jac(m, N);
+  for (const FitResidual<N, NF>& functor : functors) m += static_cast<int>(functor.range.size());
+  Eigen::MatrixXd jf(m, NF);
   Eigen::VectorXd res(m);
   int row = 0;
-  for (const FitResidual<N>& functor : functors) {
+  for (const FitResidual<N, NF>& functor : functors) {
     const int rows = static_cast<int>(functor.range.size());
-    Eigen::Matrix<double, Eigen::Dynamic, N, Eigen::RowMajor> part_jac;
+    Eigen::Matrix<double, Eigen::Dynamic, NF, Eigen::RowMajor> part_jac;
     Eigen::VectorXd part_res;
     residual_jacobian(functor, rows, best.theta.data(), part_jac, part_res);
-    jac.middleRows(row, rows) = part_jac;
+    jf.middleRows(row, rows) = part_jac;
     res.segment(row, rows) = part_res;
     row += rows;
   }
   fit.best_start = best.start;
   fit.converged = best.converged;
-  std::vector<int> free;
-  for (int k = 0; k < N; ++k)
-    if (!guess.fixed[k]) free.push_back(k);
-  const int nf = static_cast<int>(free.size());
-  Eigen::MatrixXd jf(m, nf);
-  for (int c = 0; c < nf; ++c) jf.col(c) = jac.col(free[c]);
   const std::vector<std::optional<double>> se = jacobian_standard_errors(jf, res);
 
   const auto& specs = pheno_params(setup.kind);
@@ -540,17 +545,32 @@ void run_fit(const FitData& data, const GreyboxSetup& setup, const ParamGuess& g
     FittedParameter fp;
     fp.name = specs[k].name;
     fp.unit = unit_string(specs[k].unit, setup);
-    fp.value = best.theta[k] * guess.scale[k];
+    fp.value = guess.nominal[k] / guess.scale[k] * guess.scale[k];  // as the simulation sees it
     fp.fixed = guess.fixed[k];
-    if (!fp.fixed) {
-      const double span = guess.upper[k] - guess.lower[k];
-      fp.at_bound = std::abs(fp.value - guess.lower[k]) < 1e-6 * span ||
-                    std::abs(fp.value - guess.upper[k]) < 1e-6 * span;
-      const int c = static_cast<int>(std::find(free.begin(), free.end(), k) - free.begin());
-      if (se[c]) fp.standard_error = *se[c] * guess.scale[k];
-    }
     fit.params.push_back(fp);
   }
+  for (int j = 0; j < NF; ++j) {
+    const int k = free[j];
+    FittedParameter& fp = fit.params[static_cast<std::size_t>(k)];
+    fp.value = best.theta[j] * guess.scale[k];
+    const double span = guess.upper[k] - guess.lower[k];
+    fp.at_bound = std::abs(fp.value - guess.lower[k]) < 1e-6 * span ||
+                  std::abs(fp.value - guess.upper[k]) < 1e-6 * span;
+    if (se[j]) fp.standard_error = *se[j] * guess.scale[k];
+  }
+}
+
+/// run_fit<N, NF> for the free-parameter count `nf` of `guess`, NF one of the listed counts (the
+/// model's parameters with and without its field terms).
+template <int N, int... NF>
+void run_fit_free(const FitData& data, const GreyboxSetup& setup, const ParamGuess& guess,
+                  const GreyboxOptions& options, GreyboxFit& fit) {
+  const int nf = static_cast<int>(std::count(guess.fixed.begin(), guess.fixed.end(), false));
+  const bool ran =
+      ((nf == NF ? (run_fit<N, NF>(data, setup, guess, options, fit), true) : false) || ...);
+  if (!ran)
+    throw std::logic_error("grey-box fit of " + fit.model + ": unexpected free-parameter count " +
+                           std::to_string(nf));
 }
 
 PhenoKind parse_model(const std::string& model) {
@@ -606,22 +626,24 @@ void fit_data(const FitData& data, const GreyboxOptions& options, const std::str
   fit.setup.settings.output_scale = y_max;
   const ParamGuess guess =
       initial_guess(kind, all, range, fit.setup.orientation, !fit.setup.field_column.empty());
-  switch (kind) {
+  switch (kind) {  // free counts with and without a field input
     case PhenoKind::bingham:
+    case PhenoKind::biviscous:
+      run_fit_free<6, 6, 4>(data, fit.setup, guess, options, fit);
+      break;
     case PhenoKind::maxwell:
     case PhenoKind::dahl:
-    case PhenoKind::biviscous:
-      run_fit<6>(data, fit.setup, guess, options, fit);
+      run_fit_free<6, 6, 5>(data, fit.setup, guess, options, fit);
       break;
     case PhenoKind::lugre:
     case PhenoKind::tanh:
-      run_fit<8>(data, fit.setup, guess, options, fit);
+      run_fit_free<8, 8, 6>(data, fit.setup, guess, options, fit);
       break;
     case PhenoKind::bouc_wen:
-      run_fit<13>(data, fit.setup, guess, options, fit);
+      run_fit_free<13, 12, 8>(data, fit.setup, guess, options, fit);
       break;
     case PhenoKind::damper:
-      run_fit<15>(data, fit.setup, guess, options, fit);
+      run_fit_free<15, 15, 11>(data, fit.setup, guess, options, fit);
       break;
   }
 }

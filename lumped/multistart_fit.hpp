@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <exception>
 #include <limits>
+#include <memory>
 #include <thread>
 #include <vector>
 
@@ -34,6 +35,44 @@ inline ceres::Solver::Options greybox_solver_options(int max_iterations, int max
   so.logging_type = ceres::SILENT;
   return so;
 }
+
+/// A cost function of one parameter block that remembers its last evaluation: Ceres' bounded
+/// trust region evaluates the Jacobian at the end of its projected line search and again when it
+/// accepts that same point, and each evaluation is a full model simulation. Results are
+/// bit-identical to the wrapped function's. Not thread-safe (one per Ceres problem).
+class CachedCostFunction : public ceres::CostFunction {
+ public:
+  /// Takes ownership of `inner`, which must have exactly one parameter block.
+  explicit CachedCostFunction(ceres::CostFunction* inner) : inner_(inner) {
+    set_num_residuals(inner->num_residuals());
+    *mutable_parameter_block_sizes() = inner->parameter_block_sizes();
+    const int m = num_residuals(), n = parameter_block_sizes().front();
+    params_.resize(static_cast<std::size_t>(n));
+    residuals_.resize(static_cast<std::size_t>(m));
+    jacobian_.resize(static_cast<std::size_t>(m) * static_cast<std::size_t>(n));
+  }
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    const bool want_jacobian = jacobians != nullptr && jacobians[0] != nullptr;
+    const bool same_point = valid_ && std::equal(params_.begin(), params_.end(), parameters[0]);
+    if (!same_point || (want_jacobian && !has_jacobian_)) {
+      std::copy(parameters[0], parameters[0] + params_.size(), params_.begin());
+      double* jac[] = {jacobian_.data()};
+      ok_ = inner_->Evaluate(parameters, residuals_.data(), want_jacobian ? jac : nullptr);
+      valid_ = true;
+      has_jacobian_ = want_jacobian;
+    }
+    if (!ok_) return false;
+    std::copy(residuals_.begin(), residuals_.end(), residuals);
+    if (want_jacobian) std::copy(jacobian_.begin(), jacobian_.end(), jacobians[0]);
+    return true;
+  }
+
+ private:
+  std::unique_ptr<ceres::CostFunction> inner_;
+  mutable std::vector<double> params_, residuals_, jacobian_;
+  mutable bool valid_ = false, has_jacobian_ = false, ok_ = false;
+};
 
 /// Threads for the starts of a multi-start fit: `requested` if positive, else the machine's cores.
 inline unsigned fit_threads(int requested) {

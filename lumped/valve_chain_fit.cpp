@@ -297,8 +297,9 @@ ValveChainFit fit_valve_chain(const Recording& rec, const ValveChainFitOptions& 
     }
     ceres::Problem problem;
     problem.AddResidualBlock(
-        new ceres::AutoDiffCostFunction<ChainResidual, ceres::DYNAMIC, kParams>(
-            new ChainResidual(functor), static_cast<int>(range.size())),
+        new CachedCostFunction(
+            new ceres::AutoDiffCostFunction<ChainResidual, ceres::DYNAMIC, kParams>(
+                new ChainResidual(functor), static_cast<int>(range.size()))),
         nullptr, theta.data());
     for (int k = 0; k < kParams; ++k) {
       problem.SetParameterLowerBound(theta.data(), k, lower[k]);
