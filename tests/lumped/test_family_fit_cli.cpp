@@ -18,16 +18,14 @@
 #include "lumped/greybox.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording_io.hpp"
+#include "tests/cli_run.hpp"
 
 namespace fs = std::filesystem;
 using namespace rheomag::lumped;
 
 namespace {
 
-struct CliRun {
-  int code = -1;
-  std::string out, err;
-};
+using rheomag::cli_test::CliRun;
 
 int run(const std::string& command) {
   const int status = std::system(command.c_str());
@@ -35,20 +33,7 @@ int run(const std::string& command) {
 }
 
 CliRun run_fit_family(const std::string& args) {
-  const fs::path err_file =
-      fs::temp_directory_path() / ("rheomag_family_cli_err_" + std::to_string(::getpid()));
-  const std::string command =
-      std::string(RHEOMAG_BINARY) + " fit-family " + args + " 2>" + err_file.string();
-  CliRun r;
-  FILE* pipe = popen(command.c_str(), "r");
-  char buffer[4096];
-  while (std::size_t got = std::fread(buffer, 1, sizeof buffer, pipe)) r.out.append(buffer, got);
-  const int status = pclose(pipe);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream e(err_file);
-  r.err.assign(std::istreambuf_iterator<char>(e), {});
-  fs::remove(err_file);
-  return r;
+  return rheomag::cli_test::run_rheomag("fit-family " + args);
 }
 
 /// A noise-free Bingham damper recording (2 cycles of a 20 mm sine at 0.5 Hz, 200 samples per

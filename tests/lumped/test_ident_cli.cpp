@@ -11,31 +11,16 @@
 #include <random>
 #include <string>
 
+#include "tests/cli_run.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-/// Output and exit code of one CLI run.
-struct CliRun {
-  int code = -1;
-  std::string out, err;
-};
+using rheomag::cli_test::CliRun;
 
 CliRun run_cli(const std::string& args) {
-  const fs::path err_file =
-      fs::temp_directory_path() / ("rheomag_fit_err_" + std::to_string(::getpid()));
-  const std::string command =
-      std::string(RHEOMAG_BINARY) + " fit " + args + " 2>" + err_file.string();
-  CliRun r;
-  FILE* pipe = popen(command.c_str(), "r");
-  char buffer[4096];
-  while (std::size_t got = std::fread(buffer, 1, sizeof buffer, pipe)) r.out.append(buffer, got);
-  const int status = pclose(pipe);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream e(err_file);
-  r.err.assign(std::istreambuf_iterator<char>(e), {});
-  fs::remove(err_file);
-  return r;
+  return rheomag::cli_test::run_rheomag("fit " + args);
 }
 
 /// A damper-like recording: force = 400 tanh(velocity / 0.02) filtered by a first-order lag
