@@ -166,10 +166,16 @@ Eigen::VectorXd StepSystem::solve_jacobian(const Eigen::VectorXd& rhs, double to
   // dx = K^-1 b1 + s di K^-1 F, di = -(b2 + s F^T K^-1 b1) / (s^2 (F^T K^-1 F + h R)).
   Eigen::VectorXd u = solve_k(rhs.head(n_), tolerance);
   if (!setup_.voltage) return u;
-  // With a reused factor, K^-1 F by CG too: its error e_z adds s di e_z to the first block's
-  // residual, so a tenth of the forcing tolerance keeps the Newton step within its forcing.
+  // With a reused factor, K^-1 F by CG too, as the kept factor's K_old^-1 F plus a correction
+  // (its residual F - K K_old^-1 F is of the order of the change of K). Its error e_z adds
+  // s di e_z to the first block's residual, so a tenth of the forcing tolerance keeps the Newton
+  // step within its forcing.
   if (reuse_) {
-    Eigen::VectorXd z = solve_k(*ops_.drive_source, 0.1 * tolerance);
+    const Eigen::VectorXd& f = *ops_.drive_source;
+    Eigen::VectorXd z = ops_.factor->k_inv_f;
+    const Eigen::VectorXd r0 = f - k_.selfadjointView<Eigen::Lower>() * z;
+    const double target = 0.1 * tolerance * f.norm(), r0_norm = r0.norm();
+    if (r0_norm > target) z += solve_k(r0, target / r0_norm);
     if (!reuse_) {  // that CG failed and K was factorised: redo u with the new factor
       u = solve_k(rhs.head(n_), tolerance);
       z = ops_.factor->k_inv_f;
