@@ -70,6 +70,9 @@ class Assembler {
 
   /// Shape functions and B operators of triangle `e`.
   void quadrature(int e, ElementQuadrature& q) const;
+  /// Meshes of at most this many triangles keep every triangle's quadrature (about 1.2 kB each)
+  /// from the constructor on; larger ones recompute it at every assembly.
+  static constexpr int kMaxCachedElements = 100000;
   /// Constitutive law of triangle `e`.
   const Reluctivity& law(int e) const { return laws_[material_of_element_[e]]; }
   /// Meridian-plane area of each region [m^2] (index as Problem::regions).
@@ -116,6 +119,8 @@ class Assembler {
   void scatter_robin(const Eigen::VectorXd& a, Eigen::VectorXd& residual,
                      SparseMatrix* tangent) const;
   int matrix_offset(int row, int col) const;  // position in pattern_ values, -1 if not stored
+  // Triangle e's quadrature: the cached one, or computed into `scratch`.
+  const ElementQuadrature& geometry(int e, ElementQuadrature& scratch) const;
 
   const cases::Problem& problem_;
   const mesh::Mesh& mesh_;
@@ -131,6 +136,7 @@ class Assembler {
   std::vector<int> node_edge_start_, node_edges_;        // Robin edges of each node (CSR)
   static constexpr int kChunkElements = 256;             // triangles per assembly chunk
   std::vector<std::vector<int>> colour_chunks_;          // chunks of each colour, ascending
+  std::vector<ElementQuadrature> geometry_;  // per triangle (empty above kMaxCachedElements)
 };
 
 }  // namespace rheomag::magnetostatics

@@ -79,6 +79,13 @@ BhCurve::BhCurve(const std::vector<cases::BhPoint>& table, const std::string& ma
   for (std::size_t k = 1; k < n; ++k) {
     cubics_.push_back({b_[k], b_[k + 1], h_[k], h_[k + 1], slope[k], slope[k + 1]});
   }
+  const int cells = 4 * static_cast<int>(n);
+  cell_scale_ = cells / (b_.back() - b_[1]);
+  for (int c = 0; c < cells; ++c) {
+    const double left = b_[1] + c / cell_scale_;
+    cell_first_.push_back(
+        static_cast<int>(std::lower_bound(b_.begin() + 1, b_.end(), left) - b_.begin()));
+  }
   energy_at_.assign(n + 1, 0.0);
   energy_at_[1] = 0.5 * a_ * b_[1] * b_[1] + 0.25 * c_ * std::pow(b_[1], 4);
   for (std::size_t k = 1; k < n; ++k) {
@@ -89,8 +96,14 @@ BhCurve::BhCurve(const std::vector<cases::BhPoint>& table, const std::string& ma
 int BhCurve::interval(double b) const {
   if (b <= b_[1]) return -1;
   if (b > b_.back()) return static_cast<int>(cubics_.size());
-  const auto it = std::lower_bound(b_.begin() + 1, b_.end(), b);  // b_[k] >= b, k >= 2
-  return static_cast<int>(it - b_.begin()) - 2;
+  // The first k with b_[k] >= b (k >= 2), as std::lower_bound, from the cell's start: the two
+  // steps make it exact whatever the rounding of the cell index.
+  const int cells = static_cast<int>(cell_first_.size());
+  const int cell = std::clamp(static_cast<int>((b - b_[1]) * cell_scale_), 0, cells - 1);
+  int k = cell_first_[cell];
+  while (k > 1 && b_[k - 1] >= b) --k;
+  while (b_[k] < b) ++k;
+  return k - 2;
 }
 
 double BhCurve::cubic_h(const Cubic& c, double b) const {

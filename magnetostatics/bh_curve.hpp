@@ -58,6 +58,10 @@ class BhCurve {
   std::vector<Cubic> cubics_;           // intervals 1 .. n-1 (cubics_[k] spans b_[k+1] .. b_[k+2])
   std::vector<double> energy_at_;       // w(b_[k])
   double end_slope_ = 0.0, tau_ = 0.0;  // extrapolation: d_n and relaxation length [T]
+  // Interval search table: b_[1] .. b_.back() cut into equal cells, each with the first table
+  // index k >= 1 where b_[k] >= the cell's left end (the search then steps a point or two).
+  std::vector<int> cell_first_;
+  double cell_scale_ = 0.0;  // cells per tesla
 };
 
 }  // namespace rheomag::magnetostatics

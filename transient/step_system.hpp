@@ -20,6 +20,12 @@ struct LinearPart {
   Eigen::VectorXd offset;               ///< r_lin at x = 0 (prescribed values, Robin sources)
 };
 
+/// D = integral sigma N_i N_j dV + integral kappa G_i . G_j dV over the free dofs (lower
+/// triangle, the pattern of the tangent): the eddy currents' dissipation D dA/dt.
+magnetostatics::SparseMatrix eddy_matrix(const magnetostatics::Assembler& assembler,
+                                         const std::vector<double>& sigma,
+                                         const std::vector<double>& kappa);
+
 /// Assembles the linear part of `statics`' problem once.
 LinearPart linear_part(const magnetostatics::MagnetostaticSolver& statics);
 
@@ -27,11 +33,12 @@ LinearPart linear_part(const magnetostatics::MagnetostaticSolver& statics);
 /// all with the pattern of the static tangent).
 struct StepOperators {
   const magnetostatics::MagnetostaticSolver* statics = nullptr;
-  const magnetostatics::SparseMatrix* mass = nullptr;   ///< integral sigma N_i N_j dV
-  const magnetostatics::SparseMatrix* micro = nullptr;  ///< integral kappa G_i . G_j dV
-  const Eigen::VectorXd* drive_source = nullptr;        ///< F: first circuit at 1 A
-  const Eigen::VectorXd* other_source = nullptr;        ///< other circuits, held
-  const std::vector<char>* conducting = nullptr;        ///< dofs that cannot jump
+  /// The eddy-current matrix D = integral sigma N_i N_j dV + integral kappa G_i . G_j dV (the
+  /// mass matrix and the laminations' micro-eddy term, summed once: see eddy_matrix).
+  const magnetostatics::SparseMatrix* damping = nullptr;
+  const Eigen::VectorXd* drive_source = nullptr;  ///< F: first circuit at 1 A
+  const Eigen::VectorXd* other_source = nullptr;  ///< other circuits, held
+  const std::vector<char>* conducting = nullptr;  ///< dofs that cannot jump
   /// The linear part, or null to assemble every triangle at every point (the reference).
   const LinearPart* linear = nullptr;
   Eigen::CholmodSupernodalLLT<magnetostatics::SparseMatrix, Eigen::Lower>* cholesky = nullptr;

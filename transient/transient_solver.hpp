@@ -21,7 +21,7 @@ namespace rheomag::transient {
 ///   source = field_work + eddy_loss + copper_loss          (to the Newton tolerance),
 /// and field_work = stored_change + numerical_dissipation, the last the scheme's own error in
 /// integral H . dB (zero for the midpoint scheme on linear materials, >= 0 and O(h) for backward
-/// Euler, the error of the 3-point rule in s for the midpoint scheme on a B-H curve).
+/// Euler, the error of the 2-point rule in s for the midpoint scheme on a B-H curve).
 struct EnergyBalance {
   double source = 0.0;  ///< work of the source: integral V i dt (voltage) or i dlambda + R i^2 dt
   double field_work = 0.0;     ///< the scheme's integral H . dB dV over the steps
@@ -106,12 +106,11 @@ class TransientSolver {
 
   magnetostatics::MagnetostaticSolver& statics_;
   EddyCoefficients eddy_;
-  magnetostatics::SparseMatrix mass_;   // integral sigma N_i N_j dV (free dofs, lower)
-  magnetostatics::SparseMatrix micro_;  // integral kappa G_i . G_j dV (free dofs, lower)
-  Eigen::VectorXd drive_source_;        // first circuit's unit-current source, free dofs
-  Eigen::VectorXd other_source_;        // other circuits at their problem currents, free dofs
-  std::vector<char> conducting_;        // free dof has a mass or micro-eddy row
-  LinearPart linear_;                   // linear materials' residual and tangent, assembled once
+  magnetostatics::SparseMatrix damping_;  // eddy_matrix: sigma mass + kappa micro-eddy term
+  Eigen::VectorXd drive_source_;          // first circuit's unit-current source, free dofs
+  Eigen::VectorXd other_source_;          // other circuits at their problem currents, free dofs
+  std::vector<char> conducting_;          // free dof has a mass or micro-eddy row
+  LinearPart linear_;                     // linear materials' residual and tangent, assembled once
   Eigen::CholmodSupernodalLLT<magnetostatics::SparseMatrix, Eigen::Lower> cholesky_;
 };
 

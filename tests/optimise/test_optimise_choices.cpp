@@ -115,7 +115,7 @@ TEST(OptimiseChoices, ShippedCasesAreValid) {
     const auto c = cases::load_case(fs::path(RHEOMAG_SOURCE_DIR) / "cases" / name);
     const auto spec = optimise::read_optimise_spec(c);
     EXPECT_NO_THROW(optimise::OptimiseEvaluator(c, spec)) << name;
-    EXPECT_GE(spec.variables.size(), 4u) << name;
+    EXPECT_GE(spec.variables.size(), 2u) << name;  // the response example has 2 (its header)
     EXPECT_EQ(spec.objective, "dp_on") << name;
   }
 }

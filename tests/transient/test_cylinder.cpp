@@ -209,7 +209,7 @@ TEST(TransientCylinder, SaturatingStepAgreesWithAFineReference) {
   EXPECT_NEAR(*coarse.t63 / *fine.t63, 1.0, 0.01);
   EXPECT_NEAR(*coarse.t90 / *fine.t90, 1.0, 0.01);
   // Energy balance with a B-H curve: the scheme's identity source = field work + losses holds
-  // per step to the Newton tolerance (the 1e-6); field work - dW is the 3-point rule's
+  // per step to the Newton tolerance (the 1e-6); field work - dW is the 2-point rule's
   // error in s, reported as numerical dissipation (measured below).
   EXPECT_LT(coarse.energy.max_step_error, 1e-6);
   EXPECT_LT(coarse.energy.total_error, 1e-6);
@@ -222,7 +222,7 @@ TEST(TransientCylinder, SaturatingStepAgreesWithAFineReference) {
 
 namespace {
 
-// The midpoint scheme's numerical dissipation on a B-H curve (field work - dW, the 3-point
+// The midpoint scheme's numerical dissipation on a B-H curve (field work - dW, the 2-point
 // Gauss rule's error in s where the B-H curve's knee is crossed within a step) must vanish with
 // the step: |sum over the run| of a saturating voltage step (0.3 V, 0.2 Ohm, 20 ms) at N = 50,
 // 100, 200, 400 equal steps decreasing at an observed order >= 2 over the range (measured 3.0,

@@ -50,16 +50,15 @@ void expect_cached_equals_fresh(magnetostatics::MagnetostaticSolver& statics, do
                                 double to) {
   const transient::EddyCoefficients eddy = transient::eddy_coefficients(statics.problem(), {});
   const auto& assembler = statics.assembler();
-  const SparseMatrix mass = assembler.region_matrix(eddy.sigma, false);
-  const SparseMatrix micro = assembler.region_matrix(eddy.kappa, true);
+  const SparseMatrix damping = transient::eddy_matrix(assembler, eddy.sigma, eddy.kappa);
   const Eigen::VectorXd drive = statics.nodes_to_free(statics.circuit_source(0));
   const Eigen::VectorXd other = Eigen::VectorXd::Zero(drive.size());
   const std::vector<char> conducting(drive.size(), 0);
   const transient::LinearPart linear = transient::linear_part(statics);
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholesky;
   transient::StepOperators::Factor factor;
-  transient::StepOperators fresh{&statics,    &mass,   &micro,    &drive, &other,
-                                 &conducting, nullptr, &cholesky, &factor};
+  transient::StepOperators fresh{&statics,    &damping, &drive,    &other,
+                                 &conducting, nullptr,  &cholesky, &factor};
   transient::StepOperators cached = fresh;
   cached.linear = &linear;
 
