@@ -2,30 +2,25 @@
 // energy balance, and the exit codes of bad input.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
+#include "tests/cli_run.hpp"
+
 namespace {
 
 const std::string kCases = std::string(RHEOMAG_SOURCE_DIR) + "/cases/";
 
-/// Runs the CLI; returns the exit code, stdout (+ stderr when `merge`) in `out`.
+/// Runs `rheomag transient ARGS`; returns the exit code, stdout (then stderr when `merge`) in
+/// `out`.
 int run_cli(const std::string& arguments, std::string& out, bool merge = false) {
-  const std::string command =
-      std::string(RHEOMAG_BINARY) + " transient " + arguments + (merge ? " 2>&1" : " 2>/dev/null");
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return -1;
-  std::array<char, 4096> buffer{};
-  out.clear();
-  while (std::fgets(buffer.data(), buffer.size(), pipe)) out += buffer.data();
-  return WEXITSTATUS(pclose(pipe));
+  const auto run = rheomag::cli_test::run_rheomag("transient " + arguments);
+  out = merge ? run.out + run.err : run.out;
+  return run.code;
 }
 
 /// A copy of a bundled case with `extra` appended (a temporary file).
