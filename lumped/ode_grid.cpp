@@ -83,7 +83,8 @@ class ScaledStepper {
       if (!delta.allFinite()) return false;
       y += delta;
       const double size = delta.template lpNorm<Eigen::Infinity>();
-      if (size <= kNewtonTolerance * std::max(1.0, y.template lpNorm<Eigen::Infinity>())) return true;
+      if (size <= kNewtonTolerance * std::max(1.0, y.template lpNorm<Eigen::Infinity>()))
+        return true;
       if (it > 0 && size > 0.3 * previous) fresh_ = false;  // slow: new Jacobian at the iterate
       previous = size;
     }
