@@ -326,28 +326,37 @@ ValveChainFit fit_valve_chain(const Recording& rec, const ValveChainFitOptions& 
   const std::vector<std::optional<double>> se =
       jacobian_standard_errors(Eigen::MatrixXd(jac.leftCols(nf)), res);
   const std::array<double, kParams> value = norm.physical(best.theta.data());
-  static const std::array<const char*, kParams> names = {
-      "yield_scale", "viscous_scale", "field_time_constant", "hydraulic_capacitance"};
-  static const std::array<const char*, kParams> units = {"1", "1", "s", "m^3/Pa"};
-  for (int k = 0; k < kParams; ++k) {
-    FittedParameter fp;
-    fp.name = names[k];
-    fp.unit = units[k];
-    fp.fixed = k >= nf;
-    fp.value = fp.fixed ? 0.0 : value[k];
-    if (!fp.fixed) {
-      fp.at_bound = std::abs(best.theta[k] - lower[k]) < 1e-6 * (upper[k] - lower[k]) ||
-                    std::abs(best.theta[k] - upper[k]) < 1e-6 * (upper[k] - lower[k]);
-      // d(physical)/d(theta) = 1 for the scales, = value for the log-scaled tau and C.
-      if (se[k]) fp.standard_error = *se[k] * (k < 2 ? 1.0 : value[k]);
-    }
-    fit.params.push_back(fp);
+  fit.params = valve_chain_parameters(value, s.compliant);
+  for (int k = 0; k < nf; ++k) {
+    FittedParameter& fp = fit.params[k];
+    fp.at_bound = std::abs(best.theta[k] - lower[k]) < 1e-6 * (upper[k] - lower[k]) ||
+                  std::abs(best.theta[k] - upper[k]) < 1e-6 * (upper[k] - lower[k]);
+    // d(physical)/d(theta) = 1 for the scales, = value for the log-scaled tau and C.
+    if (se[k]) fp.standard_error = *se[k] * (k < 2 ? 1.0 : value[k]);
   }
   std::vector<double> p(value.begin(), value.end());
   fit.simulated = simulate_series(d, s, p);
   fit.train = compute_metrics(d.y, fit.simulated, range);
   fit.residual_sigma = rms_residual(d.y, fit.simulated, range);
   return fit;
+}
+
+std::vector<FittedParameter> valve_chain_parameters(const std::array<double, kParams>& values,
+                                                    bool compliant) {
+  static const std::array<const char*, kParams> names = {
+      "yield_scale", "viscous_scale", "field_time_constant", "hydraulic_capacitance"};
+  static const std::array<const char*, kParams> units = {"1", "1", "s", "m^3/Pa"};
+  const int nf = compliant ? kParams : kParams - 1;
+  std::vector<FittedParameter> params;
+  for (int k = 0; k < kParams; ++k) {
+    FittedParameter fp;
+    fp.name = names[k];
+    fp.unit = units[k];
+    fp.fixed = k >= nf;
+    fp.value = fp.fixed ? 0.0 : values[k];
+    params.push_back(fp);
+  }
+  return params;
 }
 
 std::vector<double> simulate_valve_chain(const Recording& rec, const ValveChainSetup& setup,

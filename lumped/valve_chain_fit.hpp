@@ -4,6 +4,7 @@
 // a yield-stress scale, a viscous scale, a first-order field lag (eddy currents + MR response)
 // and, when a piston drives the flow through chambers, the hydraulic capacitance between them.
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -53,6 +54,12 @@ struct ValveChainFit {
   int best_start = 0;
   bool converged = false;
 };
+
+/// The valve-chain model's parameters, named and in SI units, with `values` (fit order: yield
+/// scale, viscous scale, field time constant [s], hydraulic capacitance [m^3/Pa]); the
+/// capacitance is held (fixed, 0) unless `compliant`. Standard errors are left empty.
+std::vector<FittedParameter> valve_chain_parameters(const std::array<double, 4>& values,
+                                                    bool compliant);
 
 /// Builds the setup of `rec`: drive columns, the chain table of the sidecar's [valve] case.
 /// InputError when the sidecar names no valve case, lacks the piston area, or the drive has no

@@ -116,18 +116,7 @@ rheomag::lumped::ValveChainFit chain_damper_model() {
   fit.setup.output_column = "force";
   fit.setup.piston_area = 1e-3;
   fit.setup.eps_flow = 1e-7;
-  const char* names[] = {"yield_scale", "viscous_scale", "field_time_constant",
-                         "hydraulic_capacitance"};
-  const char* units[] = {"1", "1", "s", "m^3/Pa"};
-  const double values[] = {1.0, 1.0, 0.01, 0.0};
-  for (int k = 0; k < 4; ++k) {
-    rheomag::lumped::FittedParameter p;
-    p.name = names[k];
-    p.unit = units[k];
-    p.value = values[k];
-    p.fixed = k == 3;
-    fit.params.push_back(p);
-  }
+  fit.params = rheomag::lumped::valve_chain_parameters({1.0, 1.0, 0.01, 0.0}, /*compliant=*/false);
   return fit;
 }
 

@@ -59,18 +59,7 @@ ValveChainFit chain_model() {
   fit.setup.field_column = "current";
   fit.setup.output_column = "pressure";
   fit.setup.eps_flow = 1e-8;
-  const char* names[] = {"yield_scale", "viscous_scale", "field_time_constant",
-                         "hydraulic_capacitance"};
-  const char* units[] = {"1", "1", "s", "m^3/Pa"};
-  const double values[] = {0.93, 1.2, 0.02, 0.0};
-  for (int k = 0; k < 4; ++k) {
-    FittedParameter p;
-    p.name = names[k];
-    p.unit = units[k];
-    p.value = values[k];
-    p.fixed = k == 3;
-    fit.params.push_back(p);
-  }
+  fit.params = valve_chain_parameters({0.93, 1.2, 0.02, 0.0}, /*compliant=*/false);
   return fit;
 }
 
