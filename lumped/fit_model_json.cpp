@@ -163,6 +163,15 @@ GreyboxFit read_greybox(const Field& root, const std::string& model) {
   const Field list = root.at("parameters");
   fit.params = read_parameters(list);
   const std::vector<PhenoParam>& expected = pheno_params(fit.setup.kind);
+  // A damper model written before output_smoothing existed: its output was not smoothed.
+  if (fit.setup.kind == PhenoKind::damper && fit.params.size() + 1 == expected.size() &&
+      expected.back().name == "output_smoothing") {
+    FittedParameter none;
+    none.name = expected.back().name;
+    none.unit = expected.back().unit;
+    none.fixed = true;
+    fit.params.push_back(none);
+  }
   if (fit.params.size() != expected.size())
     list.fail("model " + model + " has " + std::to_string(expected.size()) + " parameters, got " +
               std::to_string(fit.params.size()));

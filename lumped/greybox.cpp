@@ -17,6 +17,7 @@
 #include "core/error.hpp"
 #include "lumped/multistart_fit.hpp"
 #include "lumped/ode.hpp"
+#include "lumped/output_smoothing.hpp"
 #include "lumped/standard_errors.hpp"
 
 namespace rheomag::lumped {
@@ -26,6 +27,7 @@ namespace {
 /// Drive and output samples of one recording as a model sees them.
 struct DriveSeries {
   std::vector<double> t, position, motion, field, acceleration, y;
+  double period = 0.0;  ///< [s] period of a periodic motion drive, else 0 (drive_period)
   PhenoDrive at(std::size_t i) const { return {position[i], motion[i], field[i], acceleration[i]}; }
   /// Linear interpolation between sample i and i+1 at fraction w in [0, 1].
   PhenoDrive between(std::size_t i, double w) const {
@@ -62,6 +64,7 @@ DriveSeries drive_series(const Recording& rec, const GreyboxSetup& setup, std::s
   d.field = setup.field_column.empty() ? std::vector<double>(d.t.size(), 0.0)
                                        : every(rec.column(setup.field_column), step);
   d.acceleration = rate_of(d.t, d.motion);
+  d.period = drive_period(d.t, d.motion);
   if (!setup.position_column.empty()) {
     d.position = every(rec.column(setup.position_column), step);
   } else {
@@ -98,6 +101,15 @@ double stiffest_rate(PhenoKind kind, const T* p, const PhenoDrive& d, const Phen
     rate = std::max(rate, std::abs(f1[k] - f0[k]) / h);
   }
   return rate;
+}
+
+/// The damper model's output seen through the recording's smoothing: a centred moving average over
+/// output_smoothing times the drive's period (nothing without a periodic drive).
+template <class T>
+void smooth_damper_output(const T* p, const DriveSeries& d, SampleRange range, T* out) {
+  if (d.period > 0.0)
+    centred_boxcar(&d.t[range.begin], range.size(), T(p[pheno_detail::kDmSmoothing] * d.period),
+                   out);
 }
 
 /// Models integrated by their own stiff-stable exponential step (damper_step, bouc_wen_step).
@@ -191,6 +203,8 @@ struct FitResidual {
     if (!simulate_rk4(kind, p.data(), *d, settings, range.begin, range.end, max_substep,
                       yhat.data()))
       return false;
+    if constexpr (N > pheno_detail::kDmSmoothing)  // only the damper model has the parameter
+      if (kind == PhenoKind::damper) smooth_damper_output(p.data(), *d, range, yhat.data());
     for (std::size_t i = 0; i < range.size(); ++i)
       residual[i] = (yhat[i] - orientation * d->y[range.begin + i]) / y_scale;
     return true;
@@ -210,7 +224,7 @@ double rms(const std::vector<double>& v, SampleRange r) {
 }
 
 ParamGuess initial_guess(PhenoKind kind, const DriveSeries& d, SampleRange r, double orientation,
-                         bool has_field) {
+                         bool has_field, bool periodic) {
   double ymin = 1e300, ymax = -1e300, ymean = 0.0, mmax = 0.0, umax = 0.0;
   for (std::size_t i = r.begin; i < r.end; ++i) {
     double y = orientation * d.y[i];
@@ -326,6 +340,11 @@ ParamGuess initial_guess(PhenoKind kind, const DriveSeries& d, SampleRange r, do
       add(0.0, F / X, -10 * F / X, 10 * F / X, false);                     // gas_stiffness
       add(0.01, 0.01, 1e-4, 1.0, true);                                    // field_time_constant
       add(ymean, F, ymean - 10 * F, ymean + 10 * F, false);                // offset
+      add(0.05, 0.1, 0.0, 0.25, false);                                    // output_smoothing
+      if (!periodic) {  // no drive period to measure the window against: no smoothing
+        g.nominal.back() = 0.0;
+        g.fixed.back() = true;
+      }
       if (!has_field) g.nominal[pheno_param_index(kind, "field_time_constant")] = 0.01;  // held
       break;
   }
@@ -414,6 +433,7 @@ std::vector<double> simulate_for_report(const DriveSeries& d, const GreyboxSetup
     std::vector<double> y(d.t.size());
     if (!simulate_rk4(setup.kind, params.data(), d, setup.settings, 0, d.t.size(), 5e-4, y.data()))
       throw ConvergenceError("model damper: the simulation diverges with these parameters");
+    smooth_damper_output(params.data(), d, SampleRange{0, d.t.size()}, y.data());
     for (double& v : y) v *= setup.orientation;
     return y;
   }
@@ -624,8 +644,10 @@ void fit_data(const FitData& data, const GreyboxOptions& options, const std::str
   for (double y : all.y) y_max = std::max(y_max, std::abs(y));
   if (!(y_max > 0.0)) throw InputError(where + ": the output is zero on the training samples");
   fit.setup.settings.output_scale = y_max;
-  const ParamGuess guess =
-      initial_guess(kind, all, range, fit.setup.orientation, !fit.setup.field_column.empty());
+  const bool periodic = std::any_of(data.series.begin(), data.series.end(),
+                                    [](const DriveSeries& d) { return d.period > 0.0; });
+  const ParamGuess guess = initial_guess(kind, all, range, fit.setup.orientation,
+                                         !fit.setup.field_column.empty(), periodic);
   switch (kind) {  // free counts with and without a field input
     case PhenoKind::bingham:
     case PhenoKind::biviscous:
@@ -643,7 +665,7 @@ void fit_data(const FitData& data, const GreyboxOptions& options, const std::str
       run_fit_free<13, 12, 8>(data, fit.setup, guess, options, fit);
       break;
     case PhenoKind::damper:
-      run_fit_free<15, 15, 11>(data, fit.setup, guess, options, fit);
+      run_fit_free<16, 16, 15, 12, 11>(data, fit.setup, guess, options, fit);
       break;
   }
 }

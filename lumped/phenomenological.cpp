@@ -99,7 +99,8 @@ const std::vector<PhenoParam>& pheno_params(PhenoKind kind) {
                                                  {"inertance", "Y s/M", false},
                                                  {"gas_stiffness", "Y/X", false},
                                                  {"field_time_constant", "s", true},
-                                                 {"offset", "Y", false}};
+                                                 {"offset", "Y", false},
+                                                 {"output_smoothing", "1", false}};
   switch (kind) {
     case PhenoKind::biviscous:
       return biviscous;

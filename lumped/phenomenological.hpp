@@ -117,7 +117,8 @@ enum Damper {
   kDmInertance,
   kDmGas,
   kDmTau,
-  kDmOffset
+  kDmOffset,
+  kDmSmoothing
 };
 
 /// Damper model: rate of the valve force x[0] through the fluid/accumulator compliance. The valve

@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <random>
 #include <string>
@@ -125,11 +127,11 @@ namespace {
 
 /// The utfsm recordings at frequency tag `freq` ("0x1", "0x25", "0x5") for 0, 0.25, ..., 1 A;
 /// empty if the shared data folder is absent.
-std::vector<Recording> utfsm_recordings(const std::string& freq) {
+std::vector<Recording> utfsm_recordings(const std::string& test) {
   const std::string dir = std::string(RHEOMAG_SHARED_DIR) + "/data/utfsm/";
   std::vector<Recording> recs;
   for (const char* current : {"0A", "0x25A", "0x5A", "0x75A", "1A"}) {
-    const std::string path = dir + "25mm" + freq + "Hz" + current + ".csv";
+    const std::string path = dir + test + "Hz" + current + ".csv";
     if (!std::filesystem::exists(path)) return {};
     recs.push_back(read_recording(path));
   }
@@ -144,9 +146,9 @@ std::vector<Recording> utfsm_recordings(const std::string& freq) {
 // paper 001's LuGre, fitted per current at 0.75 Hz on a valve, predicted 0.5 Hz with mean RE
 // 0.096. Tolerances: measured + 0.03 per recording, mean predicted RE below 0.18.
 TEST(CurrentDependent, UtfsmLuGrePredictsHalfHertz) {
-  std::vector<Recording> training = utfsm_recordings("0x1");
-  const std::vector<Recording> at_025 = utfsm_recordings("0x25");
-  const std::vector<Recording> prediction = utfsm_recordings("0x5");
+  std::vector<Recording> training = utfsm_recordings("25mm0x1");
+  const std::vector<Recording> at_025 = utfsm_recordings("25mm0x25");
+  const std::vector<Recording> prediction = utfsm_recordings("25mm0x5");
   if (training.empty() || at_025.empty() || prediction.empty())
     GTEST_SKIP() << "shared utfsm recordings not present";
   training.insert(training.end(), at_025.begin(), at_025.end());
@@ -165,4 +167,39 @@ TEST(CurrentDependent, UtfsmLuGrePredictsHalfHertz) {
   // The field-scaled terms grow with current (MR effect), as paper 001's Fig. 9 trends.
   EXPECT_GT(r.fit.params[pheno_param_index(PhenoKind::lugre, "stiffness_per_field")].value, 0.0);
   EXPECT_GT(r.fit.params[pheno_param_index(PhenoKind::lugre, "viscous_per_field")].value, 0.0);
+}
+
+// Real data (utfsm): the damper model fitted on the 15 tests at 25 mm (every 8th sample, one
+// start) predicts the five 10 mm / 1 Hz tests. The recordings were smoothed by a moving average
+// over a tenth of the period (the source's processing: window round(1 / (10 Ts f)) samples, i.e.
+// 0.1016 of the measured 0.984 s and 9.835 s periods); the fitted output_smoothing must agree
+// within 15 % without being told (measured 0.0921). Predicted FIT measured when written: 90.1,
+// 91.9, 86.3, 89.1, 94.6 % at 0-1 A (lowest 86.3, mean 90.4); tolerance 1.5 points below each of
+// lowest and mean. Before output_smoothing the model predicted 84.2-88.1 % (mean 86.4, every 4th
+// sample, two starts): the mean bound fails it.
+TEST(CurrentDependent, UtfsmDamperFindsTheRecordingsSmoothingAndPredictsTenMillimetres) {
+  std::vector<Recording> training;
+  for (const char* test : {"25mm0x1", "25mm0x25", "25mm0x5"}) {
+    const std::vector<Recording> recs = utfsm_recordings(test);
+    training.insert(training.end(), recs.begin(), recs.end());
+  }
+  const std::vector<Recording> prediction = utfsm_recordings("10mm1");
+  if (training.size() != 15 || prediction.empty())
+    GTEST_SKIP() << "shared utfsm recordings not present";
+  FamilyFitOptions options;
+  options.decimation = 8;
+  options.greybox.starts = 1;
+  const FamilyFit r = fit_current_dependent(training, "damper", prediction, options);
+  ASSERT_EQ(r.predicted.size(), 5u);
+  const auto& smoothing = r.fit.params[static_cast<std::size_t>(
+      pheno_param_index(PhenoKind::damper, "output_smoothing"))];
+  EXPECT_NEAR(smoothing.value, 0.1016, 0.15 * 0.1016);
+  double lowest = 100.0, mean = 0.0;
+  for (const FamilyMember& m : r.predicted) {
+    std::printf("%s: predicted FIT %.1f %%\n", m.csv_path.c_str(), m.metrics.fit_percent);
+    lowest = std::min(lowest, m.metrics.fit_percent);
+    mean += m.metrics.fit_percent / 5.0;
+  }
+  EXPECT_GE(lowest, 84.8);
+  EXPECT_GE(mean, 88.9);
 }

@@ -117,6 +117,38 @@ TEST(FitModelJson, GreyboxRoundTripSimulatesTheSame) {
   }
 }
 
+// A damper model written before the model had output_smoothing (15 parameters) reads back with
+// output_smoothing held at 0 (its output was not smoothed) and simulates as the same parameters
+// with an explicit 0.
+TEST(FitModelJson, DamperModelWithoutOutputSmoothingReadsAsUnsmoothed) {
+  const Recording rec = damper_recording(0.05);
+  GreyboxFit fit;
+  fit.model = "damper";
+  fit.setup = greybox_setup_for(rec, PhenoKind::damper);
+  fit.setup.settings.eps = 1e-6;
+  fit.setup.settings.motion_scale = 0.05;
+  fit.setup.settings.output_scale = 1000.0;
+  const std::vector<double> values = {200.0, 300.0, 0.0,  2000.0, 0.0, 1.0,  1e12, 1e6,
+                                      0.0,   0.0,   1e-3, 0.0,    0.0, 0.01, 0.0,  0.0};
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    FittedParameter p;
+    p.name = pheno_params(PhenoKind::damper)[k].name;
+    p.unit = pheno_params(PhenoKind::damper)[k].unit;
+    p.value = values[k];
+    fit.params.push_back(p);
+  }
+  nlohmann::json j = fit_model_json(fit, rec.meta);
+  ASSERT_EQ(j["parameters"].back()["name"], "output_smoothing");
+  j["parameters"].erase(j["parameters"].size() - 1);
+  const FitModel back = parse_fit_model_json(j.dump(), "old_damper.json");
+  ASSERT_TRUE(back.greybox.has_value());
+  ASSERT_EQ(back.greybox->params.size(), 16u);
+  EXPECT_EQ(back.greybox->params.back().name, "output_smoothing");
+  EXPECT_EQ(back.greybox->params.back().value, 0.0);
+  EXPECT_TRUE(back.greybox->params.back().fixed);
+  EXPECT_EQ(simulate_fit_model(rec, back), simulate_pheno(rec, fit.setup, values));
+}
+
 // Valve-chain: the static map travels with the model (grid, yield table, viscous resistance).
 TEST(FitModelJson, ValveChainRoundTripCarriesTheStaticMap) {
   const ValveChainFit fit = chain_model();

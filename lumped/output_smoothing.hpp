@@ -1,0 +1,51 @@
+#pragma once
+// The smoothing a recording's processing applied to its output: a centred moving average (boxcar)
+// of the model output over a window that is a fixed fraction of the drive's period (the UTFSM
+// damper tests were filtered with a moving average over a tenth of the period,
+// docs/damper-model.md), and the drive period it is measured against. Templated so Ceres Jets flow
+// through the window.
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+#include "lumped/smooth.hpp"
+
+namespace rheomag::lumped {
+
+/// Period [s] of a periodic drive signal v(t) from its upward zero crossings (hysteresis of a
+/// tenth of its rms about its mean); 0 if it has fewer than two full cycles or if its cycles differ
+/// by more than 20 % (not periodic: no period-relative smoothing applies).
+double drive_period(const std::vector<double>& t, const std::vector<double>& v);
+
+/// Replaces y[0..n) on the times t[0..n) by its centred moving average over `width` [s]: the
+/// exact mean of the piecewise linear interpolant over [t_i - w/2, t_i + w/2], the window shrunk
+/// symmetrically at the ends. Nothing changes for a width <= 0.
+template <class T>
+void centred_boxcar(const double* t, std::size_t n, const T& width, T* y) {
+  if (n < 2 || !(value_of(width) > 0.0)) return;
+  std::vector<T> integral(n);  // trapezoidal integral of y from t[0]
+  integral[0] = T(0.0);
+  for (std::size_t k = 1; k < n; ++k)
+    integral[k] = integral[k - 1] + 0.5 * (y[k] + y[k - 1]) * (t[k] - t[k - 1]);
+  // Exact integral of the interpolant from t[0] to tau (t[0] <= tau <= t[n-1]).
+  const auto integral_to = [&](const T& tau) {
+    const double tv = value_of(tau);
+    std::size_t j = static_cast<std::size_t>(std::upper_bound(t, t + n, tv) - t);
+    j = std::clamp<std::size_t>(j, 1, n - 1) - 1;
+    const T s = tau - t[j];
+    return integral[j] + s * (y[j] + 0.5 * (y[j + 1] - y[j]) * s / (t[j + 1] - t[j]));
+  };
+  std::vector<T> out(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    T half = 0.5 * width;
+    const double room = std::min(t[i] - t[0], t[n - 1] - t[i]);
+    if (value_of(half) > room) half = T(room);
+    out[i] = value_of(half) > 0.0
+                 ? (integral_to(t[i] + half) - integral_to(t[i] - half)) / (2.0 * half)
+                 : y[i];
+  }
+  std::copy(out.begin(), out.end(), y);
+}
+
+}  // namespace rheomag::lumped
