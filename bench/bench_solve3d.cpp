@@ -3,6 +3,8 @@
 // model, coarse mesh) and the bundled annular valve with a lead slot on the swept mesh (half
 // model, swept_options(): the issue's < 120 s target, docs/magnetostatics3d.md). Whole pipeline
 // timed: revolve, TetGen, gauge, loads, Newton, results. Peak memory: run under /usr/bin/time -v.
+// BM_Team20Fine: TEAM problem 20 on the 2.5 mm grid at the four measured excitations, with the
+// pole force per excitation as counters (F980 ... F5020 [N]; measured 8.0, 53.8, 74.7, 79.7 N).
 
 #include <benchmark/benchmark.h>
 
@@ -11,6 +13,7 @@
 #include "case/case_file.hpp"
 #include "case/toml_section.hpp"
 #include "magnetostatics3d/solve3d.hpp"
+#include "magnetostatics3d/team20.hpp"
 #include "valve/valve_chain.hpp"  // registers the bundled cases' [valve] section
 
 namespace {
@@ -65,6 +68,23 @@ void BM_AnnularValveLeadSlotHalfSwept(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_AnnularValveLeadSlotHalfSwept)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+
+void BM_Team20Fine(benchmark::State& state) {
+  Team20Options options;
+  options.step = 2.5e-3;
+  for (auto _ : state) {
+    const std::vector<Team20Result> r = solve_team20({980, 3010, 4520, 5020}, options);
+    state.counters["tetrahedra"] = static_cast<double>(r.back().tetrahedra);
+    state.counters["dofs"] = r.back().dofs;
+    int newton = 0;
+    for (const Team20Result& x : r) {
+      newton += x.newton_iterations;
+      state.counters["F" + std::to_string(static_cast<int>(x.ampere_turns))] = -x.force_z;
+    }
+    state.counters["newton"] = newton;
+  }
+}
+BENCHMARK(BM_Team20Fine)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
 }  // namespace
 

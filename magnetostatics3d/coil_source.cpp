@@ -40,8 +40,7 @@ double source_tz(const CircuitCoils& coils, double r, double z) {
 }
 
 /// Integral of T_z over the tetrahedron with vertices x (degree-2 rule, `levels` bisections).
-double integrate_tz(const CircuitCoils& coils, const std::array<Eigen::Vector3d, 4>& x,
-                    int levels) {
+double integrate_tz(const SourceTz& tz, const std::array<Eigen::Vector3d, 4>& x, int levels) {
   if (levels > 0) {
     // Eight children by edge midpoints (four corners and the inner octahedron split in four).
     auto mid = [&](int i, int j) { return 0.5 * (x[i] + x[j]); };
@@ -56,15 +55,14 @@ double integrate_tz(const CircuitCoils& coils, const std::array<Eigen::Vector3d,
                                                                   {m02, m03, m13, m23},
                                                                   {m02, m12, m13, m23}}};
     double sum = 0.0;
-    for (const auto& c : children) sum += integrate_tz(coils, c, levels - 1);
+    for (const auto& c : children) sum += integrate_tz(tz, c, levels - 1);
     return sum;
   }
   const double volume = std::abs((x[1] - x[0]).dot((x[2] - x[0]).cross(x[3] - x[0]))) / 6.0;
   constexpr double a = 0.5854101966249685, b = 0.1381966011250105;  // degree-2 4-point rule
   double sum = 0.0;
   for (int q = 0; q < 4; ++q) {
-    Eigen::Vector3d p = b * (x[0] + x[1] + x[2] + x[3]) + (a - b) * x[q];
-    sum += source_tz(coils, std::hypot(p[0], p[1]), p[2]);
+    sum += tz(b * (x[0] + x[1] + x[2] + x[3]) + (a - b) * x[q]);
   }
   return 0.25 * volume * sum;
 }
@@ -115,30 +113,45 @@ std::vector<CircuitCoils> collect_coils(const cases::Problem& closed, const mesh
 
 }  // namespace
 
+Eigen::VectorXd z_source_loads(const TetMesh& mesh, const std::vector<Eigen::Vector3d>& nodes,
+                               const SourceTz& tz, double z_min, double z_max,
+                               const std::function<bool(double, double)>& jumps) {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(mesh.edges.size()));
+  for (int t = 0; t < static_cast<int>(mesh.tets.size()); ++t) {
+    std::array<Eigen::Vector3d, 4> x;
+    double z_lo = INFINITY, z_hi = -INFINITY;
+    for (int k = 0; k < 4; ++k) {
+      x[k] = nodes[mesh.tets[t][k]];
+      z_lo = std::min(z_lo, x[k][2]);
+      z_hi = std::max(z_hi, x[k][2]);
+    }
+    if (z_hi < z_min || z_lo > z_max) continue;
+    const double integral = integrate_tz(tz, x, jumps(z_lo, z_hi) ? 2 : 0);
+    if (integral == 0.0) continue;
+    const auto curls = edge_curls(mesh, t);
+    for (int e = 0; e < 6; ++e) f[mesh.tet_edges[t][e]] += curls[e][2] * integral;
+  }
+  return f;
+}
+
 std::vector<Eigen::VectorXd> circuit_loads(const cases::Problem& closed, const mesh::Mesh& meridian,
                                            const TetMesh& mesh,
                                            const std::vector<Eigen::Vector3d>& source_nodes) {
   const std::vector<CircuitCoils> coils = collect_coils(closed, meridian);
   std::vector<Eigen::VectorXd> loads;
   for (const CircuitCoils& c : coils) {
-    Eigen::VectorXd f = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(mesh.edges.size()));
-    for (int t = 0; t < static_cast<int>(mesh.tets.size()) && !c.triangles.empty(); ++t) {
-      std::array<Eigen::Vector3d, 4> x;
-      double z_lo = INFINITY, z_hi = -INFINITY;
-      for (int k = 0; k < 4; ++k) {
-        x[k] = source_nodes[mesh.tets[t][k]];
-        z_lo = std::min(z_lo, x[k][2]);
-        z_hi = std::max(z_hi, x[k][2]);
-      }
-      if (z_hi < c.z_min || z_lo > c.z_max) continue;
-      const bool jump = std::any_of(c.steps.begin(), c.steps.end(),
-                                    [&](const auto& s) { return s[0] > z_lo && s[0] < z_hi; });
-      const double tz = integrate_tz(c, x, jump ? 2 : 0);
-      if (tz == 0.0) continue;
-      const auto curls = edge_curls(mesh, t);
-      for (int e = 0; e < 6; ++e) f[mesh.tet_edges[t][e]] += curls[e][2] * tz;
+    if (c.triangles.empty()) {
+      loads.push_back(Eigen::VectorXd::Zero(static_cast<Eigen::Index>(mesh.edges.size())));
+      continue;
     }
-    loads.push_back(std::move(f));
+    const auto jumps = [&](double z_lo, double z_hi) {
+      return std::any_of(c.steps.begin(), c.steps.end(),
+                         [&](const auto& s) { return s[0] > z_lo && s[0] < z_hi; });
+    };
+    const auto tz = [&](const Eigen::Vector3d& p) {
+      return source_tz(c, std::hypot(p[0], p[1]), p[2]);
+    };
+    loads.push_back(z_source_loads(mesh, source_nodes, tz, c.z_min, c.z_max, jumps));
   }
   return loads;
 }

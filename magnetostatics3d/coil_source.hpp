@@ -2,6 +2,7 @@
 // Azimuthal coil currents of a revolved problem as discretely divergence-free edge loads.
 
 #include <Eigen/Core>
+#include <functional>
 #include <vector>
 
 #include "case/problem.hpp"
@@ -9,6 +10,19 @@
 #include "mesh/mesh.hpp"
 
 namespace rheomag::magnetostatics3d {
+
+/// The z component T_z(x) of a source field T = T_z e_z at unit current [1/m^2 x m = turns/m].
+using SourceTz = std::function<double(const Eigen::Vector3d&)>;
+
+/// Edge loads f_e = integral T_z e_z . curl w_e dV of a source T = T_z e_z (curl T = J) that
+/// vanishes outside z_min <= z <= z_max. T_z is evaluated at `nodes` (one per mesh node) with a
+/// degree-2 rule, on 64 sub-tetrahedra when `jumps(z_lo, z_hi)` says T_z jumps inside a
+/// tetrahedron spanning z_lo..z_hi. n x T is continuous when T_z jumps only across planes
+/// z = const; the load is then the transpose curl of something and orthogonal to every discrete
+/// gradient (a discretely divergence-free source).
+Eigen::VectorXd z_source_loads(const TetMesh& mesh, const std::vector<Eigen::Vector3d>& nodes,
+                               const SourceTz& tz, double z_min, double z_max,
+                               const std::function<bool(double, double)>& jumps);
 
 /// Edge loads f_ce = integral T_c . curl w_e dV of every circuit c at 1 A, where T_c is a source
 /// field with curl T_c = J_c, the coil current density (turns / meridian area of each coil

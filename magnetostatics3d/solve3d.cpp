@@ -70,8 +70,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 Solve3dOptions swept_options() {
   Solve3dOptions o;
   o.mesher = Mesher3d::swept;
-  o.gap_layers = 2;
-  o.region_fraction = 0.25;
+  o.gap_layers = 3;
+  o.region_fraction = 0.2;
   o.facet_angle = 15.0 * std::numbers::pi / 180.0;
   o.fine_angle = 3.0 * std::numbers::pi / 180.0;
   o.angle_growth = 2.0;
@@ -127,6 +127,7 @@ Solve3dResult solve_problem_3d(const cases::Problem& problem, const std::vector<
   const std::vector<double> walls = feature_walls(features, closed, boxes, span);
   const std::vector<double> sizes = region_sizes(closed, boxes, options);
   mesh::Mesh swept_meridian;
+  Revolution swept_revolution;
   if (options.mesher == Mesher3d::swept) {
     // The meridian mesh at the 3D sizes, swept through graded angles (prism layers).
     // Regions holding cuts are refined so the cuts' staircase is a third of their size.
@@ -141,19 +142,25 @@ Solve3dResult solve_problem_3d(const cases::Problem& problem, const std::vector<
     sweep_options.min_gap_elements = options.gap_layers;
     sweep_options.grading = options.meridian_grading;
     swept_meridian = mesh::generate_mesh(sized, sweep_options);
-    const Revolution rev = part == ModelPart::wedge
-                               ? make_revolution(span, span)
-                               : graded_revolution(span, walls, options.fine_angle,
-                                                   options.facet_angle, options.angle_growth);
-    out.mesh = std::make_unique<TetMesh>(sweep_mesh(swept_meridian, rev));
+    swept_revolution = part == ModelPart::wedge
+                           ? make_revolution(span, span)
+                           : graded_revolution(span, walls, options.fine_angle, options.facet_angle,
+                                               options.angle_growth);
+    out.mesh = std::make_unique<TetMesh>(sweep_mesh(swept_meridian, swept_revolution));
   } else {
     const Revolution rev = make_revolution(span, options.facet_angle, walls);
     out.mesh = std::make_unique<TetMesh>(
         tetrahedralize(revolve(closed, rev, volume_limits(sizes), walls)));
   }
   const mesh::Mesh& source_meridian = options.mesher == Mesher3d::swept ? swept_meridian : meridian;
-  const std::vector<Eigen::Vector3d> undeformed =
+  std::vector<Eigen::Vector3d> undeformed =
       apply_features(features, closed, boxes, span, *out.mesh);
+  if (options.mesher == Mesher3d::swept && options.ring_areas) {
+    // The coil source follows the mesh: it is evaluated at the undeformed nodes, moved alike.
+    const std::vector<Eigen::Vector3d> swept = undeformed;
+    restore_ring_areas(out.mesh->nodes, swept, swept_revolution);
+    restore_ring_areas(undeformed, swept, swept_revolution);
+  }
   out.mesh_seconds = seconds_since(start);
 
   report("solve", std::to_string(out.mesh->tets.size()) + " tetrahedra, " +

@@ -153,4 +153,43 @@ TetMesh sweep_mesh(const mesh::Mesh& meridian, const Revolution& rev) {
   return m;
 }
 
+std::vector<double> ring_area_factors(const Revolution& rev) {
+  const int intervals = static_cast<int>(rev.angles.size()) - 1;
+  std::vector<double> q(intervals);
+  for (int k = 0; k < intervals; ++k) {
+    const double d = rev.angles[k + 1] - rev.angles[k];
+    q[k] = d / std::sin(d);
+  }
+  std::vector<double> c(rev.angles.size(), 1.0);
+  for (int k = 0; k <= intervals; ++k) {
+    int before = k - 1, after = k;
+    if (rev.full) {
+      before = (k - 1 + intervals) % intervals;
+      after = k % intervals;
+    } else if (k == 0) {
+      before = 0;
+    } else if (k == intervals) {
+      after = intervals - 1;
+    }
+    c[k] = std::pow(q[before] * q[after], 0.25);
+  }
+  return c;
+}
+
+void restore_ring_areas(std::vector<Eigen::Vector3d>& nodes,
+                        const std::vector<Eigen::Vector3d>& swept, const Revolution& rev) {
+  const std::vector<double> c = ring_area_factors(rev);
+  constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
+    if (swept[n][0] == 0.0 && swept[n][1] == 0.0) continue;  // on the axis
+    double phi = std::atan2(swept[n][1], swept[n][0]);
+    if (phi < -1e-12) phi += kTwoPi;
+    const auto it = std::lower_bound(rev.angles.begin(), rev.angles.end(), phi);
+    std::size_t k = static_cast<std::size_t>(it - rev.angles.begin());
+    if (k == rev.angles.size() || (k > 0 && phi - rev.angles[k - 1] < rev.angles[k] - phi)) --k;
+    nodes[n][0] *= c[k];
+    nodes[n][1] *= c[k];
+  }
+}
+
 }  // namespace rheomag::magnetostatics3d

@@ -106,6 +106,47 @@ TEST(SweptMesh, ConformingWithEveryBoundaryFaceClassified) {
   }
 }
 
+// restore_ring_areas: with equal steps the factors scale x and y by sqrt(d / sin d), so the
+// facetted body gets exactly the volume of the true revolved body (Pappus: meridian area x
+// centroid radius x span); with graded steps (3 to 30 degrees, where the factors change from
+// one angle to the next) at least nine tenths of the chords' deficit are restored (measured:
+// -0.05 % left for the half, -0.17 % for the full revolution).
+TEST(SweptMesh, RestoredRingsHaveTheTrueRevolvedVolume) {
+  const cases::Problem closed = magnetostatics::close_domain(annular_valve().problem);
+  mesh::MeshOptions options;
+  options.order = 1;
+  options.min_gap_elements = 1;
+  const mesh::Mesh meridian = mesh::generate_mesh(closed.geometry, options);
+  double pappus = 0.0;  // per radian
+  for (const auto& tri : meridian.triangles) {
+    const mesh::Point& a = meridian.nodes[tri[0]];
+    const mesh::Point& b = meridian.nodes[tri[1]];
+    const mesh::Point& c = meridian.nodes[tri[2]];
+    const double area = 0.5 * std::abs((b.r - a.r) * (c.z - a.z) - (c.r - a.r) * (b.z - a.z));
+    pappus += area * (a.r + b.r + c.r) / 3.0;
+  }
+  const std::vector<std::pair<Revolution, bool>> cases{
+      {make_revolution(std::numbers::pi, 15 * kDeg), true},
+      {make_revolution(2 * std::numbers::pi, 15 * kDeg), true},
+      {graded_revolution(std::numbers::pi, {0.3}, 3 * kDeg, 30 * kDeg, 2.0), false},
+      {graded_revolution(2 * std::numbers::pi, {0.3, 2.0}, 3 * kDeg, 30 * kDeg, 2.0), false}};
+  for (const auto& [rev, equal_steps] : cases) {
+    TetMesh m = sweep_mesh(meridian, rev);
+    auto volume = [&] {
+      double v = 0.0;
+      for (std::size_t t = 0; t < m.tets.size(); ++t) v += m.volume(static_cast<int>(t));
+      return v;
+    };
+    const double span = rev.angles.back() - rev.angles.front();
+    const double deficit = 1.0 - volume() / (pappus * span);  // the chords'
+    EXPECT_GT(deficit, 1e-3);
+    const std::vector<Eigen::Vector3d> swept = m.nodes;
+    restore_ring_areas(m.nodes, swept, rev);
+    EXPECT_NEAR(volume() / (pappus * span), 1.0, equal_steps ? 1e-9 : 0.1 * deficit)
+        << rev.angles.size();
+  }
+}
+
 // The axisymmetric annular valve: wedge model on the swept mesh, 2D within 1 % (gap |B| and
 // flux linkage), as for the TetGen wedge (test_revolved_valves.cpp), at three layers across the
 // gap and regions at 0.15 of their side (at swept_options()' 2 and 0.25 the flux linkage is
@@ -126,9 +167,11 @@ TEST(SweptMesh, AnnularValveWedgeMatches2dWithinOnePercent) {
 }
 
 // Half model of the lead-slot mesh with the slot filled by the core's steel (the body stays
-// axisymmetric): every 10-degree sector of both gaps within 1 % of the 2D average, with
-// swept_options() (15-degree steps, 3 degrees at the slot's edges, growth 2); the flux linkage
-// loses the chords' O(step^2) volume (-2 % at 15 degrees), hence 3 % there.
+// axisymmetric): every 10-degree sector of both gaps and the flux linkage within 1 % of 2D
+// (the target), with swept_options() (15-degree steps, 3 degrees at the slot's edges,
+// growth 2; 3 layers across a gap, regions at 0.2 of their side; rings restored to their true
+// areas). Measured: sectors +0.07 ... +0.77 %, lambda -0.67 % (351k tetrahedra); without
+// restore_ring_areas lambda loses the chords' O(step^2) area (docs/magnetostatics3d.md).
 TEST(SweptMesh, SteelFilledSlotHalfModelMatches2dInEverySector) {
   const cases::Case c = annular_valve(
       "\n[[feature]]\nkind = \"lead_slot\"\nregion = \"core\"\nwidth = 3.0\ndepth = 2.0\n"
@@ -144,7 +187,7 @@ TEST(SweptMesh, SteelFilledSlotHalfModelMatches2dInEverySector) {
     }
   }
   EXPECT_NEAR(three.results.circuits[0].flux_linkage / two.results.circuits[0].flux_linkage, 1.0,
-              0.03);
+              0.01);
 }
 
 }  // namespace
