@@ -118,6 +118,7 @@ bool simulate_rk4(PhenoKind kind, const T* p, const DriveSeries& d, const PhenoS
   pheno_initial_state(kind, p, d.at(begin), s, x.data());
   out[0] = pheno_output(kind, p, d.at(begin), s, x.data());
   double rate_previous = 0.0;
+  BoucWenFieldGains<T> gains;  // Bouc-Wen's field filter, kept from step to step
   for (std::size_t i = begin; i + 1 < end; ++i) {
     const double dt = d.t[i + 1] - d.t[i];
     if (has_exponential_step(kind)) {  // stiff-stable exponential steps, no rate limit
@@ -129,7 +130,7 @@ bool simulate_rk4(PhenoKind kind, const T* p, const DriveSeries& d, const PhenoS
         if (kind == PhenoKind::damper)
           damper_step(p, start, middle, s, h, x.data());
         else
-          bouc_wen_step(p, start, middle, s, h, x.data());
+          bouc_wen_step(p, start, middle, s, h, gains, x.data());
       }
       out[i + 1 - begin] = pheno_output(kind, p, d.at(i + 1), s, x.data());
       if (!std::isfinite(value_of(out[i + 1 - begin]))) return false;
