@@ -491,6 +491,11 @@ void run_fit(const FitData& data, const GreyboxSetup& setup, const ParamGuess& g
       thetas[static_cast<std::size_t>(start)][j] = value / guess.scale[k];
     }
   }
+  // The starts are independent Ceres problems solved `threads` at a time; threads left over
+  // (fewer starts than threads) evaluate a start's residual blocks, one per recording, in parallel.
+  const unsigned threads = fit_threads(options.threads);
+  const int threads_per_start =
+      static_cast<int>(threads / std::min<unsigned>(threads, static_cast<unsigned>(starts)));
   std::vector<ceres::Solver::Summary> summaries(static_cast<std::size_t>(starts));
   const auto solve_start = [&](std::size_t start) {
     std::array<double, NF>& theta = thetas[start];
@@ -505,11 +510,13 @@ void run_fit(const FitData& data, const GreyboxSetup& setup, const ParamGuess& g
       problem.SetParameterLowerBound(theta.data(), j, guess.lower[free[j]] / guess.scale[free[j]]);
       problem.SetParameterUpperBound(theta.data(), j, guess.upper[free[j]] / guess.scale[free[j]]);
     }
-    const ceres::Solver::Options so =
+    ceres::Solver::Options so =
         greybox_solver_options(options.max_iterations, 50);  // trial steps into unstable regions
+    so.function_tolerance = options.function_tolerance;
+    so.num_threads = threads_per_start;
     ceres::Solve(so, &problem, &summaries[start]);
   };
-  for_each_start(static_cast<std::size_t>(starts), fit_threads(options.threads), solve_start);
+  for_each_start(static_cast<std::size_t>(starts), threads, solve_start);
   BestStart<NF> best;
   for (int start = 0; start < starts; ++start) {
     ++fit.starts_run;

@@ -21,11 +21,14 @@ struct GreyboxOptions {
   int starts = 4;                    ///< multi-start: number of starting points (first = nominal)
   unsigned seed = 1;                 ///< seed of the perturbed starting points
   int max_iterations = 60;           ///< Levenberg-Marquardt iterations per start
-  int threads = 0;                   ///< starts solved at once (0: one per core); same result
+  int threads = 0;                   ///< threads (0: one per core); same fit if starts >= it
   double max_substep = 2.5e-4;       ///< [s] largest RK4 substep inside the fit
   double exponential_step = 5e-3;    ///< [s] largest step of the damper model's integrator
   double bouc_wen_step = 1e-3;       ///< [s] largest step of the Bouc-Wen model's integrator
   double eps_fraction = 1e-3;        ///< sign/|.| regularisation width as a fraction of rms motion
+  /// A start stops when an iteration lowers its cost (half the sum of squared residuals) by less
+  /// than this fraction: 100 - FIT then moves by less than half this fraction of itself.
+  double function_tolerance = 1e-5;
 };
 
 /// One fitted parameter in SI units (units spelled out for this recording's columns).
