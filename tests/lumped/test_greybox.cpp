@@ -55,6 +55,23 @@ void simulate_into(Recording& rec, PhenoKind kind, const std::vector<double>& pa
   rec.columns["force"] = y;
 }
 
+/// Spencer et al. (1997) Table 1 modified Bouc-Wen parameters in SI (field = current).
+const std::vector<double> kSpencerBoucWen{14000.0, 69500.0, 2100.0, 350.0, 28300.0, 295.0, 4690.0,
+                                          500.0,   3.63e6,  3.63e6, 301.0, 190.0,   0.0};
+
+/// A 10 mm / 2 Hz sine displacement drive at time t with field u.
+PhenoDrive sine_drive(double t, double u) {
+  return PhenoDrive{0.01 * std::sin(4 * M_PI * t), 0.01 * 4 * M_PI * std::cos(4 * M_PI * t), u,
+                    0.0};
+}
+
+/// 3 s of LuGre (stiffness and viscous force linear in current) at 500 Hz with 1 % noise.
+Recording noisy_lugre_recording() {
+  Recording rec = synthetic_recording(3.0, 2e-3);
+  simulate_into(rec, PhenoKind::lugre, {150.0, 700.0, 0.5, 300.0, 120.0, 60.0, 0.7, 0.0}, 0.01, 5);
+  return rec;
+}
+
 }  // namespace
 
 // Maxwell (paper 004 eqs. 8-9) with 1 % noise: every parameter within 3 % (noise-limited; the
@@ -124,9 +141,7 @@ TEST(Greybox, BoucWenRecoversItsParameters) {
 // The starts of a multi-start fit run on several threads; the starting points are drawn before
 // and the best is chosen in start order, so 1 and 3 threads give bitwise the same fit.
 TEST(Greybox, ParallelStartsGiveTheSameFit) {
-  Recording rec = synthetic_recording(3.0, 2e-3);
-  std::vector<double> truth{150.0, 700.0, 0.5, 300.0, 120.0, 60.0, 0.7, 0.0};
-  simulate_into(rec, PhenoKind::lugre, truth, 0.01, 5);
+  const Recording rec = noisy_lugre_recording();
   GreyboxOptions serial, parallel;
   serial.starts = parallel.starts = 3;
   serial.threads = 1;
@@ -145,9 +160,7 @@ TEST(Greybox, ParallelStartsGiveTheSameFit) {
 // by default) instead of Ceres' 1e-10: the fit must not move. LuGre with 1 % noise fitted both
 // ways: FIT within 0.01 points, every free parameter within a tenth of its standard error.
 TEST(Greybox, StoppingOnTheCostPlateauKeepsTheFit) {
-  Recording rec = synthetic_recording(3.0, 2e-3);
-  std::vector<double> truth{150.0, 700.0, 0.5, 300.0, 120.0, 60.0, 0.7, 0.0};
-  simulate_into(rec, PhenoKind::lugre, truth, 0.01, 5);
+  const Recording rec = noisy_lugre_recording();
   GreyboxOptions tight, plateau;
   tight.starts = plateau.starts = 2;
   tight.function_tolerance = 1e-10;
@@ -165,14 +178,10 @@ TEST(Greybox, StoppingOnTheCostPlateauKeepsTheFit) {
 // the step length changes: steps of alternating length with one kept BoucWenFieldGains give
 // bitwise the state of steps that compute their gains afresh.
 TEST(Greybox, BoucWenKeptFieldGainsAreExact) {
-  const std::vector<double> p{14000.0, 69500.0, 2100.0, 350.0, 28300.0, 295.0, 4690.0,
-                              500.0,   3.63e6,  3.63e6, 301.0, 190.0,   0.0};
+  const std::vector<double>& p = kSpencerBoucWen;
   PhenoSettings s;
   s.eps = 1e-5;
-  const auto drive = [](double t) {
-    return PhenoDrive{0.01 * std::sin(4 * M_PI * t), 0.01 * 4 * M_PI * std::cos(4 * M_PI * t),
-                      t < 0.1 ? 0.0 : 1.0, 0.0};
-  };
+  const auto drive = [](double t) { return sine_drive(t, t < 0.1 ? 0.0 : 1.0); };
   std::array<double, 3> kept, fresh;
   pheno_initial_state(PhenoKind::bouc_wen, p.data(), drive(0.0), s, kept.data());
   fresh = kept;
@@ -206,14 +215,10 @@ TEST(Greybox, BadInput) {
 // |r| ~ 0.13 m/s), so explicit RK4 is stable only below ~0.5 ms; the exponential step is within 0.5
 // % at h = 2 ms (measured 0.12 %, 0.9 N of 779 N).
 TEST(Greybox, BoucWenExponentialStepIsSecondOrderAndStiffStable) {
-  const std::vector<double> p{14000.0, 69500.0, 2100.0, 350.0, 28300.0, 295.0, 4690.0,
-                              500.0,   3.63e6,  3.63e6, 301.0, 190.0,   0.0};
+  const std::vector<double>& p = kSpencerBoucWen;
   PhenoSettings s;
   s.eps = 1e-5;
-  const auto drive = [](double t) {
-    return PhenoDrive{0.01 * std::sin(4 * M_PI * t), 0.01 * 4 * M_PI * std::cos(4 * M_PI * t), 1.0,
-                      0.0};
-  };
+  const auto drive = [](double t) { return sine_drive(t, 1.0); };
   const auto force = [&](const std::array<double, 3>& x) {
     return pheno_output(PhenoKind::bouc_wen, p.data(), drive(0.5), s, x.data());
   };
