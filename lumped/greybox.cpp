@@ -512,7 +512,6 @@ void run_fit(const FitData& data, const GreyboxSetup& setup, const ParamGuess& g
     }
     ceres::Solver::Options so =
         greybox_solver_options(options.max_iterations, 50);  // trial steps into unstable regions
-    so.function_tolerance = options.function_tolerance;
     so.num_threads = threads_per_start;
     ceres::Solve(so, &problem, &summaries[start]);
   };

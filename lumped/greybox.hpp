@@ -26,9 +26,6 @@ struct GreyboxOptions {
   double exponential_step = 5e-3;    ///< [s] largest step of the damper model's integrator
   double bouc_wen_step = 1e-3;       ///< [s] largest step of the Bouc-Wen model's integrator
   double eps_fraction = 1e-3;        ///< sign/|.| regularisation width as a fraction of rms motion
-  /// A start stops when an iteration lowers its cost (half the sum of squared residuals) by less
-  /// than this fraction: 100 - FIT then moves by less than half this fraction of itself.
-  double function_tolerance = 1e-5;
 };
 
 /// One fitted parameter in SI units (units spelled out for this recording's columns).

@@ -65,10 +65,12 @@ PhenoDrive sine_drive(double t, double u) {
                     0.0};
 }
 
-/// 3 s of LuGre (stiffness and viscous force linear in current) at 500 Hz with 1 % noise.
-Recording noisy_lugre_recording() {
+/// 3 s of LuGre (stiffness and viscous force linear in current) at 500 Hz with 1 % noise drawn
+/// with `seed`.
+Recording noisy_lugre_recording(unsigned seed = 5) {
   Recording rec = synthetic_recording(3.0, 2e-3);
-  simulate_into(rec, PhenoKind::lugre, {150.0, 700.0, 0.5, 300.0, 120.0, 60.0, 0.7, 0.0}, 0.01, 5);
+  simulate_into(rec, PhenoKind::lugre, {150.0, 700.0, 0.5, 300.0, 120.0, 60.0, 0.7, 0.0}, 0.01,
+                seed);
   return rec;
 }
 
@@ -156,22 +158,23 @@ TEST(Greybox, ParallelStartsGiveTheSameFit) {
   EXPECT_EQ(a.train.fit_percent, b.train.fit_percent);
 }
 
-// A start stops once an iteration lowers the cost by less than options.function_tolerance (1e-5
-// by default) instead of Ceres' 1e-10: the fit must not move. LuGre with 1 % noise fitted both
-// ways: FIT within 0.01 points, every free parameter within a tenth of its standard error.
-TEST(Greybox, StoppingOnTheCostPlateauKeepsTheFit) {
-  const Recording rec = noisy_lugre_recording();
-  GreyboxOptions tight, plateau;
-  tight.starts = plateau.starts = 2;
-  tight.function_tolerance = 1e-10;
-  const GreyboxFit a = fit_greybox(rec, "lugre", tight);
-  const GreyboxFit b = fit_greybox(rec, "lugre", plateau);
-  EXPECT_NEAR(a.train.fit_percent, b.train.fit_percent, 0.01);
-  for (std::size_t k = 0; k < a.params.size(); ++k) {
-    if (!a.params[k].standard_error) continue;
-    EXPECT_NEAR(a.params[k].value, b.params[k].value, 0.1 * *a.params[k].standard_error)
+// With fewer starts than threads, the spare threads evaluate a start's residual blocks (one per
+// recording) in parallel; only the order in which Ceres sums the blocks' costs changes, so a
+// two-recording LuGre family fitted with 1 start on 1 and on 2 threads agrees to 1e-6 relative
+// (round-off only; a different optimum would differ in the second digit).
+TEST(Greybox, SpareThreadsSplitAFamilysRecordings) {
+  const Recording first = noisy_lugre_recording();
+  const Recording second = noisy_lugre_recording(6);
+  GreyboxOptions one, two;
+  one.starts = two.starts = 1;
+  one.threads = 1;
+  two.threads = 2;
+  const GreyboxFit a = fit_greybox_family({first, second}, "lugre", one, 1);
+  const GreyboxFit b = fit_greybox_family({first, second}, "lugre", two, 1);
+  ASSERT_EQ(a.params.size(), b.params.size());
+  for (std::size_t k = 0; k < a.params.size(); ++k)
+    EXPECT_NEAR(a.params[k].value, b.params[k].value, 1e-6 * std::abs(a.params[k].value) + 1e-12)
         << a.params[k].name;
-  }
 }
 
 // Bouc-Wen's field filter gains are kept across the steps of a simulation and recomputed when
