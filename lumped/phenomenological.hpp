@@ -225,7 +225,7 @@ void damper_step(const T* p, const PhenoDrive& a, const PhenoDrive& m, const Phe
 template <class T>
 struct BoucWenFieldGains {
   double step = 0.0;  ///< [s] the h of `half` and `full` (0: not computed yet)
-  T half, full;
+  T half{}, full{};
   /// Makes these the gains of parameters p (the same p at every call) and step h.
   void update(const T* p, double h) {
     if (h == step) return;
@@ -241,10 +241,9 @@ struct BoucWenFieldGains {
 /// stiff mode is z's relaxation through the dampers (rate A alpha / (c0 + c1)) and its hysteretic
 /// saturation; each state's rate is linearised about the half-step predictor (decay rates in
 /// values: any rate gives a consistent scheme, the true one makes it stable). `gains` are the
-/// field filter's of this simulation. Flattened: every Jet operation inside is inlined (GCC left
-/// the 12-lane Jet additions and products out of line, half the fit's time in calls).
+/// field filter's of this simulation.
 template <class T>
-[[gnu::flatten]] void bouc_wen_step(const T* p, const PhenoDrive& a, const PhenoDrive& m, const PhenoSettings& s,
+void bouc_wen_step(const T* p, const PhenoDrive& a, const PhenoDrive& m, const PhenoSettings& s,
                    double h, BoucWenFieldGains<T>& gains, T* x) {
   using namespace pheno_detail;
   gains.update(p, h);
