@@ -21,7 +21,7 @@ struct GreyboxOptions {
   int starts = 4;                    ///< multi-start: number of starting points (first = nominal)
   unsigned seed = 1;                 ///< seed of the perturbed starting points
   int max_iterations = 60;           ///< Levenberg-Marquardt iterations per start
-  int threads = 0;                   ///< starts solved at once (0: one per core); same result
+  int threads = 0;                   ///< threads (0: one per core); same fit if starts >= it
   double max_substep = 2.5e-4;       ///< [s] largest RK4 substep inside the fit
   double exponential_step = 5e-3;    ///< [s] largest step of the damper model's integrator
   double bouc_wen_step = 1e-3;       ///< [s] largest step of the Bouc-Wen model's integrator

@@ -220,15 +220,34 @@ void damper_step(const T* p, const PhenoDrive& a, const PhenoDrive& m, const Phe
   x[0] = f0 + h * phi1(T(h) * lambda_m) * (rate(m, f_half, u_half) + lambda_m * (f_half - f0));
 }
 
+/// The field filter of Bouc-Wen steps of length h, u' = -eta (u - v) solved exactly: its half
+/// and full step gains h phi1(h eta) eta. They depend on eta and h only, so one simulation (one
+/// parameter vector) keeps them and recomputes them only when its step length changes.
+template <class T>
+struct BoucWenFieldGains {
+  double step = 0.0;  ///< [s] the h of `half` and `full` (0: not computed yet)
+  T half{}, full{};
+  /// Makes these the gains of parameters p (the same p at every call) and step h.
+  void update(const T* p, double h) {
+    if (h == step) return;
+    const T& eta = p[pheno_detail::kWEta];
+    half = 0.5 * h * pheno_detail::phi1(T(0.5 * h) * eta) * eta;
+    full = h * pheno_detail::phi1(T(h) * eta) * eta;
+    step = h;
+  }
+};
+
 /// One step of length h of the modified Bouc-Wen model from drive `a` (start) through `m`
 /// (midpoint): the exponential midpoint rule of damper_step (second order, stable for any h). The
 /// stiff mode is z's relaxation through the dampers (rate A alpha / (c0 + c1)) and its hysteretic
 /// saturation; each state's rate is linearised about the half-step predictor (decay rates in
-/// values: any rate gives a consistent scheme, the true one makes it stable).
+/// values: any rate gives a consistent scheme, the true one makes it stable). `gains` are the
+/// field filter's of this simulation.
 template <class T>
 void bouc_wen_step(const T* p, const PhenoDrive& a, const PhenoDrive& m, const PhenoSettings& s,
-                   double h, T* x) {
+                   double h, BoucWenFieldGains<T>& gains, T* x) {
   using namespace pheno_detail;
+  gains.update(p, h);
   constexpr std::size_t kParams = kWOffset + 1;
   std::array<double, kParams> pv{};
   for (std::size_t k = 0; k < kParams; ++k) pv[k] = value_of(p[k]);
@@ -240,10 +259,9 @@ void bouc_wen_step(const T* p, const PhenoDrive& a, const PhenoDrive& m, const P
     const double xv[3] = {value_of(state[0]), value_of(state[1]), value_of(state[2])};
     return bouc_wen_decay_rates(pv.data(), d, xv);
   };
-  // Field filter u' = -eta (u - v): linear, solved exactly with the midpoint drive.
-  const T eta = p[kWEta];
+  // Field filter: linear, solved exactly with the midpoint drive.
   const T u0 = x[2];
-  const T u_half = u0 + 0.5 * h * phi1(T(0.5 * h) * eta) * eta * (m.field - u0);
+  const T u_half = u0 + gains.half * (m.field - u0);
   const T x0[3] = {x[0], x[1], u0};
   T f0[2], fm[2];
   rates(a, x0, f0);
@@ -254,7 +272,15 @@ void bouc_wen_step(const T* p, const PhenoDrive& a, const PhenoDrive& m, const P
   const std::array<double, 2> lambda_m = decay(m, half);
   for (int k = 0; k < 2; ++k)
     x[k] = x0[k] + h * phi1(h * lambda_m[k]) * (fm[k] + lambda_m[k] * (half[k] - x0[k]));
-  x[2] = u0 + h * phi1(T(h) * eta) * eta * (m.field - u0);
+  x[2] = u0 + gains.full * (m.field - u0);
+}
+
+/// The same step computing its field filter gains first.
+template <class T>
+void bouc_wen_step(const T* p, const PhenoDrive& a, const PhenoDrive& m, const PhenoSettings& s,
+                   double h, T* x) {
+  BoucWenFieldGains<T> gains;
+  bouc_wen_step(p, a, m, s, h, gains, x);
 }
 
 template <class T>
