@@ -11,7 +11,7 @@ function(rheomag_add_tests lib)
     target_compile_definitions(${target} PRIVATE
       RHEOMAG_TEST_DATA="${RHEOMAG_TEST_DATA}"
       RHEOMAG_SOURCE_DIR="${RHEOMAG_SOURCE_DIR}"
-      RHEOMAG_SHARED_DIR="${RHEOMAG_SOURCE_DIR}/../shared"
+      RHEOMAG_SHARED_DIR="${RHEOMAG_SHARED_DIR}"
       RHEOMAG_BINARY="$<TARGET_FILE:rheomag>")
     add_dependencies(${target} rheomag)
     # Fuzz tests (test_*fuzz*.cpp) run for a bounded time in CI: each test of them at most 60 s
