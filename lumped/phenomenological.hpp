@@ -28,6 +28,9 @@ struct PhenoParam {
   std::string name;
   std::string unit;
   bool field_term;  ///< multiplies the field input (held at 0 when there is none)
+  /// Added after models were first written: absent from a model file or spec means 0, which is the
+  /// model without it (output_smoothing: no smoothing; field_saturation: no saturation).
+  bool optional = false;
 };
 
 /// The drive of a phenomenological model at one instant (data, never differentiated).
@@ -58,6 +61,10 @@ const std::vector<PhenoParam>& pheno_params(PhenoKind kind);
 
 /// Number of internal states of a model.
 std::size_t pheno_state_count(PhenoKind kind);
+
+/// Index of output_smoothing, the last parameter of every model: the recording's moving average
+/// over that fraction of the drive period (lumped/output_smoothing.hpp).
+std::size_t pheno_smoothing_index(PhenoKind kind);
 
 /// Index of parameter `name` of `kind`, or -1.
 int pheno_param_index(PhenoKind kind, const std::string& name);
@@ -118,8 +125,25 @@ enum Damper {
   kDmGas,
   kDmTau,
   kDmOffset,
+  kDmSaturation,
   kDmSmoothing
 };
+
+/// Damper model: the field the valve sees, in current units, b = tanh(k u) / k with
+/// k^2 = p[kDmSaturation] (1 / k is the current at which the gap flux saturates, as the circuit's
+/// steel does); b = u for k = 0 (the model before field_saturation existed). Parametrised by k^2,
+/// not k: b is even in k, so its slope in k vanishes at 0 while its slope in k^2 is -u^3 / 3, and a
+/// fit started at no saturation can move away from it.
+template <class T>
+T damper_effective_field(const T* p, const T& u) {
+  using std::sqrt;
+  using std::tanh;
+  const T& k2 = p[kDmSaturation];
+  const T x2 = k2 * u * u;
+  if (std::abs(value_of(x2)) < 1e-8) return u * (1.0 - x2 / 3.0);  // series, exact to 1e-17
+  const T k = sqrt(k2);
+  return tanh(k * u) / k;
+}
 
 /// Damper model: rate of the valve force x[0] through the fluid/accumulator compliance. The valve
 /// passes the motion g(F) of a Herschel-Bulkley map with a pre-yield creep branch (inverse of
@@ -128,7 +152,7 @@ enum Damper {
 template <class T>
 T damper_force_rate(const T* p, const PhenoDrive& d, const PhenoSettings& s, const T* x) {
   using std::pow;
-  const T& u = x[2];
+  const T u = damper_effective_field(p, x[2]);
   const T& f = x[0];
   const double w = 1e-3 * s.output_scale;
   const T yield = p[kDmYield0] + p[kDmYield1] * u + p[kDmYield2] * u * u;

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <ceres/jet.h>
+
 #include <cmath>
 #include <functional>
 #include <vector>
@@ -22,8 +24,8 @@ constexpr double kPi = 3.14159265358979323846;
 
 /// Damper parameters in the order of pheno_params(damper); `set` overrides by name.
 std::vector<double> damper_params(const std::vector<std::pair<std::string, double>>& set) {
-  std::vector<double> p = {200.0, 300.0, 0.0,  2000.0, 0.0, 1.0,  1e12, 1e6,
-                           0.0,   0.0,   1e-3, 0.0,    0.0, 0.01, 0.0,  0.0};
+  std::vector<double> p = {200.0, 300.0, 0.0, 2000.0, 0.0,  1.0, 1e12, 1e6, 0.0,
+                           0.0,   1e-3,  0.0, 0.0,    0.01, 0.0, 0.0,  0.0};
   for (const auto& [name, value] : set) {
     const int k = pheno_param_index(PhenoKind::damper, name);
     EXPECT_GE(k, 0) << name;
@@ -85,6 +87,55 @@ TEST(DamperModel, SteadyFlowFollowsHerschelBulkleyMap) {
     const std::vector<double> y = simulate_pheno(rec, damper_setup(rec), p);
     const double expected = 200.0 + 300.0 * 1.0 + 2000.0 * 0.05 * std::sqrt(v / 0.05);
     EXPECT_NEAR(y.back(), expected, 3e-3 * expected) << "v = " << v;
+  }
+}
+
+// Saturating magnetic circuit: the valve sees the field b = tanh(k I) / k (b = I for k = 0; the
+// parameter is k^2), so at steady flow F = F_y0 + F_y1 b + F_y2 b^2 + c m_ref (v / m_ref)^n with
+// the closed-form b. Tolerance 0.3 % as in the Herschel-Bulkley test above (1 N width of the smooth
+// |F|).
+TEST(DamperModel, SaturatingFieldFollowsTanhOfTheCurrent) {
+  const double v = 0.05;
+  for (double k : {0.0, 1.2}) {
+    for (double current : {0.4, 1.0}) {
+      Recording rec = recording(
+          2000, 1e-3, [&](double t) { return v * t; }, [&](double) { return v; },
+          [&](double) { return current; });
+      const std::vector<double> p = damper_params({{"yield_per_field2", 150.0},
+                                                   {"consistency_per_field", 800.0},
+                                                   {"field_saturation", k * k}});
+      const std::vector<double> y = simulate_pheno(rec, damper_setup(rec), p);
+      const double b = k > 0.0 ? std::tanh(k * current) / k : current;
+      const double expected = 200.0 + 300.0 * b + 150.0 * b * b + (2000.0 + 800.0 * b) * v;
+      EXPECT_NEAR(y.back(), expected, 3e-3 * expected) << "k = " << k << ", I = " << current;
+    }
+  }
+}
+
+// The effective field's series branch (k^2 I^2 < 1e-8) joins tanh(k I) / k to round-off, and its
+// derivative in the parameter k^2 (a Jet) is the closed form
+// (I sech^2(k I) / k - tanh(k I) / k^2) / (2 k), -I^3 / 3 at k = 0 (so a fit started at no
+// saturation sees a slope). Tolerances: 1e-15 relative for the join, 1e-9 for the derivative
+// (series truncation at (k I)^4 ~ 1e-16; cancellation in the closed form ~1e-13 at k = 0.01).
+TEST(DamperModel, EffectiveFieldSeriesAndDerivative) {
+  using Jet = ceres::Jet<double, 1>;
+  const double current = 0.8;
+  std::vector<double> p(pheno_params(PhenoKind::damper).size(), 0.0);
+  for (double x2 : {0.99999e-8, 1.00001e-8}) {
+    const double k = std::sqrt(x2) / current;
+    p[pheno_detail::kDmSaturation] = k * k;
+    EXPECT_NEAR(pheno_detail::damper_effective_field(p.data(), current), std::tanh(k * current) / k,
+                1e-15 * current);
+  }
+  for (double k : {0.0, 1e-5, 0.3, 2.0}) {
+    std::vector<Jet> pj(p.size(), Jet(0.0));
+    pj[pheno_detail::kDmSaturation] = Jet(k * k, 0);
+    const Jet b = pheno_detail::damper_effective_field(pj.data(), Jet(current));
+    const double x = k * current;
+    const double expected =
+        k > 1e-3 ? (current / (std::cosh(x) * std::cosh(x)) / k - std::tanh(x) / (k * k)) / (2 * k)
+                 : -current * current * current / 3.0;
+    EXPECT_NEAR(b.v[0], expected, 1e-9 * std::abs(expected)) << "k = " << k;
   }
 }
 
