@@ -234,6 +234,15 @@ double rms(const std::vector<double>& v, SampleRange r) {
   return std::sqrt(s / static_cast<double>(r.size()));
 }
 
+/// Number of distinct values the field input takes in `d` on `r`, counted up to `cap`.
+std::size_t field_levels(const DriveSeries& d, SampleRange r, std::size_t cap) {
+  std::vector<double> levels;
+  for (std::size_t i = r.begin; i < r.end && levels.size() < cap; ++i)
+    if (std::find(levels.begin(), levels.end(), d.field[i]) == levels.end())
+      levels.push_back(d.field[i]);
+  return levels.size();
+}
+
 ParamGuess initial_guess(PhenoKind kind, const DriveSeries& d, SampleRange r, double orientation,
                          bool has_field, bool periodic) {
   double ymin = 1e300, ymax = -1e300, ymean = 0.0, mmax = 0.0, umax = 0.0;
@@ -352,6 +361,12 @@ ParamGuess initial_guess(PhenoKind kind, const DriveSeries& d, SampleRange r, do
       add(0.01, 0.01, 1e-4, 1.0, true);                                    // field_time_constant
       add(ymean, F, ymean - 10 * F, ymean + 10 * F, false);                // offset
       add(0.0, 1.0 / (U * U), 0.0, 100.0 / (U * U), true);                 // field_saturation
+      // The saturation is identifiable only with more field levels than the quadratic F_y(b) has
+      // coefficients (3): with fewer, F_y passes through every level for any saturation.
+      if (has_field && field_levels(d, r, 4) < 4) {
+        g.nominal.back() = 0.0;
+        g.fixed.back() = true;
+      }
       if (!has_field) g.nominal[pheno_param_index(kind, "field_time_constant")] = 0.01;  // held
       break;
   }
@@ -687,7 +702,7 @@ void fit_data(const FitData& data, const GreyboxOptions& options, const std::str
       run_fit_free<14, 13, 12, 9, 8>(data, fit.setup, guess, options, fit);
       break;
     case PhenoKind::damper:
-      run_fit_free<17, 17, 16, 12, 11>(data, fit.setup, guess, options, fit);
+      run_fit_free<17, 17, 16, 15, 12, 11>(data, fit.setup, guess, options, fit);
       break;
   }
 }

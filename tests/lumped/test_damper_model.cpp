@@ -281,13 +281,18 @@ const FittedParameter& damper_value(const FamilyFit& r, const char* name) {
 // A family simulated with known parameters at 0, 0.5 and 1 A and two strokes/frequencies (not
 // smoothed) is fitted jointly; the fit predicts a held-back 4 mm / 3 Hz test at 0.25 A at
 // FIT >= 98 %, recovers the yield force and its field slope within 5 % and finds no smoothing
-// (output_smoothing below 0.005, i.e. a window under 0.5 % of the period).
+// (output_smoothing below 0.005, i.e. a window under 0.5 % of the period); with three currents
+// field_saturation is held at 0.
 TEST(DamperModel, FamilyFitPredictsASmallerStrokeAtAHigherFrequency) {
   const FamilyFit r = fit_simulated_family(family_truth({}), 2.5, 400);
   EXPECT_NEAR(damper_value(r, "yield").value + damper_value(r, "yield_per_field").value, 960.0,
               0.05 * 960.0);
   EXPECT_TRUE(damper_value(r, "yield_per_field").standard_error.has_value());
   EXPECT_LT(damper_value(r, "output_smoothing").value, 0.005);
+  // Three currents: the quadratic yield force passes through each level, so the field's
+  // saturation is not identifiable and is held at 0.
+  EXPECT_TRUE(damper_value(r, "field_saturation").fixed);
+  EXPECT_EQ(damper_value(r, "field_saturation").value, 0.0);
 }
 
 // Recordings whose force was smoothed by a centred moving average over a tenth of the period
