@@ -12,7 +12,6 @@
 
 #include "lumped/current_dependent_fit.hpp"
 #include "lumped/greybox.hpp"
-#include "lumped/metrics.hpp"
 #include "lumped/output_smoothing.hpp"
 #include "lumped/phenomenological.hpp"
 
@@ -106,83 +105,4 @@ TEST(OutputSmoothing, DrivePeriodOfSinesAndNonPeriodicDrives) {
   const std::vector<double> short_t(t.begin(), t.begin() + 1500),
       short_v(v.begin(), v.begin() + 1500);
   EXPECT_EQ(drive_period(short_t, short_v), 0.0);
-}
-
-namespace {
-
-/// A damper recording driven by x = a sin(2 pi f t) (at `current` A, `n` samples at `dt`) or, when
-/// `chirp`, by a sweep from f to 3 f (no period); force column zero.
-Recording sine_recording(double a, double f, double current, std::size_t n, double dt,
-                         bool chirp = false) {
-  Recording rec;
-  std::vector<double> x, v, i;
-  const double duration = dt * static_cast<double>(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const double t = dt * static_cast<double>(k);
-    const double rate = chirp ? f * (1.0 + t / duration) : f;  // phase' / (2 pi): f to 3 f
-    const double phase = 2 * kPi * (chirp ? f * (t + 0.5 * t * t / duration) : f * t);
-    rec.t.push_back(t);
-    x.push_back(a * std::sin(phase));
-    v.push_back(a * 2 * kPi * rate * std::cos(phase));
-    i.push_back(current);
-  }
-  rec.columns["displacement"] = x;
-  rec.columns["velocity"] = v;
-  rec.columns["current"] = i;
-  rec.columns["force"] = std::vector<double>(n, 0.0);
-  rec.meta.drive = {"displacement", "velocity", "current"};
-  rec.meta.output = "force";
-  rec.csv_path = "synthetic.csv";
-  return rec;
-}
-
-}  // namespace
-
-// Every grey-box model carries output_smoothing (equal terms in a family comparison): a family of
-// two recordings (20 mm / 0.5 Hz at 0 A and 10 mm / 1 Hz at 1 A) simulated by the model and
-// smoothed over a tenth of each period, as the UTFSM tests were processed, is fitted jointly: the
-// window is recovered within 5 % (0.1) and both recordings fit at FIT >= 98 %. A sweep (no drive
-// period) holds the window at 0.
-TEST(OutputSmoothing, EveryGreyBoxModelRecoversTheWindow) {
-  struct Case {
-    PhenoKind kind;
-    std::vector<double> truth;  // without output_smoothing
-  };
-  const std::vector<Case> cases = {
-      {PhenoKind::bingham, {200.0, 800.0, 1500.0, 500.0, 0.005, 0.0}},
-      {PhenoKind::lugre, {150.0, 700.0, 0.5, 300.0, 120.0, 60.0, 0.7, 0.0}},
-      {PhenoKind::maxwell, {0.016, 1200.0, 150.0, 600.0, 150.0, 0.0}}};
-  for (const Case& c : cases) {
-    std::vector<Recording> family = {sine_recording(0.02, 0.5, 0.0, 3000, 2e-3),
-                                     sine_recording(0.01, 1.0, 1.0, 1500, 2e-3)};
-    for (std::size_t r = 0; r < family.size(); ++r) {
-      Recording& rec = family[r];
-      GreyboxSetup setup = greybox_setup_for(rec, c.kind);
-      setup.settings.eps = 1e-4;
-      setup.settings.motion_scale = 0.06;
-      rec.columns["force"] = simulate_pheno(rec, setup, c.truth);
-      const double period = r == 0 ? 2.0 : 1.0;
-      centred_boxcar(rec.t.data(), rec.t.size(), 0.1 * period, rec.columns["force"].data());
-    }
-    GreyboxOptions options;
-    options.starts = 2;
-    const GreyboxFit fit = fit_greybox_family(family, pheno_name(c.kind), options, 1);
-    const FittedParameter& window = fit.params[pheno_smoothing_index(c.kind)];
-    EXPECT_EQ(window.name, "output_smoothing");
-    EXPECT_NEAR(window.value, 0.1, 0.005) << pheno_name(c.kind);
-    for (const Recording& rec : family) {
-      const Metrics m = compute_metrics(rec.column("force"), simulate_greybox(rec, fit),
-                                        SampleRange{0, rec.t.size()});
-      EXPECT_GE(m.fit_percent, 98.0) << pheno_name(c.kind);
-    }
-  }
-  Recording sweep = sine_recording(0.01, 0.5, 1.0, 4000, 2e-3, true);
-  GreyboxSetup setup = greybox_setup_for(sweep, PhenoKind::bingham);
-  setup.settings.eps = 1e-4;
-  setup.settings.motion_scale = 0.06;
-  sweep.columns["force"] = simulate_pheno(sweep, setup, cases.front().truth);
-  const GreyboxFit fit = fit_greybox(sweep, "bingham");
-  const FittedParameter& window = fit.params[pheno_smoothing_index(PhenoKind::bingham)];
-  EXPECT_TRUE(window.fixed);
-  EXPECT_EQ(window.value, 0.0);
 }
