@@ -13,6 +13,7 @@
 
 #include "core/error.hpp"
 #include "lumped/current_dependent_fit.hpp"
+#include "lumped/family_report.hpp"
 #include "lumped/greybox.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/output_smoothing.hpp"
@@ -360,6 +361,38 @@ TEST(GreyboxSmoothing, EveryGreyBoxModelRecoversTheWindow) {
   const FittedParameter& window = fit.params[pheno_smoothing_index(PhenoKind::bingham)];
   EXPECT_TRUE(window.fixed);
   EXPECT_EQ(window.value, 0.0);
+}
+
+// The family report's field-dependence table evaluates the damper's field terms at the field the
+// valve sees: yield at 1 A with k = 1.2 / A is 200 + 300 b + 150 b^2, b = tanh(1.2) / 1.2
+// (480.8 N to the report's 4 digits), not the unsaturated 650 N.
+TEST(DamperModel, FamilyReportEvaluatesTheSaturatedField) {
+  FamilyFit r;
+  r.fit.model = "damper";
+  const std::vector<double> p =
+      damper_params({{"yield_per_field2", 150.0}, {"field_saturation", 1.2 * 1.2}});
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    FittedParameter fp;
+    fp.name = pheno_params(PhenoKind::damper)[k].name;
+    fp.value = p[k];
+    r.fit.params.push_back(fp);
+  }
+  std::vector<Recording> training;
+  for (double current : {0.5, 1.0}) {
+    training.push_back(recording(100, 1e-2, sine_x(0.01, 1.0), sine_v(0.01, 1.0),
+                                 [=](double) { return current; }));
+    r.fit.setup = damper_setup(training.back());
+    FamilyMember m;
+    m.csv_path = "synthetic.csv";
+    m.field = current;
+    m.simulated = std::vector<double>(100, 0.0);
+    r.training.push_back(m);
+  }
+  const std::string html = family_report_html(r, training, {});
+  const double b = std::tanh(1.2) / 1.2;
+  EXPECT_NEAR(200.0 + 300.0 * b + 150.0 * b * b, 480.8, 0.05);
+  EXPECT_NE(html.find("<td>480.8</td>"), std::string::npos);
+  EXPECT_EQ(html.find("<td>650</td>"), std::string::npos);
 }
 
 // Bi-viscous (Stanway et al. 1987): c_pre v below the yield velocity F_y / (c_pre - c_post),
