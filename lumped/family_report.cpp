@@ -10,6 +10,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/html_text.hpp"
+#include "lumped/phenomenological.hpp"
 
 namespace rheomag::lumped {
 
@@ -97,7 +98,8 @@ std::string member_section(const FamilyMember& m, const Recording& rec, const Gr
   return o.str();
 }
 
-/// Rows "name(field) = a + b u + c u^2" at each field level for parameters with per-field terms.
+/// Rows "name(field) = a + b u + c u^2" at each field level for parameters with per-field terms;
+/// for the damper model u is the field the valve sees, tanh(k I) / k (damper_effective_field).
 std::string field_dependence(const FamilyFit& r) {
   std::vector<double> levels;
   for (const FamilyMember& m : r.training)
@@ -106,7 +108,16 @@ std::string field_dependence(const FamilyFit& r) {
       levels.push_back(m.field);
   std::sort(levels.begin(), levels.end());
   std::map<std::string, double> value;
-  for (const FittedParameter& p : r.fit.params) value[p.name] = p.value;
+  std::vector<double> values;
+  for (const FittedParameter& p : r.fit.params) {
+    value[p.name] = p.value;
+    values.push_back(p.value);
+  }
+  const bool damper = r.fit.setup.kind == PhenoKind::damper &&
+                      values.size() == pheno_params(PhenoKind::damper).size();
+  const auto field = [&](double level) {
+    return damper ? pheno_detail::damper_effective_field(values.data(), level) : level;
+  };
   std::ostringstream o;
   o << "<table><tr><th>parameter</th>";
   for (double l : levels) o << "<th>u = " << html_number(l, 3) << "</th>";
@@ -118,11 +129,13 @@ std::string field_dependence(const FamilyFit& r) {
     const auto second = value.find(p.name + "_per_field2");
     any = true;
     o << "<tr><td>" << html_escape(p.name) << " [" << html_escape(p.unit) << "]</td>";
-    for (double l : levels)
+    for (double l : levels) {
+      const double u = field(l);
       o << "<td>"
-        << html_number(p.value + first->second * l +
-                       (second == value.end() ? 0.0 : second->second * l * l))
+        << html_number(p.value + first->second * u +
+                       (second == value.end() ? 0.0 : second->second * u * u))
         << "</td>";
+    }
     o << "</tr>\n";
   }
   o << "</table>\n";

@@ -163,15 +163,19 @@ GreyboxFit read_greybox(const Field& root, const std::string& model) {
   const Field list = root.at("parameters");
   fit.params = read_parameters(list);
   const std::vector<PhenoParam>& expected = pheno_params(fit.setup.kind);
-  // A damper model written before output_smoothing existed: its output was not smoothed.
-  if (fit.setup.kind == PhenoKind::damper && fit.params.size() + 1 == expected.size() &&
-      expected.back().name == "output_smoothing") {
-    FittedParameter none;
-    none.name = expected.back().name;
-    none.unit = expected.back().unit;
-    none.fixed = true;
-    fit.params.push_back(none);
-  }
+  // Parameters added to a model after files were written (PhenoParam::optional), whose value 0 is
+  // the model without them: a file written before them reads as the model it was fitted as.
+  for (std::size_t k = 0; k < expected.size(); ++k)
+    if (expected[k].optional &&
+        std::none_of(fit.params.begin(), fit.params.end(),
+                     [&](const FittedParameter& p) { return p.name == expected[k].name; })) {
+      FittedParameter none;
+      none.name = expected[k].name;
+      none.unit = expected[k].unit;
+      none.fixed = true;
+      fit.params.insert(
+          fit.params.begin() + static_cast<std::ptrdiff_t>(std::min(k, fit.params.size())), none);
+    }
   if (fit.params.size() != expected.size())
     list.fail("model " + model + " has " + std::to_string(expected.size()) + " parameters, got " +
               std::to_string(fit.params.size()));

@@ -103,12 +103,13 @@ double stiffest_rate(PhenoKind kind, const T* p, const PhenoDrive& d, const Phen
   return rate;
 }
 
-/// The damper model's output seen through the recording's smoothing: a centred moving average over
-/// output_smoothing times the drive's period (nothing without a periodic drive).
+/// A model's output seen through the recording's smoothing: a centred moving average over
+/// output_smoothing (the model's last parameter) times the drive's period (nothing without a
+/// periodic drive).
 template <class T>
-void smooth_damper_output(const T* p, const DriveSeries& d, SampleRange range, T* out) {
+void smooth_output(PhenoKind kind, const T* p, const DriveSeries& d, SampleRange range, T* out) {
   if (d.period > 0.0)
-    centred_boxcar(&d.t[range.begin], range.size(), T(p[pheno_detail::kDmSmoothing] * d.period),
+    centred_boxcar(&d.t[range.begin], range.size(), T(p[pheno_smoothing_index(kind)] * d.period),
                    out);
 }
 
@@ -214,8 +215,7 @@ struct FitResidual {
     if (!simulate_rk4(kind, p.data(), *d, settings, range.begin, range.end, max_substep,
                       yhat.data()))
       return false;
-    if constexpr (N > pheno_detail::kDmSmoothing)  // only the damper model has the parameter
-      if (kind == PhenoKind::damper) smooth_damper_output(p.data(), *d, range, yhat.data());
+    smooth_output(kind, p.data(), *d, range, yhat.data());
     for (std::size_t i = 0; i < range.size(); ++i)
       residual[i] = (yhat[i] - orientation * d->y[range.begin + i]) / y_scale;
     return true;
@@ -232,6 +232,15 @@ double rms(const std::vector<double>& v, SampleRange r) {
   double s = 0.0;
   for (std::size_t i = r.begin; i < r.end; ++i) s += v[i] * v[i];
   return std::sqrt(s / static_cast<double>(r.size()));
+}
+
+/// Number of distinct values the field input takes in `d` on `r`, counted up to `cap`.
+std::size_t field_levels(const DriveSeries& d, SampleRange r, std::size_t cap) {
+  std::vector<double> levels;
+  for (std::size_t i = r.begin; i < r.end && levels.size() < cap; ++i)
+    if (std::find(levels.begin(), levels.end(), d.field[i]) == levels.end())
+      levels.push_back(d.field[i]);
+  return levels.size();
 }
 
 ParamGuess initial_guess(PhenoKind kind, const DriveSeries& d, SampleRange r, double orientation,
@@ -351,13 +360,22 @@ ParamGuess initial_guess(PhenoKind kind, const DriveSeries& d, SampleRange r, do
       add(0.0, F / X, -10 * F / X, 10 * F / X, false);                     // gas_stiffness
       add(0.01, 0.01, 1e-4, 1.0, true);                                    // field_time_constant
       add(ymean, F, ymean - 10 * F, ymean + 10 * F, false);                // offset
-      add(0.05, 0.1, 0.0, 0.25, false);                                    // output_smoothing
-      if (!periodic) {  // no drive period to measure the window against: no smoothing
+      add(0.0, 1.0 / (U * U), 0.0, 100.0 / (U * U), true);                 // field_saturation
+      // The saturation is identifiable only with more field levels than the quadratic F_y(b) has
+      // coefficients (3): with fewer, F_y passes through every level for any saturation.
+      if (has_field && field_levels(d, r, 4) < 4) {
         g.nominal.back() = 0.0;
         g.fixed.back() = true;
       }
       if (!has_field) g.nominal[pheno_param_index(kind, "field_time_constant")] = 0.01;  // held
       break;
+  }
+  // output_smoothing, the last parameter of every model: held at 0 without a drive period to
+  // measure the window against.
+  add(0.05, 0.1, 0.0, 0.25, false);
+  if (!periodic) {
+    g.nominal.back() = 0.0;
+    g.fixed.back() = true;
   }
   return g;
 }
@@ -440,25 +458,26 @@ std::vector<double> simulate_stiff(const DriveSeries& d, const GreyboxSetup& set
 /// extremely stiff), the fixed-step RK4 of the fit (stability-limited substeps) is used instead.
 std::vector<double> simulate_for_report(const DriveSeries& d, const GreyboxSetup& setup,
                                         const std::vector<double>& params, double max_substep) {
-  if (setup.kind == PhenoKind::damper) {  // its own stiff-stable integrator, at 0.5 ms steps
+  const auto fixed_step = [&](double step) {
     std::vector<double> y(d.t.size());
-    if (!simulate_rk4(setup.kind, params.data(), d, setup.settings, 0, d.t.size(), 5e-4, y.data()))
-      throw ConvergenceError("model damper: the simulation diverges with these parameters");
-    smooth_damper_output(params.data(), d, SampleRange{0, d.t.size()}, y.data());
-    for (double& v : y) v *= setup.orientation;
-    return y;
-  }
-  try {
-    return simulate_stiff(d, setup, params);
-  } catch (const ConvergenceError&) {
-    std::vector<double> y(d.t.size());
-    if (!simulate_rk4(setup.kind, params.data(), d, setup.settings, 0, d.t.size(), max_substep,
-                      y.data()))
+    if (!simulate_rk4(setup.kind, params.data(), d, setup.settings, 0, d.t.size(), step, y.data()))
       throw ConvergenceError("model " + pheno_name(setup.kind) +
                              ": the simulation diverges with these parameters");
     for (double& v : y) v *= setup.orientation;
     return y;
+  };
+  std::vector<double> y;
+  if (setup.kind == PhenoKind::damper) {  // its own stiff-stable integrator, at 0.5 ms steps
+    y = fixed_step(5e-4);
+  } else {
+    try {
+      y = simulate_stiff(d, setup, params);
+    } catch (const ConvergenceError&) {
+      y = fixed_step(max_substep);
+    }
   }
+  smooth_output(setup.kind, params.data(), d, SampleRange{0, d.t.size()}, y.data());
+  return y;
 }
 
 /// Longest integration step inside a fit: the damper and Bouc-Wen models' exponential steps are
@@ -666,23 +685,24 @@ void fit_data(const FitData& data, const GreyboxOptions& options, const std::str
   const ParamGuess guess = initial_guess(kind, all, range, fit.setup.orientation,
                                          !fit.setup.field_column.empty(), periodic);
   switch (kind) {  // free counts with and without a field input
+    // with and without output_smoothing (held without a periodic drive)
     case PhenoKind::bingham:
     case PhenoKind::biviscous:
-      run_fit_free<6, 6, 4>(data, fit.setup, guess, options, fit);
+      run_fit_free<7, 7, 6, 5, 4>(data, fit.setup, guess, options, fit);
       break;
     case PhenoKind::maxwell:
     case PhenoKind::dahl:
-      run_fit_free<6, 6, 5>(data, fit.setup, guess, options, fit);
+      run_fit_free<7, 7, 6, 5>(data, fit.setup, guess, options, fit);
       break;
     case PhenoKind::lugre:
     case PhenoKind::tanh:
-      run_fit_free<8, 8, 6>(data, fit.setup, guess, options, fit);
+      run_fit_free<9, 9, 8, 7, 6>(data, fit.setup, guess, options, fit);
       break;
     case PhenoKind::bouc_wen:
-      run_fit_free<13, 12, 8>(data, fit.setup, guess, options, fit);
+      run_fit_free<14, 13, 12, 9, 8>(data, fit.setup, guess, options, fit);
       break;
     case PhenoKind::damper:
-      run_fit_free<16, 16, 15, 12, 11>(data, fit.setup, guess, options, fit);
+      run_fit_free<17, 17, 16, 15, 12, 11>(data, fit.setup, guess, options, fit);
       break;
   }
 }
@@ -809,11 +829,13 @@ GreyboxFit fit_greybox_family(const std::vector<Recording>& recs, const std::str
 
 std::vector<double> simulate_pheno(const Recording& rec, const GreyboxSetup& setup,
                                    const std::vector<double>& params) {
-  if (params.size() != pheno_params(setup.kind).size())
-    throw InputError("model " + pheno_name(setup.kind) + " takes " +
-                     std::to_string(pheno_params(setup.kind).size()) + " parameters, got " +
-                     std::to_string(params.size()));
-  return simulate_for_report(drive_series(rec, setup), setup, params, GreyboxOptions{}.max_substep);
+  const std::vector<PhenoParam>& specs = pheno_params(setup.kind);
+  std::vector<double> full = params;  // trailing optional parameters left out are 0
+  while (full.size() < specs.size() && specs[full.size()].optional) full.push_back(0.0);
+  if (full.size() != specs.size())
+    throw InputError("model " + pheno_name(setup.kind) + " takes " + std::to_string(specs.size()) +
+                     " parameters, got " + std::to_string(params.size()));
+  return simulate_for_report(drive_series(rec, setup), setup, full, GreyboxOptions{}.max_substep);
 }
 
 std::vector<double> simulate_greybox(const Recording& rec, const GreyboxFit& fit) {

@@ -85,7 +85,8 @@ GreyboxFit fit_greybox_family(const std::vector<Recording>& recs, const std::str
 /// Free-run output of a fitted model on another recording of the same device (stiff integrator).
 std::vector<double> simulate_greybox(const Recording& rec, const GreyboxFit& fit);
 
-/// Free-run output of `setup` with parameter vector `params` on `rec` (stiff integrator).
+/// Free-run output of `setup` with parameter vector `params` on `rec` (stiff integrator); trailing
+/// optional parameters left out (output_smoothing) are 0.
 std::vector<double> simulate_pheno(const Recording& rec, const GreyboxSetup& setup,
                                    const std::vector<double>& params);
 

@@ -49,15 +49,22 @@ std::string pheno_name(PhenoKind kind) {
 }
 
 const std::vector<PhenoParam>& pheno_params(PhenoKind kind) {
-  static const std::vector<PhenoParam> bingham = {
-      {"yield", "Y", false},      {"yield_per_field", "Y/U", true},
-      {"viscous", "Y/M", false},  {"viscous_per_field", "Y/(M U)", true},
-      {"transition", "M", false}, {"offset", "Y", false}};
-  static const std::vector<PhenoParam> lugre = {
-      {"stiffness", "Y", false}, {"stiffness_per_field", "Y/U", true},
-      {"damping", "Y s", false}, {"rate", "1/X", false},
-      {"viscous", "Y", false},   {"viscous_per_field", "Y/U", true},
-      {"exponent", "1", false},  {"offset", "Y", false}};
+  static const std::vector<PhenoParam> bingham = {{"yield", "Y", false},
+                                                  {"yield_per_field", "Y/U", true},
+                                                  {"viscous", "Y/M", false},
+                                                  {"viscous_per_field", "Y/(M U)", true},
+                                                  {"transition", "M", false},
+                                                  {"offset", "Y", false},
+                                                  {"output_smoothing", "1", false, true}};
+  static const std::vector<PhenoParam> lugre = {{"stiffness", "Y", false},
+                                                {"stiffness_per_field", "Y/U", true},
+                                                {"damping", "Y s", false},
+                                                {"rate", "1/X", false},
+                                                {"viscous", "Y", false},
+                                                {"viscous_per_field", "Y/U", true},
+                                                {"exponent", "1", false},
+                                                {"offset", "Y", false},
+                                                {"output_smoothing", "1", false, true}};
   static const std::vector<PhenoParam> bouc_wen = {
       {"alpha_a", "Y/X", false}, {"alpha_b", "Y/(X U)", true},
       {"c0_a", "Y/M", false},    {"c0_b", "Y/(M U)", true},
@@ -65,18 +72,28 @@ const std::vector<PhenoParam>& pheno_params(PhenoKind kind) {
       {"k0", "Y/X", false},      {"k1", "Y/X", false},
       {"gamma", "1/X^2", false}, {"beta", "1/X^2", false},
       {"A", "1", false},         {"eta", "1/s", true},
-      {"offset", "Y", false}};
-  static const std::vector<PhenoParam> maxwell = {
-      {"time_constant", "s", false}, {"viscous", "Y/M", false},
-      {"field_force", "Y", false},   {"field_force_per_field", "Y/U", true},
-      {"shape", "1/M", false},       {"offset", "Y", false}};
-  static const std::vector<PhenoParam> dahl = {
-      {"viscous", "Y/M", false}, {"dahl_force", "Y", false},  {"dahl_force_per_field", "Y/U", true},
-      {"sigma", "1/X", false},   {"stiffness", "Y/X", false}, {"offset", "Y", false}};
-  static const std::vector<PhenoParam> biviscous = {
-      {"yield", "Y", false},        {"yield_per_field", "Y/U", true},
-      {"post_yield", "Y/M", false}, {"post_yield_per_field", "Y/(M U)", true},
-      {"pre_yield", "Y/M", false},  {"offset", "Y", false}};
+      {"offset", "Y", false},    {"output_smoothing", "1", false, true}};
+  static const std::vector<PhenoParam> maxwell = {{"time_constant", "s", false},
+                                                  {"viscous", "Y/M", false},
+                                                  {"field_force", "Y", false},
+                                                  {"field_force_per_field", "Y/U", true},
+                                                  {"shape", "1/M", false},
+                                                  {"offset", "Y", false},
+                                                  {"output_smoothing", "1", false, true}};
+  static const std::vector<PhenoParam> dahl = {{"viscous", "Y/M", false},
+                                               {"dahl_force", "Y", false},
+                                               {"dahl_force_per_field", "Y/U", true},
+                                               {"sigma", "1/X", false},
+                                               {"stiffness", "Y/X", false},
+                                               {"offset", "Y", false},
+                                               {"output_smoothing", "1", false, true}};
+  static const std::vector<PhenoParam> biviscous = {{"yield", "Y", false},
+                                                    {"yield_per_field", "Y/U", true},
+                                                    {"post_yield", "Y/M", false},
+                                                    {"post_yield_per_field", "Y/(M U)", true},
+                                                    {"pre_yield", "Y/M", false},
+                                                    {"offset", "Y", false},
+                                                    {"output_smoothing", "1", false, true}};
   static const std::vector<PhenoParam> tanh_model = {{"viscous", "Y/M", false},
                                                      {"viscous_per_field", "Y/(M U)", true},
                                                      {"stiffness", "Y/X", false},
@@ -84,7 +101,8 @@ const std::vector<PhenoParam>& pheno_params(PhenoKind kind) {
                                                      {"hysteretic_per_field", "Y/U", true},
                                                      {"shape", "1/M", false},
                                                      {"lag", "1", false},
-                                                     {"offset", "Y", false}};
+                                                     {"offset", "Y", false},
+                                                     {"output_smoothing", "1", false, true}};
   static const std::vector<PhenoParam> damper = {{"yield", "Y", false},
                                                  {"yield_per_field", "Y/U", true},
                                                  {"yield_per_field2", "Y/U^2", true},
@@ -100,7 +118,8 @@ const std::vector<PhenoParam>& pheno_params(PhenoKind kind) {
                                                  {"gas_stiffness", "Y/X", false},
                                                  {"field_time_constant", "s", true},
                                                  {"offset", "Y", false},
-                                                 {"output_smoothing", "1", false}};
+                                                 {"field_saturation", "1/U^2", true, true},
+                                                 {"output_smoothing", "1", false, true}};
   switch (kind) {
     case PhenoKind::biviscous:
       return biviscous;
@@ -120,6 +139,10 @@ const std::vector<PhenoParam>& pheno_params(PhenoKind kind) {
       return dahl;
   }
   return bingham;
+}
+
+std::size_t pheno_smoothing_index(PhenoKind kind) {
+  return pheno_params(kind).size() - 1;
 }
 
 std::size_t pheno_state_count(PhenoKind kind) {

@@ -28,6 +28,9 @@ struct PhenoParam {
   std::string name;
   std::string unit;
   bool field_term;  ///< multiplies the field input (held at 0 when there is none)
+  /// Added after models were first written: absent from a model file or spec means 0, which is the
+  /// model without it (output_smoothing: no smoothing; field_saturation: no saturation).
+  bool optional = false;
 };
 
 /// The drive of a phenomenological model at one instant (data, never differentiated).
@@ -58,6 +61,10 @@ const std::vector<PhenoParam>& pheno_params(PhenoKind kind);
 
 /// Number of internal states of a model.
 std::size_t pheno_state_count(PhenoKind kind);
+
+/// Index of output_smoothing, the last parameter of every model: the recording's moving average
+/// over that fraction of the drive period (lumped/output_smoothing.hpp).
+std::size_t pheno_smoothing_index(PhenoKind kind);
 
 /// Index of parameter `name` of `kind`, or -1.
 int pheno_param_index(PhenoKind kind, const std::string& name);
@@ -118,27 +125,50 @@ enum Damper {
   kDmGas,
   kDmTau,
   kDmOffset,
+  kDmSaturation,
   kDmSmoothing
 };
 
-/// Damper model: rate of the valve force x[0] through the fluid/accumulator compliance. The valve
-/// passes the motion g(F) of a Herschel-Bulkley map with a pre-yield creep branch (inverse of
-/// F = sign(m) (F_y(u) + c(u) m_ref (|m| / m_ref)^n), plus F / pre_visc); the compliance's
+/// Damper model: the field the valve sees, in current units, b = tanh(k u) / k with
+/// k^2 = p[kDmSaturation] (1 / k is the current at which the gap flux saturates, as the circuit's
+/// steel does); b = u for k = 0 (the model before field_saturation existed). Parametrised by k^2,
+/// not k: b is even in k, so its slope in k vanishes at 0 while its slope in k^2 is -u^3 / 3, and a
+/// fit started at no saturation can move away from it.
+template <class T>
+T damper_effective_field(const T* p, const T& u) {
+  using std::sqrt;
+  using std::tanh;
+  const T& k2 = p[kDmSaturation];
+  const T x2 = k2 * u * u;
+  if (std::abs(value_of(x2)) < 1e-8) return u * (1.0 - x2 / 3.0);  // series, exact to 1e-17
+  const T k = sqrt(k2);
+  return tanh(k * u) / k;
+}
+
+/// Damper model: rate of the valve force f through the fluid/accumulator compliance at the field
+/// b the valve sees (damper_effective_field). The valve passes the motion g(F) of a
+/// Herschel-Bulkley map with a pre-yield creep branch (inverse of
+/// F = sign(m) (F_y(b) + c(b) m_ref (|m| / m_ref)^n), plus F / pre_visc); the compliance's
 /// stiffness grows with the force (gas and entrained air stiffen with pressure).
 template <class T>
-T damper_force_rate(const T* p, const PhenoDrive& d, const PhenoSettings& s, const T* x) {
+T damper_force_rate_at(const T* p, const PhenoDrive& d, const PhenoSettings& s, const T& f,
+                       const T& b) {
   using std::pow;
-  const T& u = x[2];
-  const T& f = x[0];
   const double w = 1e-3 * s.output_scale;
-  const T yield = p[kDmYield0] + p[kDmYield1] * u + p[kDmYield2] * u * u;
-  const T consistency = p[kDmVisc0] + p[kDmVisc1] * u;
+  const T yield = p[kDmYield0] + p[kDmYield1] * b + p[kDmYield2] * b * b;
+  const T consistency = p[kDmVisc0] + p[kDmVisc1] * b;
   const T abs_f = smooth_abs(f, w);
   const T excess = smooth_ramp(abs_f - yield, w);
   const T post =
       s.motion_scale * pow(excess / (consistency * s.motion_scale) + 1e-12, 1.0 / p[kDmIndex]);
   const T valve_motion = f / p[kDmPreVisc] + f / (abs_f + w) * post;
   return (p[kDmStiff] + p[kDmStiffening] * abs_f) * (d.motion - valve_motion);
+}
+
+/// Damper model: rate of the valve force x[0] for state x (field state x[2]).
+template <class T>
+T damper_force_rate(const T* p, const PhenoDrive& d, const PhenoSettings& s, const T* x) {
+  return damper_force_rate_at(p, d, s, x[0], damper_effective_field(p, x[2]));
 }
 
 /// Bouc-Wen: rate of the internal displacement y for state x = (y, z, u_filtered).
@@ -205,19 +235,20 @@ void damper_step(const T* p, const PhenoDrive& a, const PhenoDrive& m, const Phe
   const T rate_z = abs_m / p[kDmSealSlip];
   x[1] = x[1] + h * phi1(T(h) * rate_z) * (m.motion / p[kDmSealSlip] - rate_z * x[1]);
   // Valve force: predictor half step from the start, then the step linearised at the midpoint.
-  const auto rate = [&](const PhenoDrive& d, const T& f, const T& u) {
-    const T state[3] = {f, T(0.0), u};
-    return damper_force_rate(p, d, s, state);
+  // The field the valve sees is computed once for each of the two field states.
+  const auto rate = [&](const PhenoDrive& d, const T& f, const T& b) {
+    return damper_force_rate_at(p, d, s, f, b);
   };
-  const auto slope = [&](const PhenoDrive& d, const T& f, const T& u) {
-    const T lambda = (rate(d, f - delta, u) - rate(d, f + delta, u)) / (2.0 * delta);
+  const auto slope = [&](const PhenoDrive& d, const T& f, const T& b) {
+    const T lambda = (rate(d, f - delta, b) - rate(d, f + delta, b)) / (2.0 * delta);
     return value_of(lambda) > 0.0 ? lambda : T(0.0);
   };
+  const T b0 = damper_effective_field(p, u0), b_half = damper_effective_field(p, u_half);
   const T f0 = x[0];
-  const T lambda0 = slope(a, f0, u0);
-  const T f_half = f0 + 0.5 * h * phi1(T(0.5 * h) * lambda0) * rate(a, f0, u0);
-  const T lambda_m = slope(m, f_half, u_half);
-  x[0] = f0 + h * phi1(T(h) * lambda_m) * (rate(m, f_half, u_half) + lambda_m * (f_half - f0));
+  const T lambda0 = slope(a, f0, b0);
+  const T f_half = f0 + 0.5 * h * phi1(T(0.5 * h) * lambda0) * rate(a, f0, b0);
+  const T lambda_m = slope(m, f_half, b_half);
+  x[0] = f0 + h * phi1(T(h) * lambda_m) * (rate(m, f_half, b_half) + lambda_m * (f_half - f0));
 }
 
 /// The field filter of Bouc-Wen steps of length h, u' = -eta (u - v) solved exactly: its half

@@ -304,7 +304,8 @@ PhenoSpec read_pheno(const TableReader& model, PhenoKind kind) {
   std::set<std::string> names;
   for (const auto& spec : pheno_params(kind)) {
     names.insert(spec.name);
-    if (!params.has(spec.name)) params.fail(spec.name, "is required (" + spec.unit + ")");
+    if (!params.has(spec.name) && !spec.optional)  // an optional one is 0 (absent) by default
+      params.fail(spec.name, "is required (" + spec.unit + ")");
     p.params.push_back(params.number(spec.name, 0.0));
   }
   params.only(names);

@@ -5,13 +5,18 @@
 
 #include <gtest/gtest.h>
 
+#include <ceres/jet.h>
+
 #include <cmath>
 #include <functional>
 #include <vector>
 
 #include "core/error.hpp"
 #include "lumped/current_dependent_fit.hpp"
+#include "lumped/family_report.hpp"
 #include "lumped/greybox.hpp"
+#include "lumped/metrics.hpp"
+#include "lumped/output_smoothing.hpp"
 #include "lumped/phenomenological.hpp"
 
 using namespace rheomag::lumped;
@@ -22,8 +27,8 @@ constexpr double kPi = 3.14159265358979323846;
 
 /// Damper parameters in the order of pheno_params(damper); `set` overrides by name.
 std::vector<double> damper_params(const std::vector<std::pair<std::string, double>>& set) {
-  std::vector<double> p = {200.0, 300.0, 0.0,  2000.0, 0.0, 1.0,  1e12, 1e6,
-                           0.0,   0.0,   1e-3, 0.0,    0.0, 0.01, 0.0,  0.0};
+  std::vector<double> p = {200.0, 300.0, 0.0, 2000.0, 0.0,  1.0, 1e12, 1e6, 0.0,
+                           0.0,   1e-3,  0.0, 0.0,    0.01, 0.0, 0.0,  0.0};
   for (const auto& [name, value] : set) {
     const int k = pheno_param_index(PhenoKind::damper, name);
     EXPECT_GE(k, 0) << name;
@@ -85,6 +90,55 @@ TEST(DamperModel, SteadyFlowFollowsHerschelBulkleyMap) {
     const std::vector<double> y = simulate_pheno(rec, damper_setup(rec), p);
     const double expected = 200.0 + 300.0 * 1.0 + 2000.0 * 0.05 * std::sqrt(v / 0.05);
     EXPECT_NEAR(y.back(), expected, 3e-3 * expected) << "v = " << v;
+  }
+}
+
+// Saturating magnetic circuit: the valve sees the field b = tanh(k I) / k (b = I for k = 0; the
+// parameter is k^2), so at steady flow F = F_y0 + F_y1 b + F_y2 b^2 + c m_ref (v / m_ref)^n with
+// the closed-form b. Tolerance 0.3 % as in the Herschel-Bulkley test above (1 N width of the smooth
+// |F|).
+TEST(DamperModel, SaturatingFieldFollowsTanhOfTheCurrent) {
+  const double v = 0.05;
+  for (double k : {0.0, 1.2}) {
+    for (double current : {0.4, 1.0}) {
+      Recording rec = recording(
+          2000, 1e-3, [&](double t) { return v * t; }, [&](double) { return v; },
+          [&](double) { return current; });
+      const std::vector<double> p = damper_params({{"yield_per_field2", 150.0},
+                                                   {"consistency_per_field", 800.0},
+                                                   {"field_saturation", k * k}});
+      const std::vector<double> y = simulate_pheno(rec, damper_setup(rec), p);
+      const double b = k > 0.0 ? std::tanh(k * current) / k : current;
+      const double expected = 200.0 + 300.0 * b + 150.0 * b * b + (2000.0 + 800.0 * b) * v;
+      EXPECT_NEAR(y.back(), expected, 3e-3 * expected) << "k = " << k << ", I = " << current;
+    }
+  }
+}
+
+// The effective field's series branch (k^2 I^2 < 1e-8) joins tanh(k I) / k to round-off, and its
+// derivative in the parameter k^2 (a Jet) is the closed form
+// (I sech^2(k I) / k - tanh(k I) / k^2) / (2 k), -I^3 / 3 at k = 0 (so a fit started at no
+// saturation sees a slope). Tolerances: 1e-15 relative for the join, 1e-9 for the derivative
+// (series truncation at (k I)^4 ~ 1e-16; cancellation in the closed form ~1e-13 at k = 0.01).
+TEST(DamperModel, EffectiveFieldSeriesAndDerivative) {
+  using Jet = ceres::Jet<double, 1>;
+  const double current = 0.8;
+  std::vector<double> p(pheno_params(PhenoKind::damper).size(), 0.0);
+  for (double x2 : {0.99999e-8, 1.00001e-8}) {
+    const double k = std::sqrt(x2) / current;
+    p[pheno_detail::kDmSaturation] = k * k;
+    EXPECT_NEAR(pheno_detail::damper_effective_field(p.data(), current), std::tanh(k * current) / k,
+                1e-15 * current);
+  }
+  for (double k : {0.0, 1e-5, 0.3, 2.0}) {
+    std::vector<Jet> pj(p.size(), Jet(0.0));
+    pj[pheno_detail::kDmSaturation] = Jet(k * k, 0);
+    const Jet b = pheno_detail::damper_effective_field(pj.data(), Jet(current));
+    const double x = k * current;
+    const double expected =
+        k > 1e-3 ? (current / (std::cosh(x) * std::cosh(x)) / k - std::tanh(x) / (k * k)) / (2 * k)
+                 : -current * current * current / 3.0;
+    EXPECT_NEAR(b.v[0], expected, 1e-9 * std::abs(expected)) << "k = " << k;
   }
 }
 
@@ -230,13 +284,18 @@ const FittedParameter& damper_value(const FamilyFit& r, const char* name) {
 // A family simulated with known parameters at 0, 0.5 and 1 A and two strokes/frequencies (not
 // smoothed) is fitted jointly; the fit predicts a held-back 4 mm / 3 Hz test at 0.25 A at
 // FIT >= 98 %, recovers the yield force and its field slope within 5 % and finds no smoothing
-// (output_smoothing below 0.005, i.e. a window under 0.5 % of the period).
+// (output_smoothing below 0.005, i.e. a window under 0.5 % of the period); with three currents
+// field_saturation is held at 0.
 TEST(DamperModel, FamilyFitPredictsASmallerStrokeAtAHigherFrequency) {
   const FamilyFit r = fit_simulated_family(family_truth({}), 2.5, 400);
   EXPECT_NEAR(damper_value(r, "yield").value + damper_value(r, "yield_per_field").value, 960.0,
               0.05 * 960.0);
   EXPECT_TRUE(damper_value(r, "yield_per_field").standard_error.has_value());
   EXPECT_LT(damper_value(r, "output_smoothing").value, 0.005);
+  // Three currents: the quadratic yield force passes through each level, so the field's
+  // saturation is not identifiable and is held at 0.
+  EXPECT_TRUE(damper_value(r, "field_saturation").fixed);
+  EXPECT_EQ(damper_value(r, "field_saturation").value, 0.0);
 }
 
 // Recordings whose force was smoothed by a centred moving average over a tenth of the period
@@ -247,6 +306,93 @@ TEST(DamperModel, FamilyFitRecoversThePeriodRelativeSmoothing) {
   const FamilyFit r = fit_simulated_family(family_truth({{"output_smoothing", 0.1}}), 3.5, 200);
   EXPECT_NEAR(damper_value(r, "output_smoothing").value, 0.1, 0.005);
   EXPECT_TRUE(damper_value(r, "output_smoothing").standard_error.has_value());
+}
+
+// Every grey-box model carries output_smoothing (equal terms in a family comparison): a family of
+// two recordings (20 mm / 0.5 Hz at 0 A and 10 mm / 1 Hz at 1 A) simulated by the model and
+// smoothed over a tenth of each period, as the UTFSM tests were processed, is fitted jointly: the
+// window is recovered within 5 % (0.1) and both recordings fit at FIT >= 98 %. A sweep (no drive
+// period) holds the window at 0.
+TEST(GreyboxSmoothing, EveryGreyBoxModelRecoversTheWindow) {
+  struct Case {
+    PhenoKind kind;
+    std::vector<double> truth;  // without output_smoothing
+  };
+  const std::vector<Case> cases = {
+      {PhenoKind::bingham, {200.0, 800.0, 1500.0, 500.0, 0.005, 0.0}},
+      {PhenoKind::lugre, {150.0, 700.0, 0.5, 300.0, 120.0, 60.0, 0.7, 0.0}},
+      {PhenoKind::maxwell, {0.016, 1200.0, 150.0, 600.0, 150.0, 0.0}}};
+  for (const Case& c : cases) {
+    std::vector<Recording> family = {
+        recording(3000, 2e-3, sine_x(0.02, 0.5), sine_v(0.02, 0.5), [](double) { return 0.0; }),
+        recording(1500, 2e-3, sine_x(0.01, 1.0), sine_v(0.01, 1.0), [](double) { return 1.0; })};
+    for (std::size_t r = 0; r < family.size(); ++r) {
+      Recording& rec = family[r];
+      GreyboxSetup setup = greybox_setup_for(rec, c.kind);
+      setup.settings.eps = 1e-4;
+      setup.settings.motion_scale = 0.06;
+      rec.columns["force"] = simulate_pheno(rec, setup, c.truth);
+      const double period = r == 0 ? 2.0 : 1.0;
+      centred_boxcar(rec.t.data(), rec.t.size(), 0.1 * period, rec.columns["force"].data());
+    }
+    GreyboxOptions options;
+    options.starts = 2;
+    const GreyboxFit fit = fit_greybox_family(family, pheno_name(c.kind), options, 1);
+    const FittedParameter& window = fit.params[pheno_smoothing_index(c.kind)];
+    EXPECT_EQ(window.name, "output_smoothing");
+    EXPECT_NEAR(window.value, 0.1, 0.005) << pheno_name(c.kind);
+    for (const Recording& rec : family) {
+      const Metrics m = compute_metrics(rec.column("force"), simulate_greybox(rec, fit),
+                                        SampleRange{0, rec.t.size()});
+      EXPECT_GE(m.fit_percent, 98.0) << pheno_name(c.kind);
+    }
+  }
+  // Sweep from 0.5 to 1 Hz over 8 s: x = a sin(phase), phase' = 2 pi 0.5 Hz (1 + t / 8 s).
+  const auto phase = [](double t) { return 2 * kPi * 0.5 * (t + 0.5 * t * t / 8.0); };
+  Recording sweep = recording(
+      4000, 2e-3, [&](double t) { return 0.01 * std::sin(phase(t)); },
+      [&](double t) { return 0.01 * 2 * kPi * 0.5 * (1.0 + t / 8.0) * std::cos(phase(t)); },
+      [](double) { return 1.0; });
+  GreyboxSetup setup = greybox_setup_for(sweep, PhenoKind::bingham);
+  setup.settings.eps = 1e-4;
+  setup.settings.motion_scale = 0.06;
+  sweep.columns["force"] = simulate_pheno(sweep, setup, cases.front().truth);
+  const GreyboxFit fit = fit_greybox(sweep, "bingham");
+  const FittedParameter& window = fit.params[pheno_smoothing_index(PhenoKind::bingham)];
+  EXPECT_TRUE(window.fixed);
+  EXPECT_EQ(window.value, 0.0);
+}
+
+// The family report's field-dependence table evaluates the damper's field terms at the field the
+// valve sees: yield at 1 A with k = 1.2 / A is 200 + 300 b + 150 b^2, b = tanh(1.2) / 1.2
+// (480.8 N to the report's 4 digits), not the unsaturated 650 N.
+TEST(DamperModel, FamilyReportEvaluatesTheSaturatedField) {
+  FamilyFit r;
+  r.fit.model = "damper";
+  const std::vector<double> p =
+      damper_params({{"yield_per_field2", 150.0}, {"field_saturation", 1.2 * 1.2}});
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    FittedParameter fp;
+    fp.name = pheno_params(PhenoKind::damper)[k].name;
+    fp.value = p[k];
+    r.fit.params.push_back(fp);
+  }
+  std::vector<Recording> training;
+  for (double current : {0.5, 1.0}) {
+    training.push_back(recording(100, 1e-2, sine_x(0.01, 1.0), sine_v(0.01, 1.0),
+                                 [=](double) { return current; }));
+    r.fit.setup = damper_setup(training.back());
+    FamilyMember m;
+    m.csv_path = "synthetic.csv";
+    m.field = current;
+    m.simulated = std::vector<double>(100, 0.0);
+    r.training.push_back(m);
+  }
+  const std::string html = family_report_html(r, training, {});
+  const double b = std::tanh(1.2) / 1.2;
+  EXPECT_NEAR(200.0 + 300.0 * b + 150.0 * b * b, 480.8, 0.05);
+  EXPECT_NE(html.find("<td>480.8</td>"), std::string::npos);
+  EXPECT_EQ(html.find("<td>650</td>"), std::string::npos);
 }
 
 // Bi-viscous (Stanway et al. 1987): c_pre v below the yield velocity F_y / (c_pre - c_post),

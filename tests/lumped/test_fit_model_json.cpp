@@ -117,36 +117,51 @@ TEST(FitModelJson, GreyboxRoundTripSimulatesTheSame) {
   }
 }
 
-// A damper model written before the model had output_smoothing (15 parameters) reads back with
-// output_smoothing held at 0 (its output was not smoothed) and simulates as the same parameters
-// with an explicit 0.
-TEST(FitModelJson, DamperModelWithoutOutputSmoothingReadsAsUnsmoothed) {
+// A damper model written before the model had field_saturation and output_smoothing (15
+// parameters) reads back with both held at 0 (field linear in the current, output not smoothed)
+// and simulates bit for bit as the same parameters with explicit zeros; a Bingham model written
+// before output_smoothing (6 parameters) likewise.
+TEST(FitModelJson, ModelsWithoutLaterParametersReadAsBefore) {
   const Recording rec = damper_recording(0.05);
-  GreyboxFit fit;
-  fit.model = "damper";
-  fit.setup = greybox_setup_for(rec, PhenoKind::damper);
-  fit.setup.settings.eps = 1e-6;
-  fit.setup.settings.motion_scale = 0.05;
-  fit.setup.settings.output_scale = 1000.0;
-  const std::vector<double> values = {200.0, 300.0, 0.0,  2000.0, 0.0, 1.0,  1e12, 1e6,
-                                      0.0,   0.0,   1e-3, 0.0,    0.0, 0.01, 0.0,  0.0};
-  for (std::size_t k = 0; k < values.size(); ++k) {
-    FittedParameter p;
-    p.name = pheno_params(PhenoKind::damper)[k].name;
-    p.unit = pheno_params(PhenoKind::damper)[k].unit;
-    p.value = values[k];
-    fit.params.push_back(p);
+  for (const PhenoKind kind : {PhenoKind::damper, PhenoKind::bingham}) {
+    GreyboxFit fit;
+    fit.model = pheno_name(kind);
+    fit.setup = greybox_setup_for(rec, kind);
+    fit.setup.settings.eps = 1e-6;
+    fit.setup.settings.motion_scale = 0.05;
+    fit.setup.settings.output_scale = 1000.0;
+    const std::vector<double> values =
+        kind == PhenoKind::damper
+            ? std::vector<double>{200.0, 300.0, 0.0, 2000.0, 0.0,  1.0, 1e12, 1e6, 0.0,
+                                  0.0,   1e-3,  0.0, 0.0,    0.01, 0.0, 0.0,  0.0}
+            : std::vector<double>{200.0, 300.0, 2000.0, 0.0, 0.01, 0.0, 0.0};
+    ASSERT_EQ(values.size(), pheno_params(kind).size());
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      FittedParameter p;
+      p.name = pheno_params(kind)[k].name;
+      p.unit = pheno_params(kind)[k].unit;
+      p.value = values[k];
+      fit.params.push_back(p);
+    }
+    nlohmann::json j = fit_model_json(fit, rec.meta);
+    nlohmann::json& list = j["parameters"];
+    for (std::size_t k = list.size(); k-- > 0;)  // as written before they existed
+      if (list[k]["name"] == "output_smoothing" || list[k]["name"] == "field_saturation")
+        list.erase(k);
+    ASSERT_EQ(list.size(), values.size() - (kind == PhenoKind::damper ? 2 : 1));
+    const FitModel back = parse_fit_model_json(j.dump(), "old_model.json");
+    ASSERT_TRUE(back.greybox.has_value());
+    ASSERT_EQ(back.greybox->params.size(), values.size());
+    for (const char* name : {"output_smoothing", "field_saturation"}) {
+      const int k = pheno_param_index(kind, name);
+      if (k < 0) continue;
+      const FittedParameter& p = back.greybox->params[static_cast<std::size_t>(k)];
+      EXPECT_EQ(p.name, name);
+      EXPECT_EQ(p.value, 0.0) << name;
+      EXPECT_TRUE(p.fixed) << name;
+    }
+    EXPECT_EQ(simulate_fit_model(rec, back), simulate_pheno(rec, fit.setup, values));
   }
-  nlohmann::json j = fit_model_json(fit, rec.meta);
-  ASSERT_EQ(j["parameters"].back()["name"], "output_smoothing");
-  j["parameters"].erase(j["parameters"].size() - 1);
-  const FitModel back = parse_fit_model_json(j.dump(), "old_damper.json");
-  ASSERT_TRUE(back.greybox.has_value());
-  ASSERT_EQ(back.greybox->params.size(), 16u);
-  EXPECT_EQ(back.greybox->params.back().name, "output_smoothing");
-  EXPECT_EQ(back.greybox->params.back().value, 0.0);
-  EXPECT_TRUE(back.greybox->params.back().fixed);
-  EXPECT_EQ(simulate_fit_model(rec, back), simulate_pheno(rec, fit.setup, values));
 }
 
 // Valve-chain: the static map travels with the model (grid, yield table, viscous resistance).
