@@ -37,7 +37,7 @@ bool has_effect(const ModelFit& f, Effect e) {
 /// second chance.
 bool worth_retrying(const std::vector<CandidateScore>& scores, Effect c, double margin) {
   for (const auto& s : scores)
-    if (s.step == 0 && s.effect == c) return !s.screened && s.delta_bic > -margin;
+    if (s.step == 0 && s.effect == c) return s.screened || s.delta_bic > -margin;
   return false;
 }
 
@@ -110,6 +110,21 @@ std::vector<bool> nuisances_held(const DiagnosisModel& model, const std::vector<
   std::vector<bool> held(model.layout(effects).size(), false);
   const std::size_t n_static = model.static_params().size();
   for (std::size_t j = n_static - model.nuisance_count(); j < n_static; ++j) held[j] = true;
+  return held;
+}
+
+/// Nuisances held while a candidate is screened and fitted: the pre-yield smoothness always;
+/// the output delay only when the baseline put it at its bound (it was free to absorb a
+/// candidate's phase, e.g. an inertia's lead or a compliance's lag, and is re-fitted with each
+/// candidate so that the comparison is between two models each with its best delay; at a bound
+/// it would make every step project onto the bound).
+std::vector<bool> held_in_candidates(const DiagnosisModel& model,
+                                     const std::vector<Effect>& effects,
+                                     const std::vector<double>& values) {
+  auto held = nuisances_held(model, effects);
+  const std::size_t j = model.delay_index();
+  const double bound = kMaxDelaySamples * model.sample_interval();
+  if (std::abs(values[j]) < 0.999 * bound) held[j] = false;
   return held;
 }
 
@@ -395,7 +410,7 @@ double size_relative_se(const DiagnosisModel& model, const ModelFit& fit, int th
   FitSettings s;
   s.max_iterations = 0;
   s.threads = threads;
-  s.fixed = nuisances_held(model, fit.effects);
+  s.fixed = held_in_candidates(model, fit.effects, fit.values);
   const auto f = fit_model(model, fit.effects, fit.values, s);
   const std::size_t j = f.layout.size() - model.effect_params(f.effects.back()).size();
   const double v = std::abs(f.values[j]);
@@ -513,7 +528,8 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
       try {
         const auto started = std::chrono::steady_clock::now();
         double grid_sse = 0.0;
-        s = grid_start(model, effects, s, &grid_sse, options.threads);
+        const bool scan_delay = !held_in_candidates(model, effects, s)[model.delay_index()];
+        s = grid_start(model, effects, s, &grid_sse, options.threads, scan_delay);
         // Screening: a candidate that lowers the error at no decade of its parameter (the
         // others held at the current fit) is scored there and not fitted.
         if (!(grid_sse < current.sse)) {
@@ -525,7 +541,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
           continue;
         }
         auto candidate_settings = settings;
-        candidate_settings.fixed = nuisances_held(model, effects);
+        candidate_settings.fixed = held_in_candidates(model, effects, current.values);
         auto f = fit_model(model, effects, s, candidate_settings);
         const double db = bic_now - bic(f.sse, n, f.values.size());
         if (options.progress)
