@@ -2,7 +2,8 @@
 // recordings, each with one concealed effect, a pair of them, or none; random parameters,
 // excitation, noise level, sidecar map error and rig kind. With --nuisances 1 (the default) the
 // recordings also carry what real recorders add and is not physics: noise on the drive columns
-// (0.1-0.5 % of their spread), held or smooth drive sampling, a channel skew of 0-1 sample, a
+// (0.1-0.5 % of their spread), held or smooth drive sampling (held: the coil drive steps between
+// samples, the motion is recorded as interval means), a channel skew of 0-1 sample, a
 // pre-yield smoothing of 0.5-3 % of the peak flow, and a sidecar stating the true coil
 // inductance on half the clean voltage-driven draws. The diagnosis sees only the recording.
 // Prints one line per draw as it finishes, then the matrix truth x first named effect, the share
@@ -10,11 +11,12 @@
 // of the achievable ceiling (the truth driven by the recorded, noisy inputs).
 // Not a Google Benchmark (it takes minutes):
 //   bench_diagnose_confusion [--draws N] [--seed S] [--threads T] [--only NAME] [--index I]
-//                            [--csv FILE]
-//                            [--nuisances 0|1] [--visible 0|1]
-// --visible 1 (the default) makes every concealed effect at least barely visible: its signature
-// on the recording (truth with it minus truth without it, same drives and nuisances) must have
-// an rms of at least the output noise rms; an effect below that is redrawn larger.
+//                            [--csv FILE] [--nuisances 0|1] [--visible 0|1]
+// --visible 1 (the default) makes every concealed effect at least barely visible: the part of
+// its signature on the recording (truth with it minus truth without it, same drives and
+// nuisances) that the baseline's calibration cannot reproduce must have an rms of at least the
+// output noise rms; an effect below that is redrawn larger (see make_visible).
+// RHEOMAG_CONFUSION_NOTES=1 prints each diagnosis's candidate scores and notes.
 
 #include <algorithm>
 #include <atomic>
@@ -64,11 +66,11 @@ struct Draw {
   int index = 0;
   lumped::RigSpec spec;
   lumped::Recording drive;
-  double noise_fraction = 0.0;    ///< noise std / output std
-  bool nuisances = true;          ///< drive noise, held sampling, skew, stated inductance
-  bool held = false;              ///< drives recorded as held samples
-  double skew = 0.0;              ///< [samples] drive channels sampled this much later
-  double drive_noise = 0.0;       ///< drive noise std / drive std
+  double noise_fraction = 0.0;  ///< noise std / output std
+  bool nuisances = true;        ///< drive noise, held sampling, skew, stated inductance
+  bool held = false;         ///< coil drive held between samples, motion recorded as interval means
+  double skew = 0.0;         ///< [samples] drive channels sampled this much later
+  double drive_noise = 0.0;  ///< drive noise std / drive std
   bool state_inductance = false;  ///< the sidecar states the true inductance
   double map_error = 0.1;         ///< sidecar map off by up to this factor
   std::string description;
@@ -295,6 +297,11 @@ double at(const std::vector<double>& t, const std::vector<double>& v, double tt)
 
 constexpr int kFine = 4;  ///< the truth's time base is this much finer than the recorder's
 
+/// A mechanical drive column (the piston's motion): smooth in time whatever the recorder does.
+bool mechanical(const std::string& column) {
+  return column == "velocity" || column == "displacement";
+}
+
 /// The drives acting on the rig: with nuisances on a 4x finer time base, smooth or held between
 /// the recorder's samples; without, the recorder's own.
 lumped::Recording rig_drives(const Draw& draw) {
@@ -308,9 +315,13 @@ lumped::Recording rig_drives(const Draw& draw) {
   for (const auto& [name, v] : draw.drive.columns) {
     auto& out = fine.columns[name];
     for (double tt : fine.t) {
-      // Held: the value of the last recorder sample; smooth: the drive between samples.
-      const double th =
-          draw.held ? tc.front() + dt * std::floor((tt - tc.front()) / dt + 1e-9) : tt;
+      // Held: the value of the last recorder sample (a DAC's zero-order hold on the coil's
+      // current or voltage); smooth: the drive between samples. A piston's motion is always
+      // smooth (a held velocity would step, with an impulsive acceleration); its `held`
+      // convention is on the recorder's side (record()).
+      const double th = draw.held && !mechanical(name)
+                            ? tc.front() + dt * std::floor((tt - tc.front()) / dt + 1e-9)
+                            : tt;
       out.push_back(at(tc, v, th));
     }
   }
@@ -318,7 +329,8 @@ lumped::Recording rig_drives(const Draw& draw) {
 }
 
 /// What the recorder writes: the truth simulated on the rig's drives (above), the output at the
-/// recorder's samples, the drives sampled `skew` samples late with noise.
+/// recorder's samples, the drives sampled `skew` samples late with noise (a held motion column
+/// as the mean over the interval ending at the sample).
 lumped::Recording record(const Draw& draw, std::mt19937& rng) {
   if (!draw.nuisances) return lumped::simulate_rig(draw.spec, draw.drive);
   const auto& tc = draw.drive.t;
@@ -337,8 +349,19 @@ lumped::Recording record(const Draw& draw, std::mt19937& rng) {
     const auto& source = fine.columns.at(c);
     const double sigma = draw.drive_noise * spread(draw.drive.columns.at(c));
     std::normal_distribution<double> noise(0.0, sigma);
-    for (std::size_t k = 0; k < tc.size(); ++k)
-      v[k] = at(fine.t, source, tc[k] + draw.skew * dt) + (sigma > 0.0 ? noise(rng) : 0.0);
+    for (std::size_t k = 0; k < tc.size(); ++k) {
+      const double tk = tc[k] + draw.skew * dt;
+      // A held convention on a smooth motion: the recorder writes the mean over the interval
+      // that ends at the sample (an integrating converter; like a hold, half a sample late).
+      double value = at(fine.t, source, tk);
+      if (draw.held && mechanical(c)) {
+        value = 0.0;
+        for (int f = 0; f <= kFine; ++f)
+          value +=
+              (f == 0 || f == kFine ? 0.5 : 1.0) / kFine * at(fine.t, source, tk - dt * f / kFine);
+      }
+      v[k] = value + (sigma > 0.0 ? noise(rng) : 0.0);
+    }
   }
   return rec;
 }

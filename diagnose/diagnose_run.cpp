@@ -128,6 +128,20 @@ std::vector<bool> held_in_candidates(const DiagnosisModel& model,
   return held;
 }
 
+/// Sets `fit`'s output delay to its best value for the rest of its parameters (no refit).
+void polish_delay(const DiagnosisModel& model, ModelFit& fit) {
+  const std::size_t j = model.delay_index();
+  auto values = fit.values;
+  values[j] = 0.0;
+  double sse = 0.0;
+  const auto undelayed = model.predict(fit.effects, values);
+  const double delay = model.best_delay(undelayed, values, sse);
+  if (!(sse < fit.sse)) return;
+  fit.values[j] = delay;
+  fit.sse = sse;
+  fit.prediction = model.delayed(undelayed, fit.values);
+}
+
 std::vector<bool> block_mask(std::size_t n, int blocks, bool even) {
   std::vector<bool> mask(n);
   for (std::size_t k = 0; k < n; ++k) {
@@ -500,6 +514,10 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
       double delta_bic;
     };
     std::vector<Tried> tried;
+    // The current model with its best output delay (one simulation): each candidate is fitted
+    // with the delay free, so the gain it is credited with must not be the delay's.
+    if (!held_in_candidates(model, current.effects, current.values)[model.delay_index()])
+      polish_delay(model, current);
     const double bic_now = bic(current.sse, n, current.values.size());
     const bool first_step = step == 0;
     for (Effect c : candidates) {
