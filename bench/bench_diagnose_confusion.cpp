@@ -2,8 +2,9 @@
 // recordings, each with one concealed effect, a pair of them, or none; random parameters,
 // excitation, noise level, sidecar map error and rig kind. With --nuisances 1 (the default) the
 // recordings also carry what real recorders add and is not physics: noise on the drive columns
-// (0.1-0.5 % of their spread), held or smooth drive sampling (held: the coil drive steps between
-// samples, the motion is recorded as interval means), a channel skew of 0-1 sample, a
+// (0.1-0.5 % of their spread), held or smooth drive sampling (held: the coil drive steps at the
+// samples, the motion is recorded as the mean over the interval each sample begins), a channel
+// skew of 0-1 sample, a
 // pre-yield smoothing of 0.5-3 % of the peak flow, and a sidecar stating the true coil
 // inductance on half the clean voltage-driven draws. The diagnosis sees only the recording.
 // Prints one line per draw as it finishes, then the matrix truth x first named effect, the share
@@ -330,7 +331,7 @@ lumped::Recording rig_drives(const Draw& draw) {
 
 /// What the recorder writes: the truth simulated on the rig's drives (above), the output at the
 /// recorder's samples, the drives sampled `skew` samples late with noise (a held motion column
-/// as the mean over the interval ending at the sample).
+/// as the mean over the interval beginning at the sample).
 lumped::Recording record(const Draw& draw, std::mt19937& rng) {
   if (!draw.nuisances) return lumped::simulate_rig(draw.spec, draw.drive);
   const auto& tc = draw.drive.t;
@@ -352,13 +353,14 @@ lumped::Recording record(const Draw& draw, std::mt19937& rng) {
     for (std::size_t k = 0; k < tc.size(); ++k) {
       const double tk = tc[k] + draw.skew * dt;
       // A held convention on a smooth motion: the recorder writes the mean over the interval
-      // that ends at the sample (an integrating converter; like a hold, half a sample late).
+      // that the sample stands for, the one that begins at it (as a held coil drive's sample
+      // stands for its value until the next), so both drive channels are half a sample early.
       double value = at(fine.t, source, tk);
       if (draw.held && mechanical(c)) {
         value = 0.0;
         for (int f = 0; f <= kFine; ++f)
           value +=
-              (f == 0 || f == kFine ? 0.5 : 1.0) / kFine * at(fine.t, source, tk - dt * f / kFine);
+              (f == 0 || f == kFine ? 0.5 : 1.0) / kFine * at(fine.t, source, tk + dt * f / kFine);
       }
       v[k] = value + (sigma > 0.0 ? noise(rng) : 0.0);
     }

@@ -122,10 +122,32 @@ std::vector<bool> held_in_candidates(const DiagnosisModel& model,
                                      const std::vector<Effect>& effects,
                                      const std::vector<double>& values) {
   auto held = nuisances_held(model, effects);
-  const std::size_t j = model.delay_index();
-  const double bound = kMaxDelaySamples * model.sample_interval();
-  if (std::abs(values[j]) < 0.999 * bound) held[j] = false;
+  const auto layout = model.static_params();
+  for (std::size_t j = model.delay_index(); j < layout.size(); ++j) {
+    const auto& p = layout[j];
+    const double v = values[j];
+    const bool at_bound = p.log_scale ? v <= p.lower * 1.001 || v >= p.upper / 1.001
+                                      : std::abs(v - p.lower) < 5e-4 * (p.upper - p.lower) ||
+                                            std::abs(v - p.upper) < 5e-4 * (p.upper - p.lower);
+    if (!at_bound) held[j] = false;
+  }
   return held;
+}
+
+/// Re-calibrates the nuisances of `fit` that are not at a bound with everything else held (after
+/// an accepted effect the pre-yield smoothing and delay it was compared with may no longer be
+/// the best, and the next candidate would be credited with their gain).
+void recalibrate_nuisances(const DiagnosisModel& model, ModelFit& fit, const FitSettings& base) {
+  auto free = held_in_candidates(model, fit.effects, fit.values);
+  bool any = false;
+  std::vector<bool> fixed(fit.values.size(), true);
+  for (std::size_t j = model.delay_index(); j < model.static_params().size(); ++j)
+    if (!free[j]) fixed[j] = false, any = true;
+  if (!any) return;
+  auto s = base;
+  s.fixed = fixed;
+  auto f = fit_model(model, fit.effects, fit.values, s);
+  if (f.sse < fit.sse) fit = std::move(f);
 }
 
 /// Sets `fit`'s output delay to its best value for the rest of its parameters (no refit).
@@ -343,6 +365,14 @@ std::string rejection(const DiagnosisModel& model, const ModelFit& current, cons
   if (share < options.min_share)
     return head + " but removed only " + fmt(100 * share, 2) +
            " % of the residual energy above the noise floor: not accepted";
+  // Materiality against the noise: the output change it explains, in rms over the recording,
+  // at least min_noise_multiple noise standard deviations (floor_sse = n sigma^2).
+  const double explained_rms_in_sigma =
+      floor_sse > 0.0 ? std::sqrt(std::max(current.sse - fit.sse, 0.0) / floor_sse) : 1e300;
+  if (explained_rms_in_sigma < options.min_noise_multiple)
+    return head + " but the output change it explains is only " + fmt(explained_rms_in_sigma, 2) +
+           " noise standard deviations in rms (at least " + fmt(options.min_noise_multiple, 2) +
+           " needed): below the noise, not accepted";
   // A time constant shorter than one sample interval cannot be told from the recording's own
   // timing (channel skew, held drives), which the delay nuisance already absorbs.
   if (const double tau = resolved_time_constant(model, fit);
@@ -518,6 +548,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
     // with the delay free, so the gain it is credited with must not be the delay's.
     if (!held_in_candidates(model, current.effects, current.values)[model.delay_index()])
       polish_delay(model, current);
+    if (step > 0) recalibrate_nuisances(model, current, settings);
     const double bic_now = bic(current.sse, n, current.values.size());
     const bool first_step = step == 0;
     for (Effect c : candidates) {
