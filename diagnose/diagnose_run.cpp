@@ -37,7 +37,7 @@ bool has_effect(const ModelFit& f, Effect e) {
 /// second chance.
 bool worth_retrying(const std::vector<CandidateScore>& scores, Effect c, double margin) {
   for (const auto& s : scores)
-    if (s.step == 0 && s.effect == c) return s.screened || s.delta_bic > -margin;
+    if (s.step == 0 && s.effect == c) return !s.screened && s.delta_bic > -margin;
   return false;
 }
 
