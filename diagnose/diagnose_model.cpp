@@ -531,6 +531,39 @@ std::vector<double> DiagnosisModel::delayed(std::vector<double> y,
   return out;
 }
 
+double DiagnosisModel::best_delay(const std::vector<double>& undelayed, std::vector<double> values,
+                                  double& sse) const {
+  const std::size_t j = delay_index();
+  const double dt = sample_interval_;
+  auto error = [&](double delay) {
+    values[j] = delay;
+    const auto y = delayed(undelayed, values);
+    double s = 0.0;
+    for (std::size_t k = 0; k < y.size(); ++k) s += (measured_[k] - y[k]) * (measured_[k] - y[k]);
+    return s;
+  };
+  constexpr int kSteps = 10;  // per sample interval
+  const int m = static_cast<int>(kMaxDelaySamples) * kSteps;
+  std::vector<double> e(static_cast<std::size_t>(2 * m + 1));
+  std::size_t best = 0;
+  for (int i = -m; i <= m; ++i) {
+    const auto k = static_cast<std::size_t>(i + m);
+    e[k] = error(dt * i / kSteps);
+    if (e[k] < e[best]) best = k;
+  }
+  double delay = dt * (static_cast<double>(best) - m) / kSteps;
+  sse = e[best];
+  if (best > 0 && best + 1 < e.size()) {
+    const double curvature = e[best - 1] - 2.0 * e[best] + e[best + 1];
+    if (curvature > 0.0) {
+      const double refined = delay + 0.5 * dt / kSteps * (e[best - 1] - e[best + 1]) / curvature;
+      const double s = error(refined);
+      if (s < sse) sse = s, delay = refined;
+    }
+  }
+  return delay;
+}
+
 std::vector<double> DiagnosisModel::predict(const std::vector<Effect>& effects,
                                             const std::vector<double>& values) const {
   if (fitted_) return delayed(predict_fitted(effects, values), values);

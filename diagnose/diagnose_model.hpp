@@ -114,6 +114,15 @@ class DiagnosisModel {
   /// Number of static parameters that are nuisances (the last ones of static_params()).
   std::size_t nuisance_count() const;
 
+  /// Index of the output delay nuisance in static_params() (and every layout).
+  std::size_t delay_index() const { return static_params().size() - nuisance_count(); }
+
+  /// The output delay within its bounds that fits `undelayed` (the model output before its
+  /// delay, at the recording's times) best: a scan in tenths of a sample, then the parabola
+  /// through the best and its neighbours. Returns the delay [s]; its squared error in `sse`.
+  double best_delay(const std::vector<double>& undelayed, std::vector<double> values,
+                    double& sse) const;
+
   /// Parameters an effect adds, with starting values scaled to this recording.
   std::vector<ParamDef> effect_params(Effect effect) const;
 
@@ -122,6 +131,9 @@ class DiagnosisModel {
 
   /// The rig spec for parameter values `values` (in the order of layout(effects)).
   lumped::RigSpec spec(const std::vector<Effect>& effects, const std::vector<double>& values) const;
+
+  /// Shifts `y` (at the recording's times) by the delay in `values`: y(t - delay).
+  std::vector<double> delayed(std::vector<double> y, const std::vector<double>& values) const;
 
   /// Free-run model output at the recording's sample times, shifted by the delay nuisance.
   std::vector<double> predict(const std::vector<Effect>& effects,
@@ -191,8 +203,6 @@ class DiagnosisModel {
   void chain_map(const std::string& where);
   /// Puts the stated chambers' oil compliance in the baseline when it is not negligible.
   void stiff_or_compliant_chambers();
-  /// Shifts `y` (at the recording's times) by the delay in `values`: y(t - delay).
-  std::vector<double> delayed(std::vector<double> y, const std::vector<double>& values) const;
 };
 
 }  // namespace rheomag::diagnose

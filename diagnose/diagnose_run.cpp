@@ -113,6 +113,57 @@ std::vector<bool> nuisances_held(const DiagnosisModel& model, const std::vector<
   return held;
 }
 
+/// Nuisances held while a candidate is screened and fitted: the pre-yield smoothness always;
+/// the output delay only when the baseline put it at its bound (it was free to absorb a
+/// candidate's phase, e.g. an inertia's lead or a compliance's lag, and is re-fitted with each
+/// candidate so that the comparison is between two models each with its best delay; at a bound
+/// it would make every step project onto the bound).
+std::vector<bool> held_in_candidates(const DiagnosisModel& model,
+                                     const std::vector<Effect>& effects,
+                                     const std::vector<double>& values) {
+  auto held = nuisances_held(model, effects);
+  const auto layout = model.static_params();
+  for (std::size_t j = model.delay_index(); j < layout.size(); ++j) {
+    const auto& p = layout[j];
+    const double v = values[j];
+    const bool at_bound = p.log_scale ? v <= p.lower * 1.001 || v >= p.upper / 1.001
+                                      : std::abs(v - p.lower) < 5e-4 * (p.upper - p.lower) ||
+                                            std::abs(v - p.upper) < 5e-4 * (p.upper - p.lower);
+    if (!at_bound) held[j] = false;
+  }
+  return held;
+}
+
+/// Re-calibrates the nuisances of `fit` that are not at a bound with everything else held (after
+/// an accepted effect the pre-yield smoothing and delay it was compared with may no longer be
+/// the best, and the next candidate would be credited with their gain).
+void recalibrate_nuisances(const DiagnosisModel& model, ModelFit& fit, const FitSettings& base) {
+  auto free = held_in_candidates(model, fit.effects, fit.values);
+  bool any = false;
+  std::vector<bool> fixed(fit.values.size(), true);
+  for (std::size_t j = model.delay_index(); j < model.static_params().size(); ++j)
+    if (!free[j]) fixed[j] = false, any = true;
+  if (!any) return;
+  auto s = base;
+  s.fixed = fixed;
+  auto f = fit_model(model, fit.effects, fit.values, s);
+  if (f.sse < fit.sse) fit = std::move(f);
+}
+
+/// Sets `fit`'s output delay to its best value for the rest of its parameters (no refit).
+void polish_delay(const DiagnosisModel& model, ModelFit& fit) {
+  const std::size_t j = model.delay_index();
+  auto values = fit.values;
+  values[j] = 0.0;
+  double sse = 0.0;
+  const auto undelayed = model.predict(fit.effects, values);
+  const double delay = model.best_delay(undelayed, values, sse);
+  if (!(sse < fit.sse)) return;
+  fit.values[j] = delay;
+  fit.sse = sse;
+  fit.prediction = model.delayed(undelayed, fit.values);
+}
+
 std::vector<bool> block_mask(std::size_t n, int blocks, bool even) {
   std::vector<bool> mask(n);
   for (std::size_t k = 0; k < n; ++k) {
@@ -314,6 +365,14 @@ std::string rejection(const DiagnosisModel& model, const ModelFit& current, cons
   if (share < options.min_share)
     return head + " but removed only " + fmt(100 * share, 2) +
            " % of the residual energy above the noise floor: not accepted";
+  // Materiality against the noise: the output change it explains, in rms over the recording,
+  // at least min_noise_multiple noise standard deviations (floor_sse = n sigma^2).
+  const double explained_rms_in_sigma =
+      floor_sse > 0.0 ? std::sqrt(std::max(current.sse - fit.sse, 0.0) / floor_sse) : 1e300;
+  if (explained_rms_in_sigma < options.min_noise_multiple)
+    return head + " but the output change it explains is only " + fmt(explained_rms_in_sigma, 2) +
+           " noise standard deviations in rms (at least " + fmt(options.min_noise_multiple, 2) +
+           " needed): below the noise, not accepted";
   // A time constant shorter than one sample interval cannot be told from the recording's own
   // timing (channel skew, held drives), which the delay nuisance already absorbs.
   if (const double tau = resolved_time_constant(model, fit);
@@ -395,7 +454,7 @@ double size_relative_se(const DiagnosisModel& model, const ModelFit& fit, int th
   FitSettings s;
   s.max_iterations = 0;
   s.threads = threads;
-  s.fixed = nuisances_held(model, fit.effects);
+  s.fixed = held_in_candidates(model, fit.effects, fit.values);
   const auto f = fit_model(model, fit.effects, fit.values, s);
   const std::size_t j = f.layout.size() - model.effect_params(f.effects.back()).size();
   const double v = std::abs(f.values[j]);
@@ -485,6 +544,11 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
       double delta_bic;
     };
     std::vector<Tried> tried;
+    // The current model with its best output delay (one simulation): each candidate is fitted
+    // with the delay free, so the gain it is credited with must not be the delay's.
+    if (!held_in_candidates(model, current.effects, current.values)[model.delay_index()])
+      polish_delay(model, current);
+    if (step > 0) recalibrate_nuisances(model, current, settings);
     const double bic_now = bic(current.sse, n, current.values.size());
     const bool first_step = step == 0;
     for (Effect c : candidates) {
@@ -513,7 +577,8 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
       try {
         const auto started = std::chrono::steady_clock::now();
         double grid_sse = 0.0;
-        s = grid_start(model, effects, s, &grid_sse, options.threads);
+        const bool scan_delay = !held_in_candidates(model, effects, s)[model.delay_index()];
+        s = grid_start(model, effects, s, &grid_sse, options.threads, scan_delay);
         // Screening: a candidate that lowers the error at no decade of its parameter (the
         // others held at the current fit) is scored there and not fitted.
         if (!(grid_sse < current.sse)) {
@@ -525,7 +590,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
           continue;
         }
         auto candidate_settings = settings;
-        candidate_settings.fixed = nuisances_held(model, effects);
+        candidate_settings.fixed = held_in_candidates(model, effects, current.values);
         auto f = fit_model(model, effects, s, candidate_settings);
         const double db = bic_now - bic(f.sse, n, f.values.size());
         if (options.progress)

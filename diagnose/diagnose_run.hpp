@@ -24,6 +24,10 @@ struct DiagnoseOptions {
   /// ... and remove this share of the residual energy above the noise floor (practical
   /// significance)
   double min_share = 0.1;
+  /// ... and explain an output change at least this many noise standard deviations in rms over
+  /// the recording: (SSE_now - SSE_new) >= min_noise_multiple^2 n sigma^2 (an effect smaller
+  /// than the noise on every sample is not material, however well a long recording resolves it)
+  double min_noise_multiple = 0.5;
   double max_relative_se = 0.5;  ///< ... with its size parameter identified to this rel. error
   int blocks = 8;                ///< alternating time blocks for the two-fold held-out check
   int max_iterations = 15;       ///< Levenberg-Marquardt iterations per fit
