@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "diagnose/diagnose_noise.hpp"
 #include "lumped/metrics.hpp"
+#include "lumped/recording_excerpt.hpp"
 
 namespace rheomag::diagnose {
 
@@ -206,6 +207,12 @@ double heldout_sse(const DiagnosisModel& model, const ModelFit& full, int blocks
   for (const auto& e : failure)
     if (e) std::rethrow_exception(e);
   return fold_sse[0] + fold_sse[1];
+}
+
+std::string num(double v) {
+  std::ostringstream text;
+  text << v;
+  return text.str();
 }
 
 std::string fmt(double v, int digits = 3) {
@@ -475,62 +482,68 @@ Unexplained unexplained_of(const std::vector<double>& residual, double baseline_
   return u;
 }
 
-}  // namespace
+/// The `length` consecutive samples (starting on a grid of length/4, or ending at the last
+/// sample) whose baseline residual energy is largest: where the baseline misses most is where
+/// what it lacks shows, and a stretch at rest carries no evidence.
+lumped::SampleRange representative_excerpt(const std::vector<double>& residual,
+                                           std::size_t length) {
+  const std::size_t n = residual.size();
+  std::vector<double> energy(n + 1, 0.0);  // cumulative squared residual
+  for (std::size_t k = 0; k < n; ++k) energy[k + 1] = energy[k] + residual[k] * residual[k];
+  const std::size_t step = std::max<std::size_t>(length / 4, 1);
+  lumped::SampleRange best{0, length};
+  double best_energy = -1.0;
+  for (std::size_t b = 0;; b += step) {
+    const std::size_t begin = std::min(b, n - length);
+    const double e = energy[begin + length] - energy[begin];
+    if (e > best_energy) best_energy = e, best = {begin, begin + length};
+    if (begin == n - length) break;
+  }
+  return best;
+}
 
-Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options) {
-  const auto run_start = std::chrono::steady_clock::now();
-  auto stage_start = run_start;
-  auto since = [](std::chrono::steady_clock::time_point t) {
+/// Progress of one diagnosis: each finished stage with its own time, each candidate's result,
+/// timed from the start of the run.
+class Clock {
+ public:
+  using time_point = std::chrono::steady_clock::time_point;
+  explicit Clock(const ProgressCallback& progress) : progress_(progress) {}
+  /// [s] since `t`.
+  static double since(time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-  };
-  auto num = [](double v) {
-    std::ostringstream text;
-    text << v;
-    return text.str();
-  };
-  // A finished stage: its name and its own time in the detail.
-  auto stage = [&](const std::string& what) {
-    if (!options.progress) return;
+  }
+  /// [s] since the run started.
+  double elapsed() const { return since(start_); }
+  /// True when somebody listens.
+  bool listening() const { return static_cast<bool>(progress_); }
+  /// Reports `event` (its elapsed time set here).
+  void report(ProgressEvent event) const {
+    if (!progress_) return;
+    event.elapsed = elapsed();
+    progress_(event);
+  }
+  /// A finished stage: its name and its own time in the detail.
+  void stage(const std::string& what) {
     const auto now = std::chrono::steady_clock::now();
-    options.progress(
-        {what, 0.0, 0.0, since(run_start),
-         "in " + num(std::chrono::duration<double>(now - stage_start).count()) + " s"});
-    stage_start = now;
-  };
-  DiagnosisModel model(rec, options.baseline_model ? &*options.baseline_model : nullptr);
-  check_informative(model);
-  Diagnosis d;
-  d.recording = rec.csv_path;
-  d.output_column = model.output_column();
-  d.t = rec.t;
-  d.measured = model.measured();
+    report({what, 0.0, 0.0, 0.0,
+            "in " + num(std::chrono::duration<double>(now - stage_).count()) + " s"});
+    stage_ = now;
+  }
+
+ private:
+  const ProgressCallback& progress_;
+  time_point start_ = std::chrono::steady_clock::now();
+  time_point stage_ = start_;
+};
+
+/// Forward selection on `model` from its calibrated baseline `current`: candidates are fitted,
+/// tested and accepted one at a time (scores, findings and notes appended to `d`); returns the
+/// fit of the last accepted model (`current` itself when nothing is accepted). `floor_sse` is
+/// the noise floor n sigma^2 of this model's baseline residual.
+ModelFit forward_select(const DiagnosisModel& model, ModelFit current, double floor_sse,
+                        const DiagnoseOptions& options, Diagnosis& d, Clock& clock) {
   const auto& y = model.measured();
   const std::size_t n = y.size();
-
-  // 1. Baseline: calibrate the static parameters.
-  std::vector<double> start = nuisance_start(model, options.threads);
-  FitSettings calib;
-  calib.max_iterations = 50;
-  calib.threads = options.threads;
-  d.baseline = fit_model(model, {}, start, calib);
-  d.baseline_fit_percent = fit_percent_of(y, d.baseline.prediction);
-  d.includes = model.includes();
-  d.nuisance = nuisance_of(model, d.baseline);
-  stage("baseline calibration");
-
-  // 2. Locate.
-  std::vector<double> residual(n);
-  for (std::size_t k = 0; k < n; ++k) residual[k] = y[k] - d.baseline.prediction[k];
-  d.mismatch = locate_mismatch(model.recording(), residual);
-  d.baseline_stats =
-      residual_statistics(model.recording(), rec.meta.drive, y, d.baseline.prediction);
-  // The noise floor: the white part of the baseline's residual (output sensor noise and drive
-  // noise the static map passes through); no candidate can explain it.
-  const double sigma = noise_sigma(residual);
-  const double floor_sse = static_cast<double>(n) * sigma * sigma;
-
-  // 3. Name: forward selection.
-  ModelFit current = d.baseline;
   FitSettings settings;
   settings.max_iterations = options.max_iterations;
   settings.threads = options.threads;
@@ -584,19 +597,19 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
         if (!(grid_sse < current.sse)) {
           const double db = bic_now - bic(grid_sse, n, s.size());
           d.candidates.push_back({c, step, 0.0, db, true});
-          if (options.progress)
-            options.progress({"step " + std::to_string(step + 1) + " " + effect_name(c), 0.0, 0.0,
-                              since(run_start), "screened out (no decade of its parameter helps)"});
+          if (clock.listening())
+            clock.report({"step " + std::to_string(step + 1) + " " + effect_name(c), 0.0, 0.0,
+                          clock.elapsed(), "screened out (no decade of its parameter helps)"});
           continue;
         }
         auto candidate_settings = settings;
         candidate_settings.fixed = held_in_candidates(model, effects, current.values);
         auto f = fit_model(model, effects, s, candidate_settings);
         const double db = bic_now - bic(f.sse, n, f.values.size());
-        if (options.progress)
-          options.progress({"step " + std::to_string(step + 1) + " " + effect_name(c), 0.0, 0.0,
-                            since(run_start),
-                            "dBIC " + num(db) + " in " + num(since(started)) + " s"});
+        if (clock.listening())
+          clock.report({"step " + std::to_string(step + 1) + " " + effect_name(c), 0.0, 0.0,
+                        clock.elapsed(),
+                        "dBIC " + num(db) + " in " + num(Clock::since(started)) + " s"});
         d.candidates.push_back({c, step, fit_percent_of(y, f.prediction), db});
         tried.push_back({c, std::move(f), db});
       } catch (const ConvergenceError&) {
@@ -604,7 +617,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
                           std::to_string(step + 1));
       }
     }
-    stage("step " + std::to_string(step + 1) + " candidates");
+    clock.stage("step " + std::to_string(step + 1) + " candidates");
     if (tried.empty()) break;
     std::stable_sort(tried.begin(), tried.end(),
                      [](const Tried& a, const Tried& b) { return a.delta_bic > b.delta_bic; });
@@ -630,7 +643,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
                                                                 cv_iterations, options.threads);
       held_current = held_now;
       held_new = heldout_sse(model, c.fit, options.blocks, cv_iterations, options.threads);
-      stage("held-out check of " + effect_name(c.effect));
+      clock.stage("held-out check of " + effect_name(c.effect));
       gain = held_now > 0 ? 1.0 - held_new / held_now : 0.0;
       if (gain < options.heldout_margin) {
         d.notes.push_back(effect_name(c.effect) + " lowered BIC by " + fmt(c.delta_bic) +
@@ -671,6 +684,78 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
     held_current = held_new;
   }
 
+  return current;
+}
+
+}  // namespace
+
+Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options) {
+  Clock clock(options.progress);
+  const ModelBaseline* fitted = options.baseline_model ? &*options.baseline_model : nullptr;
+  DiagnosisModel model(rec, fitted);
+  check_informative(model);
+  Diagnosis d;
+  d.recording = rec.csv_path;
+  d.output_column = model.output_column();
+  d.t = rec.t;
+  d.measured = model.measured();
+  const auto& y = model.measured();
+  const std::size_t n = y.size();
+
+  // 1. Baseline: calibrate the static parameters.
+  std::vector<double> start = nuisance_start(model, options.threads);
+  FitSettings calib;
+  calib.max_iterations = 50;
+  calib.threads = options.threads;
+  d.baseline = fit_model(model, {}, start, calib);
+  d.baseline_fit_percent = fit_percent_of(y, d.baseline.prediction);
+  d.includes = model.includes();
+  d.nuisance = nuisance_of(model, d.baseline);
+  clock.stage("baseline calibration");
+
+  // 2. Locate.
+  std::vector<double> residual(n);
+  for (std::size_t k = 0; k < n; ++k) residual[k] = y[k] - d.baseline.prediction[k];
+  d.mismatch = locate_mismatch(model.recording(), residual);
+  d.baseline_stats =
+      residual_statistics(model.recording(), rec.meta.drive, y, d.baseline.prediction);
+  // The noise floor: the white part of the baseline's residual (output sensor noise and drive
+  // noise the static map passes through); no candidate can explain it.
+  const double sigma = noise_sigma(residual);
+  const double floor_sse = static_cast<double>(n) * sigma * sigma;
+
+  // 3. Name: forward selection, on the whole recording or, when it is long, on its most
+  // informative excerpt (the cost rule; the final re-fit below uses every sample).
+  ModelFit current = d.baseline;
+  if (options.selection_samples > 0 && n > options.selection_samples) {
+    d.selection = representative_excerpt(residual, options.selection_samples);
+    const DiagnosisModel part(lumped::excerpt(rec, d.selection), fitted);
+    auto part_calib = calib;
+    const auto part_baseline = fit_model(part, {}, d.baseline.values, part_calib);
+    std::vector<double> part_residual(d.selection.size());
+    for (std::size_t k = 0; k < part_residual.size(); ++k)
+      part_residual[k] = part.measured()[k] - part_baseline.prediction[k];
+    const double part_sigma = noise_sigma(part_residual);
+    clock.stage("excerpt calibration");
+    const auto selected = forward_select(
+        part, part_baseline, static_cast<double>(part_residual.size()) * part_sigma * part_sigma,
+        options, d, clock);
+    if (!d.findings.empty()) {
+      current.effects = selected.effects;
+      current.values = selected.values;
+      current.sse = std::numeric_limits<double>::infinity();  // not yet simulated on every sample
+    }
+    d.notes.push_back("long recording (" + std::to_string(n) +
+                      " samples): candidates were "
+                      "screened, fitted and checked on samples " +
+                      std::to_string(d.selection.begin) + ":" + std::to_string(d.selection.end) +
+                      " (the " + std::to_string(d.selection.size()) +
+                      "-sample stretch with the largest baseline residual energy); the final "
+                      "joint re-fit and FIT use every sample");
+  } else {
+    current = forward_select(model, std::move(current), floor_sse, options, d, clock);
+  }
+
   // Re-fit all accepted effects together, with the nuisances free again (they were held while
   // the candidates were compared); where that does not improve, keep the last forward step's fit
   // (with its standard errors).
@@ -685,7 +770,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
     }
     current = std::move(refit);
   }
-  stage("joint re-fit");
+  clock.stage("joint re-fit");
   d.final_fit = current;
   d.final_fit_percent = fit_percent_of(y, current.prediction);
   d.final_stats = residual_statistics(model.recording(), rec.meta.drive, y, current.prediction);
@@ -827,6 +912,8 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
          {"fit_percent", c.screened ? nlohmann::json() : nlohmann::json(c.fit_percent)},
          {"screened", c.screened},
          {"delta_bic", c.delta_bic}});
+  if (d.selection.size() > 0)
+    out["selection_samples"] = {{"begin", d.selection.begin}, {"end", d.selection.end}};
   out["notes"] = d.notes;
   return out;
 }

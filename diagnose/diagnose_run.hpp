@@ -12,6 +12,7 @@
 #include "diagnose/diagnose_fit.hpp"
 #include "diagnose/diagnose_locate.hpp"
 #include "diagnose/diagnose_model.hpp"
+#include "lumped/metrics.hpp"
 #include "lumped/recording.hpp"
 
 namespace rheomag::diagnose {
@@ -33,6 +34,11 @@ struct DiagnoseOptions {
   int max_iterations = 15;       ///< Levenberg-Marquardt iterations per fit
   ProgressCallback progress;     ///< told each stage and candidate fit with its time (or none)
   int threads = 2;               ///< threads for Jacobian columns, grid points and held-out folds
+  /// Cost rule for long recordings: with more samples than this, candidates are screened,
+  /// fitted and checked on this many consecutive samples (the stretch with the largest baseline
+  /// residual energy); the baseline, the final joint re-fit and every reported FIT use all
+  /// samples. 0: always the whole recording.
+  std::size_t selection_samples = 15000;
   /// A fitted model as the baseline instead of the sidecar's rig (`--baseline MODEL.json`).
   std::optional<ModelBaseline> baseline_model;
 };
@@ -94,7 +100,9 @@ struct Diagnosis {
   Nuisance nuisance;                   ///< as calibrated in the baseline
   std::vector<MismatchWindow> mismatch;
   ResidualStats baseline_stats;
-  std::vector<CandidateScore> candidates;
+  std::vector<CandidateScore> candidates;  ///< scored on `selection` when it is not empty
+  /// Samples the candidates were selected on (a long recording's excerpt; empty: all of them).
+  lumped::SampleRange selection;
   std::vector<Finding> findings;
   ModelFit final_fit;
   double final_fit_percent = 0.0;
