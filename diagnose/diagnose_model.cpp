@@ -63,7 +63,8 @@ double median_interval(const std::vector<double>& t) {
 
 namespace {}  // namespace
 
-DiagnosisModel::DiagnosisModel(const lumped::Recording& rec, const ModelBaseline* fitted)
+DiagnosisModel::DiagnosisModel(const lumped::Recording& rec, const ModelBaseline* fitted,
+                               DriveSampling sampling)
     : rec_(rec) {
   if (fitted) {
     from_fitted_model(*fitted);
@@ -190,6 +191,7 @@ DiagnosisModel::DiagnosisModel(const lumped::Recording& rec, const ModelBaseline
     include("orientation", o->second, "", "sidecar [rig] orientation");
   }
   drive_noise_and_filter();
+  if (sampling == DriveSampling::held && can_hold()) hold_drives();
   // The pre-yield smoothness is a nuisance only where the flow reverses (beyond its noise).
   if (base_.kind != RigKind::coil_bench) {
     const auto& v = rec_.column("velocity");
@@ -225,6 +227,20 @@ void DiagnosisModel::drive_noise_and_filter() {
       rec_.columns["velocity"] = std::move(smooth.values);
       velocity_filter_bandwidth_ = smooth.bandwidth;
     }
+  }
+}
+
+void DiagnosisModel::hold_drives() {
+  sampling_ = DriveSampling::held;
+  base_.held_drives = {base_.driver_mode == DriverMode::voltage ? base_.voltage_column
+                                                                : std::string("current")};
+  // A motion sample recorded under the same convention stands for its interval too: the mean
+  // over it, i.e. the motion at the interval's middle, half a sample after its time stamp.
+  for (const char* c : {"velocity", "displacement"}) {
+    auto it = rec_.columns.find(c);
+    if (it == rec_.columns.end() || base_.kind == RigKind::coil_bench) continue;
+    auto& v = it->second;
+    for (std::size_t k = v.size() - 1; k > 0; --k) v[k] = 0.5 * (v[k] + v[k - 1]);
   }
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/enum_names.hpp"
 #include "lumped/fit_model_json.hpp"
 #include "lumped/recording.hpp"
 #include "lumped/rig_model.hpp"
@@ -29,6 +30,18 @@ enum class Effect {
   pre_yield  ///< the MR fluid's elastic pre-yield branch: a linear compliance before the plug
              ///< yields
 };
+
+/// How the recorder's drive samples act on the rig between samples: a nuisance the baseline
+/// calibrates (it picks the convention that fits better), never physics.
+enum class DriveSampling {
+  linear,  ///< instantaneous samples, linear in between
+  held     ///< each sample stands for the interval it begins: the coil drive held (zero-order
+           ///< hold), the motion (which cannot step) read at the interval's middle
+};
+
+/// "linear" | "held".
+inline constexpr EnumNames<DriveSampling, 2> kDriveSamplingNames{
+    {{{DriveSampling::linear, "linear"}, {DriveSampling::held, "held"}}}};
 
 /// Name of an effect in the diagnosis output ("compressibility", ...).
 std::string effect_name(Effect effect);
@@ -101,7 +114,15 @@ class DiagnosisModel {
   /// output, parameters held, output scale and offset calibrated; candidates as blocks on its
   /// inputs and output). Throws InputError naming a missing key, or a model of another rig kind
   /// or other drive/output columns than the recording.
-  explicit DiagnosisModel(const lumped::Recording& rec, const ModelBaseline* fitted = nullptr);
+  /// With `sampling` held, the coil drive column is a zero-order hold and the motion columns
+  /// are read half a sample later (a sidecar rig with a coil drive only; ignored otherwise).
+  explicit DiagnosisModel(const lumped::Recording& rec, const ModelBaseline* fitted = nullptr,
+                          DriveSampling sampling = DriveSampling::linear);
+
+  /// The drive sampling convention this model applies.
+  DriveSampling sampling() const { return sampling_; }
+  /// True when the held convention can apply (a sidecar rig with a recorded coil drive).
+  bool can_hold() const { return !fitted_ && !constant_field_; }
 
   /// Effects that can show in this recording (e.g. friction only on a damper's force, coil
   /// effects only when the coil is voltage driven).
@@ -185,6 +206,9 @@ class DiagnosisModel {
   double velocity_filter_bandwidth_ = 0.0;
   bool smoothing_nuisance_ = false;  ///< the flow reverses: the pre-yield smoothness is calibrated
   bool fe_chain_ = false;            ///< the static map is the FE chain of [valve] case
+  DriveSampling sampling_ = DriveSampling::linear;
+  /// Applies the held convention to the drives (RigSpec::held_drives, motion read later).
+  void hold_drives();
   std::shared_ptr<const lumped::FitModel> fitted_;  ///< the fitted-model baseline, if any
   std::string field_column_;  ///< fitted baseline: the model's field drive column ("" if none)
   double model_sign_ = 1.0;   ///< fitted baseline: sign of its output's correlation with velocity

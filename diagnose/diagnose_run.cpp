@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <thread>
 
@@ -434,14 +435,23 @@ Nuisance nuisance_of(const DiagnosisModel& model, const ModelFit& fit) {
   }
   u.delay_samples = u.delay / model.sample_interval();
   if (model.peak_flow() > 0.0) u.preyield_fraction = u.preyield_flow / model.peak_flow();
+  u.drive_sampling = model.sampling();
   const double frac = std::abs(u.delay_samples);
-  u.sampling = frac < 0.25
-                   ? "output and drives aligned (smooth, linearly interpolated drives)"
+  u.sampling =
+      std::string(u.drive_sampling == DriveSampling::held
+                      ? "drives held between samples (the coil drive a zero-order hold, each "
+                        "sample standing for the interval it begins; the motion read at the "
+                        "interval's middle)"
+                      : "drives linear between samples") +
+      "; " +
+      (frac < 0.25 ? std::string("output and drives aligned")
                    : std::string(u.delay_samples > 0 ? "output behind" : "output ahead of") +
-                         " the drives by " + fmt(frac, 2) +
-                         " samples: channel skew, or drives recorded as held samples "
-                         "(a zero-order hold acts as half a sample); calibrated, not "
-                         "physics";
+                         " the drives by " + fmt(frac, 2) + " samples (channel skew" +
+                         (u.drive_sampling == DriveSampling::linear
+                              ? ", or drives recorded as held samples, which a linear reading "
+                                "sees half a sample late)"
+                              : ")")) +
+      "; calibrated, not physics";
   return u;
 }
 
@@ -692,25 +702,40 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, double fl
 Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options) {
   Clock clock(options.progress);
   const ModelBaseline* fitted = options.baseline_model ? &*options.baseline_model : nullptr;
-  DiagnosisModel model(rec, fitted);
-  check_informative(model);
+  auto chosen = std::make_unique<DiagnosisModel>(rec, fitted);
+  check_informative(*chosen);
   Diagnosis d;
   d.recording = rec.csv_path;
+
+  // 1. Baseline: calibrate the static parameters and nuisances, with the drive sampling
+  // convention (linear or held between samples) that fits better.
+  FitSettings calib;
+  calib.max_iterations = 50;
+  calib.threads = options.threads;
+  auto calibrate = [&](const DiagnosisModel& m) {
+    return fit_model(m, {}, nuisance_start(m, options.threads), calib);
+  };
+  d.baseline = calibrate(*chosen);
+  double other_fit_percent = std::numeric_limits<double>::quiet_NaN();
+  if (chosen->can_hold()) {
+    auto held = std::make_unique<DiagnosisModel>(rec, fitted, DriveSampling::held);
+    auto held_fit = calibrate(*held);
+    if (held_fit.sse < d.baseline.sse) {
+      std::swap(chosen, held);
+      std::swap(d.baseline, held_fit);
+    }
+    other_fit_percent = fit_percent_of(chosen->measured(), held_fit.prediction);
+  }
+  const DiagnosisModel& model = *chosen;
   d.output_column = model.output_column();
   d.t = rec.t;
   d.measured = model.measured();
   const auto& y = model.measured();
   const std::size_t n = y.size();
-
-  // 1. Baseline: calibrate the static parameters.
-  std::vector<double> start = nuisance_start(model, options.threads);
-  FitSettings calib;
-  calib.max_iterations = 50;
-  calib.threads = options.threads;
-  d.baseline = fit_model(model, {}, start, calib);
   d.baseline_fit_percent = fit_percent_of(y, d.baseline.prediction);
   d.includes = model.includes();
   d.nuisance = nuisance_of(model, d.baseline);
+  d.nuisance.sampling_fit_gain = d.baseline_fit_percent - other_fit_percent;
   clock.stage("baseline calibration");
 
   // 2. Locate.
@@ -729,7 +754,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
   ModelFit current = d.baseline;
   if (options.selection_samples > 0 && n > options.selection_samples) {
     d.selection = representative_excerpt(residual, options.selection_samples);
-    const DiagnosisModel part(lumped::excerpt(rec, d.selection), fitted);
+    const DiagnosisModel part(lumped::excerpt(rec, d.selection), fitted, model.sampling());
     auto part_calib = calib;
     const auto part_baseline = fit_model(part, {}, d.baseline.values, part_calib);
     std::vector<double> part_residual(d.selection.size());
@@ -778,6 +803,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
   d.final_mismatch = locate_mismatch(model.recording(), residual);
   d.unexplained = unexplained_of(residual, d.baseline.sse, sigma);
   d.final_nuisance = nuisance_of(model, current);
+  d.final_nuisance.sampling_fit_gain = d.nuisance.sampling_fit_gain;
   std::size_t offset = model.static_params().size();
   for (auto& f : d.findings) {
     for (const auto& p : model.effect_params(f.effect)) {
@@ -811,11 +837,15 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
 namespace {
 
 nlohmann::json nuisance_json(const Nuisance& u) {
-  nlohmann::json j = {{"delay", u.delay},
-                      {"delay_samples", u.delay_samples},
-                      {"sampling", u.sampling},
-                      {"drive_noise", u.drive_noise},
-                      {"velocity_filter_bandwidth", u.velocity_filter_bandwidth}};
+  nlohmann::json j = {
+      {"delay", u.delay},
+      {"delay_samples", u.delay_samples},
+      {"sampling", u.sampling},
+      {"drive_sampling", kDriveSamplingNames.name(u.drive_sampling)},
+      {"sampling_fit_gain",
+       std::isfinite(u.sampling_fit_gain) ? nlohmann::json(u.sampling_fit_gain) : nlohmann::json()},
+      {"drive_noise", u.drive_noise},
+      {"velocity_filter_bandwidth", u.velocity_filter_bandwidth}};
   if (u.preyield_flow > 0.0) {
     j["preyield_flow"] = u.preyield_flow;
     j["preyield_fraction_of_peak_flow"] = u.preyield_fraction;

@@ -2,6 +2,7 @@
 // The diagnosis of one recording: calibrate the baseline, locate the mismatch, forward-select
 // candidate physics (held-out blocks + BIC), re-fit all accepted effects together.
 
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -73,7 +74,10 @@ struct Finding {
 struct Nuisance {
   double delay = 0.0;          ///< [s] output behind the drives (negative: ahead)
   double delay_samples = 0.0;  ///< the same in sample intervals
-  std::string sampling;        ///< what the delay says about the drive's sampling convention
+  std::string sampling;        ///< the drive sampling convention and what the delay says
+  DriveSampling drive_sampling = DriveSampling::linear;  ///< the convention calibrated
+  /// FIT points the calibrated convention gains over the other (NaN: only one applies)
+  double sampling_fit_gain = std::numeric_limits<double>::quiet_NaN();
   double preyield_flow = 0.0;  ///< [m^3/s] width of the static map's plug switch (0: not fitted)
   double preyield_fraction = 0.0;             ///< preyield_flow / peak flow
   std::map<std::string, double> drive_noise;  ///< column -> white-noise std (SI)
