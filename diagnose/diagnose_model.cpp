@@ -61,7 +61,23 @@ double median_interval(const std::vector<double>& t) {
   return dt[dt.size() / 2];
 }
 
-namespace {}  // namespace
+namespace {
+
+/// True if `u` moves within one sample interval by more than 5 % of its range and more than ten
+/// times its median move per interval (a step, not noise) somewhere.
+bool steps(const std::vector<double>& u) {
+  if (u.size() < 3) return false;
+  std::vector<double> move(u.size() - 1);
+  for (std::size_t k = 0; k + 1 < u.size(); ++k) move[k] = std::abs(u[k + 1] - u[k]);
+  auto sorted = move;
+  const auto mid = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
+  std::nth_element(sorted.begin(), mid, sorted.end());
+  const auto [lo, hi] = std::minmax_element(u.begin(), u.end());
+  const double step = std::max(0.05 * (*hi - *lo), 10.0 * *mid);
+  return step > 0.0 && std::any_of(move.begin(), move.end(), [&](double m) { return m > step; });
+}
+
+}  // namespace
 
 DiagnosisModel::DiagnosisModel(const lumped::Recording& rec, const ModelBaseline* fitted,
                                DriveSampling sampling)
@@ -191,6 +207,9 @@ DiagnosisModel::DiagnosisModel(const lumped::Recording& rec, const ModelBaseline
     include("orientation", o->second, "", "sidecar [rig] orientation");
   }
   drive_noise_and_filter();
+  coil_drive_steps_ = !constant_field_ && steps(rec_.column(base_.driver_mode == DriverMode::voltage
+                                                                ? base_.voltage_column
+                                                                : std::string("current")));
   if (sampling == DriveSampling::held && can_hold()) hold_drives();
   // The pre-yield smoothness is a nuisance only where the flow reverses (beyond its noise).
   if (base_.kind != RigKind::coil_bench) {
@@ -377,8 +396,12 @@ std::vector<ParamDef> DiagnosisModel::static_params() const {
   // Nuisances: a delay of up to two samples between the output and the drives (channel skew,
   // and a zero-order-held drive, which acts as half a sample), and the static map's pre-yield
   // smoothness (width of its plug switch, a fraction of the peak flow).
+  // The held reading already puts the motion half a sample later: its delay range is shifted by
+  // half a sample so that both conventions span the same timings of the recorded channels.
   const double dt = sample_interval_;
-  p.push_back({"delay", 0.0, -kMaxDelaySamples * dt, kMaxDelaySamples * dt, false, dt});
+  const double shift = held_delay_shift() * dt;
+  p.push_back(
+      {"delay", 0.0, -kMaxDelaySamples * dt + shift, kMaxDelaySamples * dt + shift, false, dt});
   if (smoothing_nuisance_) {
     const double q = peak_flow_;
     p.push_back({"preyield_flow",
@@ -560,14 +583,15 @@ double DiagnosisModel::best_delay(const std::vector<double>& undelayed, std::vec
   };
   constexpr int kSteps = 10;  // per sample interval
   const int m = static_cast<int>(kMaxDelaySamples) * kSteps;
+  const int shift = static_cast<int>(std::lround(held_delay_shift() * kSteps));
   std::vector<double> e(static_cast<std::size_t>(2 * m + 1));
   std::size_t best = 0;
   for (int i = -m; i <= m; ++i) {
     const auto k = static_cast<std::size_t>(i + m);
-    e[k] = error(dt * i / kSteps);
+    e[k] = error(dt * (i + shift) / kSteps);
     if (e[k] < e[best]) best = k;
   }
-  double delay = dt * (static_cast<double>(best) - m) / kSteps;
+  double delay = dt * (static_cast<double>(best) - m + shift) / kSteps;
   sse = e[best];
   if (best > 0 && best + 1 < e.size()) {
     const double curvature = e[best - 1] - 2.0 * e[best] + e[best + 1];

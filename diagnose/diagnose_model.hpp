@@ -121,8 +121,12 @@ class DiagnosisModel {
 
   /// The drive sampling convention this model applies.
   DriveSampling sampling() const { return sampling_; }
-  /// True when the held convention can apply (a sidecar rig with a recorded coil drive).
-  bool can_hold() const { return !fitted_ && !constant_field_; }
+  /// [samples] shift of the delay's range: -1/2 under the held convention (its reading of the
+  /// motion is already half a sample later), 0 otherwise.
+  double held_delay_shift() const { return sampling_ == DriveSampling::held ? -0.5 : 0.0; }
+  /// True when the held convention can show (a sidecar rig whose recorded coil drive steps:
+  /// on a coil drive without steps it would only be half a sample more delay of the motion).
+  bool can_hold() const { return !fitted_ && !constant_field_ && coil_drive_steps_; }
 
   /// Effects that can show in this recording (e.g. friction only on a damper's force, coil
   /// effects only when the coil is voltage driven).
@@ -207,6 +211,7 @@ class DiagnosisModel {
   bool smoothing_nuisance_ = false;  ///< the flow reverses: the pre-yield smoothness is calibrated
   bool fe_chain_ = false;            ///< the static map is the FE chain of [valve] case
   DriveSampling sampling_ = DriveSampling::linear;
+  bool coil_drive_steps_ = false;  ///< the coil drive moves by a step within one interval
   /// Applies the held convention to the drives (RigSpec::held_drives, motion read later).
   void hold_drives();
   std::shared_ptr<const lumped::FitModel> fitted_;  ///< the fitted-model baseline, if any
