@@ -16,8 +16,8 @@
 
 namespace {
 
-using rheomag::diagnose::Diagnosis;
 using rheomag::diagnose::DiagnoseOptions;
+using rheomag::diagnose::Diagnosis;
 using rheomag::diagnose::Effect;
 using rheomag::diagnose::effect_name;
 using rheomag::lumped::RigKind;
@@ -27,14 +27,9 @@ using rheomag::test::make_recording;
 
 void print(const char* what, const Diagnosis& d) {
   std::cout << what << ": baseline FIT " << d.baseline_fit_percent << ", final "
-            << d.final_fit_percent << ", selection " << d.selection.begin << ":"
-            << d.selection.end << "\n";
-  for (const auto& f : d.findings) {
-    std::cout << "  " << effect_name(f.effect);
-    for (std::size_t j = 0; j < f.params.size(); ++j)
-      std::cout << " " << f.param_names[j] << "=" << f.params[j];
-    std::cout << "\n";
-  }
+            << d.final_fit_percent << ", selection " << d.selection.begin << ":" << d.selection.end
+            << "\n";
+  rheomag::test::print_findings(d);
 }
 
 /// The field lags are one block: either name counts for the other.
@@ -89,9 +84,9 @@ TEST(DiagnoseLong, ExcerptAvoidsTheRigAtRest) {
   auto truth = bypass_rig();
   truth.kind = RigKind::damper;
   truth.mr_response_time = 0.03;
-  auto in = drive(6.0, 300.0,
-                  {"displacement=sine:amplitude=0.025,frequency=1",
-                   "current=steps:levels=0/1/0.5,period=0.3"});
+  auto in = drive(
+      6.0, 300.0,
+      {"displacement=sine:amplitude=0.025,frequency=1", "current=steps:levels=0/1/0.5,period=0.3"});
   const std::size_t moving = in.t.size() / 3;
   const double x_end = in.columns.at("displacement")[moving - 1];
   for (std::size_t k = moving; k < in.t.size(); ++k) {
