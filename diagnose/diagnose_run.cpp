@@ -524,9 +524,7 @@ class Clock {
   }
   /// [s] since the run started.
   double elapsed() const { return since(start_); }
-  /// True when somebody listens.
-  bool listening() const { return static_cast<bool>(progress_); }
-  /// Reports `event` (its elapsed time set here).
+  /// Reports `event` to the listener, if any (its elapsed time set here).
   void report(ProgressEvent event) const {
     if (!progress_) return;
     event.elapsed = elapsed();
@@ -607,19 +605,16 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, double fl
         if (!(grid_sse < current.sse)) {
           const double db = bic_now - bic(grid_sse, n, s.size());
           d.candidates.push_back({c, step, 0.0, db, true});
-          if (clock.listening())
-            clock.report({"step " + std::to_string(step + 1) + " " + effect_name(c), 0.0, 0.0,
-                          clock.elapsed(), "screened out (no decade of its parameter helps)"});
+          clock.report({"step " + std::to_string(step + 1) + " " + effect_name(c), 0.0, 0.0, 0.0,
+                        "screened out (no decade of its parameter helps)"});
           continue;
         }
         auto candidate_settings = settings;
         candidate_settings.fixed = held_in_candidates(model, effects, current.values);
         auto f = fit_model(model, effects, s, candidate_settings);
         const double db = bic_now - bic(f.sse, n, f.values.size());
-        if (clock.listening())
-          clock.report({"step " + std::to_string(step + 1) + " " + effect_name(c), 0.0, 0.0,
-                        clock.elapsed(),
-                        "dBIC " + num(db) + " in " + num(Clock::since(started)) + " s"});
+        clock.report({"step " + std::to_string(step + 1) + " " + effect_name(c), 0.0, 0.0, 0.0,
+                      "dBIC " + num(db) + " in " + num(Clock::since(started)) + " s"});
         d.candidates.push_back({c, step, fit_percent_of(y, f.prediction), db});
         tried.push_back({c, std::move(f), db});
       } catch (const ConvergenceError&) {
@@ -755,8 +750,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
   if (options.selection_samples > 0 && n > options.selection_samples) {
     d.selection = representative_excerpt(residual, options.selection_samples);
     const DiagnosisModel part(lumped::excerpt(rec, d.selection), fitted, model.sampling());
-    auto part_calib = calib;
-    const auto part_baseline = fit_model(part, {}, d.baseline.values, part_calib);
+    const auto part_baseline = fit_model(part, {}, d.baseline.values, calib);
     std::vector<double> part_residual(d.selection.size());
     for (std::size_t k = 0; k < part_residual.size(); ++k)
       part_residual[k] = part.measured()[k] - part_baseline.prediction[k];
@@ -771,8 +765,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
       current.sse = std::numeric_limits<double>::infinity();  // not yet simulated on every sample
     }
     d.notes.push_back("long recording (" + std::to_string(n) +
-                      " samples): candidates were "
-                      "screened, fitted and checked on samples " +
+                      " samples): candidates were screened, fitted and checked on samples " +
                       std::to_string(d.selection.begin) + ":" + std::to_string(d.selection.end) +
                       " (the " + std::to_string(d.selection.size()) +
                       "-sample stretch with the largest baseline residual energy); the final "
