@@ -249,6 +249,12 @@ void DiagnosisModel::drive_noise_and_filter() {
   }
 }
 
+DiagnosisModel DiagnosisModel::held() const {
+  DiagnosisModel m = *this;
+  if (m.can_hold() && m.sampling_ != DriveSampling::held) m.hold_drives();
+  return m;
+}
+
 void DiagnosisModel::hold_drives() {
   sampling_ = DriveSampling::held;
   base_.held_drives = {base_.driver_mode == DriverMode::voltage ? base_.voltage_column

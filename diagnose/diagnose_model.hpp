@@ -119,6 +119,10 @@ class DiagnosisModel {
   explicit DiagnosisModel(const lumped::Recording& rec, const ModelBaseline* fitted = nullptr,
                           DriveSampling sampling = DriveSampling::linear);
 
+  /// This model under the held convention (a copy: the static map, e.g. a tabulated FE chain,
+  /// is not built again); unchanged when the convention cannot apply (can_hold()).
+  DiagnosisModel held() const;
+
   /// The drive sampling convention this model applies.
   DriveSampling sampling() const { return sampling_; }
   /// [samples] shift of the delay's range: -1/2 under the held convention (its reading of the

@@ -713,7 +713,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
   d.baseline = calibrate(*chosen);
   double other_fit_percent = std::numeric_limits<double>::quiet_NaN();
   if (chosen->can_hold()) {
-    auto held = std::make_unique<DiagnosisModel>(rec, fitted, DriveSampling::held);
+    auto held = std::make_unique<DiagnosisModel>(chosen->held());
     auto held_fit = calibrate(*held);
     if (held_fit.sse < d.baseline.sse) {
       std::swap(chosen, held);
