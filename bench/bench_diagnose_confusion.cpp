@@ -2,15 +2,22 @@
 // recordings, each with one concealed effect, a pair of them, or none; random parameters,
 // excitation, noise level, sidecar map error and rig kind. With --nuisances 1 (the default) the
 // recordings also carry what real recorders add and is not physics: noise on the drive columns
-// (0.1-0.5 % of their spread), held or smooth drive sampling, a channel skew of 0-1 sample, a
+// (0.1-0.5 % of their spread), held or smooth drive sampling (held: the coil drive steps at the
+// samples, the motion is recorded as the mean over the interval each sample begins), a channel
+// skew of 0-1 sample, a
 // pre-yield smoothing of 0.5-3 % of the peak flow, and a sidecar stating the true coil
 // inductance on half the clean voltage-driven draws. The diagnosis sees only the recording.
 // Prints one line per draw as it finishes, then the matrix truth x first named effect, the share
 // named right, the share with any false finding and the share whose final FIT is within 2 points
 // of the achievable ceiling (the truth driven by the recorded, noisy inputs).
 // Not a Google Benchmark (it takes minutes):
-//   bench_diagnose_confusion [--draws N] [--seed S] [--threads T] [--only NAME] [--csv FILE]
-//                            [--nuisances 0|1]
+//   bench_diagnose_confusion [--draws N] [--seed S] [--threads T] [--only NAME] [--index I]
+//                            [--csv FILE] [--nuisances 0|1] [--visible 0|1]
+// --visible 1 (the default) makes every concealed effect at least barely visible: the part of
+// its signature on the recording (truth with it minus truth without it, same drives and
+// nuisances) that the baseline's calibration cannot reproduce must have an rms of at least the
+// output noise rms; an effect below that is redrawn larger (see make_visible).
+// RHEOMAG_CONFUSION_NOTES=1 prints each diagnosis's candidate scores and notes.
 
 #include <algorithm>
 #include <atomic>
@@ -27,6 +34,8 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <Eigen/Dense>
 
 #include "diagnose/diagnose_run.hpp"
 #include "lumped/metrics.hpp"
@@ -58,19 +67,25 @@ struct Draw {
   int index = 0;
   lumped::RigSpec spec;
   lumped::Recording drive;
-  double noise_fraction = 0.0;    ///< noise std / output std
-  bool nuisances = true;          ///< drive noise, held sampling, skew, stated inductance
-  bool held = false;              ///< drives recorded as held samples
-  double skew = 0.0;              ///< [samples] drive channels sampled this much later
-  double drive_noise = 0.0;       ///< drive noise std / drive std
+  double noise_fraction = 0.0;  ///< noise std / output std
+  bool nuisances = true;        ///< drive noise, held sampling, skew, stated inductance
+  bool held = false;         ///< coil drive held between samples, motion recorded as interval means
+  double skew = 0.0;         ///< [samples] drive channels sampled this much later
+  double drive_noise = 0.0;  ///< drive noise std / drive std
   bool state_inductance = false;  ///< the sidecar states the true inductance
   double map_error = 0.1;         ///< sidecar map off by up to this factor
   std::string description;
+  unsigned seed = 0;       ///< the draw's own seed (a redraw takes the next one)
+  int enlarged = 0;        ///< effects whose size was redrawn larger to become visible
+  int redrawn = 0;         ///< whole draws redrawn because an effect stayed invisible
+  std::string visibility;  ///< each effect's signature rms / output noise rms
 };
 
 /// Outcome of one diagnosed draw.
 struct Outcome {
-  std::string truth, named, all_named, description;
+  std::string truth, named, all_named, description, visibility;
+  std::string notes;  ///< candidate scores and notes (RHEOMAG_CONFUSION_NOTES set)
+  int enlarged = 0, redrawn = 0;
   bool ambiguous = false, truth_in_ambiguous = false;
   bool right = false;          ///< every concealed effect named (either name for the field lag)
   bool false_finding = false;  ///< something named that was not concealed
@@ -134,6 +149,7 @@ Draw make_draw(const std::string& truth, int index, unsigned seed, bool nuisance
   Draw d;
   d.truth = truth;
   d.index = index;
+  d.seed = seed;
   d.nuisances = nuisances;
   if (truth == "pair")
     d.effects = pair_for(rng);
@@ -280,12 +296,17 @@ double at(const std::vector<double>& t, const std::vector<double>& v, double tt)
   return (1.0 - w) * v[j] + w * v[j + 1];
 }
 
-/// What the recorder writes: the truth simulated on a 4x finer time base (drives smooth, or held
-/// between the recorder's samples), the output at the recorder's samples, the drives sampled
-/// `skew` samples late with noise.
-lumped::Recording record(const Draw& draw, std::mt19937& rng) {
-  if (!draw.nuisances) return lumped::simulate_rig(draw.spec, draw.drive);
-  constexpr int kFine = 4;
+constexpr int kFine = 4;  ///< the truth's time base is this much finer than the recorder's
+
+/// A mechanical drive column (the piston's motion): smooth in time whatever the recorder does.
+bool mechanical(const std::string& column) {
+  return column == "velocity" || column == "displacement";
+}
+
+/// The drives acting on the rig: with nuisances on a 4x finer time base, smooth or held between
+/// the recorder's samples; without, the recorder's own.
+lumped::Recording rig_drives(const Draw& draw) {
+  if (!draw.nuisances) return draw.drive;
   const auto& tc = draw.drive.t;
   const double dt = tc[1] - tc[0];
   lumped::Recording fine;
@@ -295,12 +316,27 @@ lumped::Recording record(const Draw& draw, std::mt19937& rng) {
   for (const auto& [name, v] : draw.drive.columns) {
     auto& out = fine.columns[name];
     for (double tt : fine.t) {
-      // Held: the value of the last recorder sample; smooth: the drive between samples.
-      const double th =
-          draw.held ? tc.front() + dt * std::floor((tt - tc.front()) / dt + 1e-9) : tt;
+      // Held: the value of the last recorder sample (a DAC's zero-order hold on the coil's
+      // current or voltage); smooth: the drive between samples. A piston's motion is always
+      // smooth (a held velocity would step, with an impulsive acceleration); its `held`
+      // convention is on the recorder's side (record()).
+      const double th = draw.held && !mechanical(name)
+                            ? tc.front() + dt * std::floor((tt - tc.front()) / dt + 1e-9)
+                            : tt;
       out.push_back(at(tc, v, th));
     }
   }
+  return fine;
+}
+
+/// What the recorder writes: the truth simulated on the rig's drives (above), the output at the
+/// recorder's samples, the drives sampled `skew` samples late with noise (a held motion column
+/// as the mean over the interval beginning at the sample).
+lumped::Recording record(const Draw& draw, std::mt19937& rng) {
+  if (!draw.nuisances) return lumped::simulate_rig(draw.spec, draw.drive);
+  const auto& tc = draw.drive.t;
+  const double dt = tc[1] - tc[0];
+  const auto fine = rig_drives(draw);
   const auto truth = lumped::simulate_rig(draw.spec, fine);
   lumped::Recording rec = truth;
   rec.t = tc;
@@ -314,20 +350,222 @@ lumped::Recording record(const Draw& draw, std::mt19937& rng) {
     const auto& source = fine.columns.at(c);
     const double sigma = draw.drive_noise * spread(draw.drive.columns.at(c));
     std::normal_distribution<double> noise(0.0, sigma);
-    for (std::size_t k = 0; k < tc.size(); ++k)
-      v[k] = at(fine.t, source, tc[k] + draw.skew * dt) + (sigma > 0.0 ? noise(rng) : 0.0);
+    for (std::size_t k = 0; k < tc.size(); ++k) {
+      const double tk = tc[k] + draw.skew * dt;
+      // A held convention on a smooth motion: the recorder writes the mean over the interval
+      // that the sample stands for, the one that begins at it (as a held coil drive's sample
+      // stands for its value until the next), so both drive channels are half a sample early.
+      double value = at(fine.t, source, tk);
+      if (draw.held && mechanical(c)) {
+        value = 0.0;
+        for (int f = 0; f <= kFine; ++f)
+          value +=
+              (f == 0 || f == kFine ? 0.5 : 1.0) / kFine * at(fine.t, source, tk + dt * f / kFine);
+      }
+      v[k] = value + (sigma > 0.0 ? noise(rng) : 0.0);
+    }
   }
   return rec;
 }
 
+/// A concealed effect's size parameter and its drawn range; `larger_up`: a larger value is a
+/// larger effect (false for the Duhem a, whose loop half width is (1 - d)/a, and the pre-yield
+/// bulk modulus, whose compliance is V/K).
+struct SizeRange {
+  double lo, hi;
+  bool larger_up = true;
+};
+
+SizeRange size_range(const std::string& e) {
+  if (e == "compressibility") return {5e-8, 1e-6};
+  if (e == "fluid_inertia") return {2e8, 2e9};
+  if (e == "magnetic_hysteresis") return {2.0, 10.0, false};
+  if (e == "eddy_currents" || e == "mr_response_time") return {0.008, 0.06};
+  if (e == "coil_inductance") return {0.05, 0.9};
+  if (e == "coil_heating") return {1.0, 8.0};
+  if (e == "pre_yield") return {3e6, 1e8, false};
+  return {40.0, 400.0};  // friction
+}
+
+/// Sets the size parameter of concealed effect `e` in `s`.
+void set_size(lumped::RigSpec& s, const std::string& e, double v) {
+  if (e == "compressibility") s.compressibility->air_volume = v;
+  if (e == "fluid_inertia") s.inertance = v;
+  if (e == "magnetic_hysteresis")
+    s.magnetic_hysteresis = diagnose::duhem_field(v, s.magnetic_hysteresis->d);
+  if (e == "eddy_currents") s.eddy_time_constant = v;
+  if (e == "mr_response_time") s.mr_response_time = v;
+  if (e == "coil_inductance") s.coil.inductance = v;
+  if (e == "coil_heating") s.coil_heating->thermal_resistance = v;
+  if (e == "pre_yield") s.compressibility->bulk_modulus = v;
+  if (e == "friction") s.coulomb_force = v;
+}
+
+double size_of(const lumped::RigSpec& s, const std::string& e) {
+  if (e == "compressibility") return s.compressibility->air_volume;
+  if (e == "fluid_inertia") return *s.inertance;
+  if (e == "magnetic_hysteresis") return s.magnetic_hysteresis->a;
+  if (e == "eddy_currents") return *s.eddy_time_constant;
+  if (e == "mr_response_time") return *s.mr_response_time;
+  if (e == "coil_inductance") return s.coil.inductance;
+  if (e == "coil_heating") return s.coil_heating->thermal_resistance;
+  if (e == "pre_yield") return s.compressibility->bulk_modulus;
+  return *s.coulomb_force;
+}
+
+/// `s` without concealed effect `e` (everything else, nuisances included, unchanged).
+lumped::RigSpec without(lumped::RigSpec s, const std::string& e) {
+  const lumped::ChamberBlock stiff;
+  if (e == "compressibility") s.compressibility->air_volume = 0.0;
+  if (e == "pre_yield") s.compressibility->bulk_modulus = stiff.bulk_modulus;
+  if ((e == "compressibility" || e == "pre_yield") && s.compressibility->air_volume == 0.0 &&
+      s.compressibility->bulk_modulus == stiff.bulk_modulus)
+    s.compressibility.reset();
+  if (e == "fluid_inertia") s.inertance.reset();
+  if (e == "magnetic_hysteresis") s.magnetic_hysteresis.reset();
+  if (e == "eddy_currents") s.eddy_time_constant.reset();
+  if (e == "mr_response_time") s.mr_response_time.reset();
+  if (e == "coil_inductance") s.coil.inductance = 0.0;
+  if (e == "coil_heating") s.coil_heating.reset();
+  if (e == "friction") s.coulomb_force.reset();
+  return s;
+}
+
+/// "Barely visible": the part of a concealed effect's signature on the recording (the truth with
+/// it minus the truth without it, on the same drives with the same nuisances, at the recorder's
+/// samples) that the baseline's own calibration cannot reproduce must have an rms of at least
+/// this many output-noise standard deviations. The calibration is linearised about the truth
+/// without the effect: the map's yield scale and viscous resistance (coil bench: the coil
+/// resistance), the damper's force offset, the output delay (d/dt of the output) and the
+/// pre-yield smoothing width; the signature is projected off their span (least squares).
+constexpr double kVisible = 1.0;
+
+/// Signature of one concealed effect: rms of the whole signature and of its part beyond the
+/// baseline's calibration, both over the output noise rms.
+struct Visibility {
+  double raw = 0.0, beyond = 0.0;
+};
+
+/// Visibility of each concealed effect of `draw`.
+std::vector<Visibility> visibility(const Draw& draw) {
+  const auto fine = rig_drives(draw);
+  const std::string out = lumped::rig_output_column(draw.spec);
+  const std::size_t step = draw.nuisances ? kFine : 1;
+  const std::size_t n = draw.drive.t.size();
+  const double dt_fine = fine.t[1] - fine.t[0];
+  auto simulate = [&](const lumped::RigSpec& s) {
+    return lumped::simulate_rig(s, fine).columns.at(out);
+  };
+  auto sampled = [&](const std::vector<double>& v) {
+    Eigen::VectorXd y(static_cast<Eigen::Index>(n));
+    for (std::size_t k = 0; k < n; ++k) y[static_cast<Eigen::Index>(k)] = v[k * step];
+    return y;
+  };
+  const Eigen::VectorXd y = sampled(simulate(draw.spec));
+  const double mean = y.mean();
+  const double sigma = draw.noise_fraction * std::sqrt((y.array() - mean).square().mean());
+  std::vector<Visibility> result;
+  for (const auto& e : draw.effects) {
+    const auto reference = without(draw.spec, e);
+    const auto fine0 = simulate(reference);
+    const Eigen::VectorXd y0 = sampled(fine0);
+    const Eigen::VectorXd signature = y - y0;
+    // The baseline's calibration about the reference: one column per calibrated parameter.
+    std::vector<Eigen::VectorXd> columns;
+    auto perturbed = [&](auto change) {
+      auto s = reference;
+      change(s);
+      return Eigen::VectorXd(sampled(simulate(s)) - y0);
+    };
+    if (draw.spec.kind == RigKind::coil_bench) {
+      columns.push_back(perturbed([](lumped::RigSpec& s) { s.coil.resistance_20c *= 1.01; }));
+    } else {
+      columns.push_back(perturbed([](lumped::RigSpec& s) { s.valve.yield_scale *= 1.01; }));
+      columns.push_back(perturbed([](lumped::RigSpec& s) { s.valve.viscous_resistance *= 1.01; }));
+      columns.push_back(perturbed([](lumped::RigSpec& s) { s.valve.regularisation_flow *= 1.1; }));
+      if (draw.spec.kind == RigKind::damper)
+        columns.push_back(Eigen::VectorXd::Ones(static_cast<Eigen::Index>(n)));
+    }
+    Eigen::VectorXd rate(static_cast<Eigen::Index>(n));
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t a = k * step > 0 ? k * step - 1 : 0;
+      const std::size_t b = std::min(k * step + 1, fine0.size() - 1);
+      rate[static_cast<Eigen::Index>(k)] =
+          (fine0[b] - fine0[a]) / (dt_fine * static_cast<double>(b - a));
+    }
+    columns.push_back(rate);
+    Eigen::MatrixXd basis(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(columns.size()));
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      const double norm = columns[c].norm();
+      basis.col(static_cast<Eigen::Index>(c)) =
+          norm > 0.0 ? Eigen::VectorXd(columns[c] / norm) : columns[c];
+    }
+    const Eigen::VectorXd beyond = signature - basis * basis.colPivHouseholderQr().solve(signature);
+    const double rn = std::sqrt(static_cast<double>(n));
+    result.push_back({signature.norm() / rn / sigma, beyond.norm() / rn / sigma});
+  }
+  return result;
+}
+
+/// Makes every concealed effect of the draw at least barely visible (kVisible): an invisible
+/// effect's size is redrawn log-uniformly between its drawn value and the large end of its
+/// range (up to kTries times, the last at the end itself); an effect still invisible at the end
+/// of its range (its excitation cannot show it) makes the whole draw redrawn from the next seed.
+/// The counts are kept in the draw and reported.
+Draw make_visible(Draw d, Draw (*redraw)(const std::string&, int, unsigned, bool)) {
+  constexpr int kTries = 6, kRedraws = 20;
+  std::mt19937 rng(d.seed ^ 0x5eedu);
+  int redrawn = 0, enlarged = 0;
+  for (int r = 0; r <= kRedraws; ++r) {
+    std::vector<Visibility> ratio = visibility(d);
+    for (std::size_t i = 0; i < d.effects.size(); ++i) {
+      const auto& e = d.effects[i];
+      const auto range = size_range(e);
+      const double end = range.larger_up ? range.hi : range.lo;
+      bool changed = false;
+      for (int t = 1; t <= kTries && ratio[i].beyond < kVisible; ++t) {
+        const double now = size_of(d.spec, e);
+        set_size(d.spec, e,
+                 t == kTries ? end : log_uniform(rng, std::min(now, end), std::max(now, end)));
+        changed = true;
+        ratio = visibility(d);
+      }
+      if (changed) {
+        ++enlarged;
+        d.description += " enlarged " + e + "=" + fmt(size_of(d.spec, e));
+      }
+    }
+    bool visible = true;
+    std::ostringstream v;
+    for (std::size_t i = 0; i < ratio.size(); ++i) {
+      v << (i ? "/" : "") << fmt(ratio[i].raw) << ":" << fmt(ratio[i].beyond);
+      if (ratio[i].beyond < kVisible) visible = false;
+    }
+    d.visibility = v.str();
+    if (visible || r == kRedraws) {
+      d.redrawn = redrawn;
+      d.enlarged = enlarged;
+      return d;
+    }
+    ++redrawn;
+    d = redraw(d.truth, d.index, d.seed + 7919u, d.nuisances);
+  }
+  return d;
+}
+
 /// Simulates the draw, adds noise and the sidecar map error, and runs the diagnosis.
-Outcome run(const Draw& draw, unsigned seed) {
+Outcome run(const Draw& drawn, unsigned seed, bool visible) {
   std::mt19937 rng(seed);
   Outcome o;
-  o.truth = draw.truth;
-  o.description = draw.description;
+  o.truth = drawn.truth;
+  o.description = drawn.description;
   const auto started = std::chrono::steady_clock::now();
   try {
+    const Draw draw = visible ? make_visible(drawn, &make_draw) : drawn;
+    o.description = draw.description;
+    o.visibility = draw.visibility;
+    o.enlarged = draw.enlarged;
+    o.redrawn = draw.redrawn;
     auto rec = record(draw, rng);
     const std::string out = lumped::rig_output_column(draw.spec);
     auto& y = rec.columns.at(out);
@@ -349,6 +587,15 @@ Outcome run(const Draw& draw, unsigned seed) {
     rec.csv_path = draw.truth + "_" + std::to_string(draw.index) + ".csv";
     rec.meta.sidecar_path = draw.truth + "_" + std::to_string(draw.index) + ".toml";
     const auto d = diagnose::diagnose(rec);
+    if (std::getenv("RHEOMAG_CONFUSION_NOTES")) {
+      std::ostringstream notes;
+      notes << "  notes " << draw.truth << " #" << draw.index << ":";
+      for (const auto& c : d.candidates)
+        notes << " [" << c.step + 1 << " " << diagnose::effect_name(c.effect) << " dBIC "
+              << fmt(c.delta_bic) << (c.screened ? " screened" : "") << "]";
+      for (const auto& n : d.notes) notes << "\n    " << n;
+      o.notes = notes.str();
+    }
     o.final_fit = d.final_fit_percent;
     std::vector<std::string> truth_classes;
     for (const auto& t : draw.effects) truth_classes.push_back(effect_class(t));
@@ -393,8 +640,8 @@ Outcome run(const Draw& draw, unsigned seed) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  int draws = 20, threads = 1;
-  bool nuisances = true;
+  int draws = 20, threads = 1, index = -1;
+  bool nuisances = true, visible = true;
   unsigned seed = 2026;
   std::string only, csv;
   for (int k = 1; k + 1 < argc; k += 2) {
@@ -407,10 +654,14 @@ int main(int argc, char** argv) {
       threads = std::max(1, std::atoi(v.c_str()));
     else if (a == "--only")
       only = v;
+    else if (a == "--index")
+      index = std::atoi(v.c_str());
     else if (a == "--csv")
       csv = v;
     else if (a == "--nuisances")
       nuisances = std::atoi(v.c_str()) != 0;
+    else if (a == "--visible")
+      visible = std::atoi(v.c_str()) != 0;
     else {
       std::cerr << "unknown option " << a << "\n";
       return 2;
@@ -420,7 +671,7 @@ int main(int argc, char** argv) {
   // Interleave the truths so that a run cut short still covers every class.
   for (int i = 0; i < draws; ++i)
     for (std::size_t c = 0; c < kTruths.size(); ++c)
-      if (only.empty() || only == kTruths[c])
+      if ((only.empty() || only == kTruths[c]) && (index < 0 || index == i))
         jobs.push_back(make_draw(kTruths[c], i,
                                  seed + 1000u * static_cast<unsigned>(c) + static_cast<unsigned>(i),
                                  nuisances));
@@ -431,23 +682,25 @@ int main(int argc, char** argv) {
   if (!csv.empty()) {
     table.open(csv);
     table << "truth,index,named,ambiguous,truth_in_ambiguous,right,false_finding,all_named,"
-             "final_fit,ceiling,seconds,draw\n";
+             "final_fit,ceiling,seconds,visibility,enlarged,redrawn,draw\n";
   }
   auto worker = [&]() {
     for (std::size_t j = next++; j < jobs.size(); j = next++) {
-      outcomes[j] = run(jobs[j], seed + 7u * static_cast<unsigned>(j) + 1u);
+      outcomes[j] = run(jobs[j], seed + 7u * static_cast<unsigned>(j) + 1u, visible);
       const auto& o = outcomes[j];
       std::lock_guard<std::mutex> lock(print);
       std::cout << o.truth << " #" << jobs[j].index << " -> " << o.named
                 << (o.ambiguous ? " (ambiguous)" : "") << " [" << o.all_named << "] "
                 << (o.right ? "right" : "MISSED") << (o.false_finding ? " FALSE" : "") << " FIT "
                 << fmt(o.final_fit) << "/" << fmt(o.ceiling) << " " << fmt(o.seconds) << " s  "
-                << o.description << std::endl;
+                << o.description << (o.visibility.empty() ? "" : " visibility=" + o.visibility)
+                << (o.notes.empty() ? "" : "\n" + o.notes) << std::endl;
       if (table.is_open())
         table << o.truth << ',' << jobs[j].index << ',' << o.named << ',' << o.ambiguous << ','
               << o.truth_in_ambiguous << ',' << o.right << ',' << o.false_finding << ",\""
-              << o.all_named << "\"," << o.final_fit << ',' << o.ceiling << ',' << o.seconds
-              << ",\"" << o.description << "\"" << std::endl;
+              << o.all_named << "\"," << o.final_fit << ',' << o.ceiling << ',' << o.seconds << ','
+              << o.visibility << ',' << o.enlarged << ',' << o.redrawn << ",\"" << o.description
+              << "\"" << std::endl;
     }
   };
   std::vector<std::thread> pool;
@@ -502,6 +755,17 @@ int main(int argc, char** argv) {
   std::cout << "final FIT within 2 points of the achievable ceiling: " << near_ceiling << " / "
             << outcomes.size() << " (" << fmt(all > 0 ? 100.0 * near_ceiling / all : 0.0)
             << " %)\n";
+  int enlarged = 0, redrawn = 0, adjusted = 0;
+  for (const auto& o : outcomes) {
+    enlarged += o.enlarged;
+    redrawn += o.redrawn;
+    if (o.enlarged > 0 || o.redrawn > 0) ++adjusted;
+  }
+  if (visible)
+    std::cout << "visibility (signature rms >= " << fmt(kVisible)
+              << " x output noise rms): " << adjusted << " / " << outcomes.size()
+              << " draws adjusted (" << enlarged << " effect sizes enlarged, " << redrawn
+              << " whole redraws)\n";
   std::cout << "diagnosis wall time: total " << fmt(seconds) << " s, mean "
             << fmt(outcomes.empty() ? 0.0 : seconds / static_cast<double>(outcomes.size()))
             << " s per recording\n";

@@ -250,15 +250,23 @@ ModelFit fit_model(const DiagnosisModel& model, const std::vector<Effect>& effec
 
 std::vector<double> grid_search(const DiagnosisModel& model, const std::vector<Effect>& effects,
                                 std::vector<double> start, std::size_t j,
-                                const std::vector<double>& grid, double* best_sse, int threads) {
+                                const std::vector<double>& grid, double* best_sse, int threads,
+                                bool scan_delay) {
   std::vector<double> sse(grid.size(), std::numeric_limits<double>::infinity());
+  std::vector<double> delay(grid.size(), 0.0);
+  const std::size_t jd = model.delay_index();
   const std::size_t workers = std::min<std::size_t>(std::max(threads, 1), grid.size());
   auto score = [&](std::size_t first) {
     auto values = start;
+    if (scan_delay) values[jd] = 0.0;
     for (std::size_t g = first; g < grid.size(); g += workers) {
       values[j] = grid[g];
       try {
-        sse[g] = masked_sse(model.measured(), model.predict(effects, values), {});
+        const auto y = model.predict(effects, values);
+        if (scan_delay)
+          delay[g] = model.best_delay(y, values, sse[g]);
+        else
+          sse[g] = masked_sse(model.measured(), y, {});
       } catch (const std::exception&) {
       }
     }
@@ -272,19 +280,21 @@ std::vector<double> grid_search(const DiagnosisModel& model, const std::vector<E
     if (sse[g] < best) {
       best = sse[g];
       start[j] = grid[g];
+      if (scan_delay) start[jd] = delay[g];
     }
   if (best_sse) *best_sse = best;
   return start;
 }
 
 std::vector<double> grid_start(const DiagnosisModel& model, const std::vector<Effect>& effects,
-                               std::vector<double> start, double* best_sse, int threads) {
+                               std::vector<double> start, double* best_sse, int threads,
+                               bool scan_delay) {
   const auto layout = model.layout(effects);
   const std::size_t j = layout.size() - model.effect_params(effects.back()).size();
   const auto& d = layout[j];
   std::vector<double> grid;
   for (double v = d.lower * 3.0; v <= d.upper; v *= 10.0) grid.push_back(v);
-  return grid_search(model, effects, std::move(start), j, grid, best_sse, threads);
+  return grid_search(model, effects, std::move(start), j, grid, best_sse, threads, scan_delay);
 }
 
 }  // namespace rheomag::diagnose

@@ -47,17 +47,19 @@ double masked_sse(const std::vector<double>& measured, const std::vector<double>
 
 /// `start` with parameter j set to the value of `grid` where the model's squared error is least
 /// (returned in `best_sse` when given; models that cannot be simulated are skipped). The grid
-/// points share `threads` threads.
+/// points share `threads` threads. With `scan_delay` each grid point gets its own best output
+/// delay (DiagnosisModel::best_delay: no extra simulation), returned with the best point.
 std::vector<double> grid_search(const DiagnosisModel& model, const std::vector<Effect>& effects,
                                 std::vector<double> start, std::size_t j,
                                 const std::vector<double>& grid, double* best_sse = nullptr,
-                                int threads = 1);
+                                int threads = 1, bool scan_delay = false);
 
 /// Best start for `effects.back()`'s first parameter: a decade grid over its bounds with the
 /// other values held at `start`; returns `start` with that parameter replaced and, in
-/// `best_sse` when given, the squared error there. The grid points share `threads` threads.
+/// `best_sse` when given, the squared error there. The grid points share `threads` threads;
+/// `scan_delay` as in grid_search.
 std::vector<double> grid_start(const DiagnosisModel& model, const std::vector<Effect>& effects,
                                std::vector<double> start, double* best_sse = nullptr,
-                               int threads = 1);
+                               int threads = 1, bool scan_delay = false);
 
 }  // namespace rheomag::diagnose

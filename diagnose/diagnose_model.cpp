@@ -61,9 +61,26 @@ double median_interval(const std::vector<double>& t) {
   return dt[dt.size() / 2];
 }
 
-namespace {}  // namespace
+namespace {
 
-DiagnosisModel::DiagnosisModel(const lumped::Recording& rec, const ModelBaseline* fitted)
+/// True if `u` moves within one sample interval by more than 5 % of its range and more than ten
+/// times its median move per interval (a step, not noise) somewhere.
+bool steps(const std::vector<double>& u) {
+  if (u.size() < 3) return false;
+  std::vector<double> move(u.size() - 1);
+  for (std::size_t k = 0; k + 1 < u.size(); ++k) move[k] = std::abs(u[k + 1] - u[k]);
+  auto sorted = move;
+  const auto mid = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
+  std::nth_element(sorted.begin(), mid, sorted.end());
+  const auto [lo, hi] = std::minmax_element(u.begin(), u.end());
+  const double step = std::max(0.05 * (*hi - *lo), 10.0 * *mid);
+  return step > 0.0 && std::any_of(move.begin(), move.end(), [&](double m) { return m > step; });
+}
+
+}  // namespace
+
+DiagnosisModel::DiagnosisModel(const lumped::Recording& rec, const ModelBaseline* fitted,
+                               DriveSampling sampling)
     : rec_(rec) {
   if (fitted) {
     from_fitted_model(*fitted);
@@ -190,6 +207,10 @@ DiagnosisModel::DiagnosisModel(const lumped::Recording& rec, const ModelBaseline
     include("orientation", o->second, "", "sidecar [rig] orientation");
   }
   drive_noise_and_filter();
+  coil_drive_steps_ = !constant_field_ && steps(rec_.column(base_.driver_mode == DriverMode::voltage
+                                                                ? base_.voltage_column
+                                                                : std::string("current")));
+  if (sampling == DriveSampling::held && can_hold()) hold_drives();
   // The pre-yield smoothness is a nuisance only where the flow reverses (beyond its noise).
   if (base_.kind != RigKind::coil_bench) {
     const auto& v = rec_.column("velocity");
@@ -225,6 +246,26 @@ void DiagnosisModel::drive_noise_and_filter() {
       rec_.columns["velocity"] = std::move(smooth.values);
       velocity_filter_bandwidth_ = smooth.bandwidth;
     }
+  }
+}
+
+DiagnosisModel DiagnosisModel::held() const {
+  DiagnosisModel m = *this;
+  if (m.can_hold() && m.sampling_ != DriveSampling::held) m.hold_drives();
+  return m;
+}
+
+void DiagnosisModel::hold_drives() {
+  sampling_ = DriveSampling::held;
+  base_.held_drives = {base_.driver_mode == DriverMode::voltage ? base_.voltage_column
+                                                                : std::string("current")};
+  // A motion sample recorded under the same convention stands for its interval too: the mean
+  // over it, i.e. the motion at the interval's middle, half a sample after its time stamp.
+  for (const char* c : {"velocity", "displacement"}) {
+    auto it = rec_.columns.find(c);
+    if (it == rec_.columns.end() || base_.kind == RigKind::coil_bench) continue;
+    auto& v = it->second;
+    for (std::size_t k = v.size() - 1; k > 0; --k) v[k] = 0.5 * (v[k] + v[k - 1]);
   }
 }
 
@@ -361,8 +402,12 @@ std::vector<ParamDef> DiagnosisModel::static_params() const {
   // Nuisances: a delay of up to two samples between the output and the drives (channel skew,
   // and a zero-order-held drive, which acts as half a sample), and the static map's pre-yield
   // smoothness (width of its plug switch, a fraction of the peak flow).
+  // The held reading already puts the motion half a sample later: its delay range is shifted by
+  // half a sample so that both conventions span the same timings of the recorded channels.
   const double dt = sample_interval_;
-  p.push_back({"delay", 0.0, -kMaxDelaySamples * dt, kMaxDelaySamples * dt, false, dt});
+  const double shift = held_delay_shift() * dt;
+  p.push_back(
+      {"delay", 0.0, -kMaxDelaySamples * dt + shift, kMaxDelaySamples * dt + shift, false, dt});
   if (smoothing_nuisance_) {
     const double q = peak_flow_;
     p.push_back({"preyield_flow",
@@ -529,6 +574,40 @@ std::vector<double> DiagnosisModel::delayed(std::vector<double> y,
     }
   }
   return out;
+}
+
+double DiagnosisModel::best_delay(const std::vector<double>& undelayed, std::vector<double> values,
+                                  double& sse) const {
+  const std::size_t j = delay_index();
+  const double dt = sample_interval_;
+  auto error = [&](double delay) {
+    values[j] = delay;
+    const auto y = delayed(undelayed, values);
+    double s = 0.0;
+    for (std::size_t k = 0; k < y.size(); ++k) s += (measured_[k] - y[k]) * (measured_[k] - y[k]);
+    return s;
+  };
+  constexpr int kSteps = 10;  // per sample interval
+  const int m = static_cast<int>(kMaxDelaySamples) * kSteps;
+  const int shift = static_cast<int>(std::lround(held_delay_shift() * kSteps));
+  std::vector<double> e(static_cast<std::size_t>(2 * m + 1));
+  std::size_t best = 0;
+  for (int i = -m; i <= m; ++i) {
+    const auto k = static_cast<std::size_t>(i + m);
+    e[k] = error(dt * (i + shift) / kSteps);
+    if (e[k] < e[best]) best = k;
+  }
+  double delay = dt * (static_cast<double>(best) - m + shift) / kSteps;
+  sse = e[best];
+  if (best > 0 && best + 1 < e.size()) {
+    const double curvature = e[best - 1] - 2.0 * e[best] + e[best + 1];
+    if (curvature > 0.0) {
+      const double refined = delay + 0.5 * dt / kSteps * (e[best - 1] - e[best + 1]) / curvature;
+      const double s = error(refined);
+      if (s < sse) sse = s, delay = refined;
+    }
+  }
+  return delay;
 }
 
 std::vector<double> DiagnosisModel::predict(const std::vector<Effect>& effects,

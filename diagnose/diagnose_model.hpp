@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/enum_names.hpp"
 #include "lumped/fit_model_json.hpp"
 #include "lumped/recording.hpp"
 #include "lumped/rig_model.hpp"
@@ -29,6 +30,18 @@ enum class Effect {
   pre_yield  ///< the MR fluid's elastic pre-yield branch: a linear compliance before the plug
              ///< yields
 };
+
+/// How the recorder's drive samples act on the rig between samples: a nuisance the baseline
+/// calibrates (it picks the convention that fits better), never physics.
+enum class DriveSampling {
+  linear,  ///< instantaneous samples, linear in between
+  held     ///< each sample stands for the interval it begins: the coil drive held (zero-order
+           ///< hold), the motion (which cannot step) read at the interval's middle
+};
+
+/// "linear" | "held".
+inline constexpr EnumNames<DriveSampling, 2> kDriveSamplingNames{
+    {{{DriveSampling::linear, "linear"}, {DriveSampling::held, "held"}}}};
 
 /// Name of an effect in the diagnosis output ("compressibility", ...).
 std::string effect_name(Effect effect);
@@ -101,7 +114,23 @@ class DiagnosisModel {
   /// output, parameters held, output scale and offset calibrated; candidates as blocks on its
   /// inputs and output). Throws InputError naming a missing key, or a model of another rig kind
   /// or other drive/output columns than the recording.
-  explicit DiagnosisModel(const lumped::Recording& rec, const ModelBaseline* fitted = nullptr);
+  /// With `sampling` held, the coil drive column is a zero-order hold and the motion columns
+  /// are read half a sample later (a sidecar rig with a coil drive only; ignored otherwise).
+  explicit DiagnosisModel(const lumped::Recording& rec, const ModelBaseline* fitted = nullptr,
+                          DriveSampling sampling = DriveSampling::linear);
+
+  /// This model under the held convention (a copy: the static map, e.g. a tabulated FE chain,
+  /// is not built again); unchanged when the convention cannot apply (can_hold()).
+  DiagnosisModel held() const;
+
+  /// The drive sampling convention this model applies.
+  DriveSampling sampling() const { return sampling_; }
+  /// [samples] shift of the delay's range: -1/2 under the held convention (its reading of the
+  /// motion is already half a sample later), 0 otherwise.
+  double held_delay_shift() const { return sampling_ == DriveSampling::held ? -0.5 : 0.0; }
+  /// True when the held convention can show (a sidecar rig whose recorded coil drive steps:
+  /// on a coil drive without steps it would only be half a sample more delay of the motion).
+  bool can_hold() const { return !fitted_ && !constant_field_ && coil_drive_steps_; }
 
   /// Effects that can show in this recording (e.g. friction only on a damper's force, coil
   /// effects only when the coil is voltage driven).
@@ -114,6 +143,15 @@ class DiagnosisModel {
   /// Number of static parameters that are nuisances (the last ones of static_params()).
   std::size_t nuisance_count() const;
 
+  /// Index of the output delay nuisance in static_params() (and every layout).
+  std::size_t delay_index() const { return static_params().size() - nuisance_count(); }
+
+  /// The output delay within its bounds that fits `undelayed` (the model output before its
+  /// delay, at the recording's times) best: a scan in tenths of a sample, then the parabola
+  /// through the best and its neighbours. Returns the delay [s]; its squared error in `sse`.
+  double best_delay(const std::vector<double>& undelayed, std::vector<double> values,
+                    double& sse) const;
+
   /// Parameters an effect adds, with starting values scaled to this recording.
   std::vector<ParamDef> effect_params(Effect effect) const;
 
@@ -122,6 +160,9 @@ class DiagnosisModel {
 
   /// The rig spec for parameter values `values` (in the order of layout(effects)).
   lumped::RigSpec spec(const std::vector<Effect>& effects, const std::vector<double>& values) const;
+
+  /// Shifts `y` (at the recording's times) by the delay in `values`: y(t - delay).
+  std::vector<double> delayed(std::vector<double> y, const std::vector<double>& values) const;
 
   /// Free-run model output at the recording's sample times, shifted by the delay nuisance.
   std::vector<double> predict(const std::vector<Effect>& effects,
@@ -173,6 +214,10 @@ class DiagnosisModel {
   double velocity_filter_bandwidth_ = 0.0;
   bool smoothing_nuisance_ = false;  ///< the flow reverses: the pre-yield smoothness is calibrated
   bool fe_chain_ = false;            ///< the static map is the FE chain of [valve] case
+  DriveSampling sampling_ = DriveSampling::linear;
+  bool coil_drive_steps_ = false;  ///< the coil drive moves by a step within one interval
+  /// Applies the held convention to the drives (RigSpec::held_drives, motion read later).
+  void hold_drives();
   std::shared_ptr<const lumped::FitModel> fitted_;  ///< the fitted-model baseline, if any
   std::string field_column_;  ///< fitted baseline: the model's field drive column ("" if none)
   double model_sign_ = 1.0;   ///< fitted baseline: sign of its output's correlation with velocity
@@ -191,8 +236,6 @@ class DiagnosisModel {
   void chain_map(const std::string& where);
   /// Puts the stated chambers' oil compliance in the baseline when it is not negligible.
   void stiff_or_compliant_chambers();
-  /// Shifts `y` (at the recording's times) by the delay in `values`: y(t - delay).
-  std::vector<double> delayed(std::vector<double> y, const std::vector<double>& values) const;
 };
 
 }  // namespace rheomag::diagnose

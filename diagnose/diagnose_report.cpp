@@ -179,6 +179,11 @@ std::string diagnosis_html(const Diagnosis& d) {
     << "<tr><td>delay of the output behind the drives</td><td>" << html_number(1e3 * u.delay)
     << " ms (" << html_number(u.delay_samples, 2) << " samples): " << html_escape(u.sampling)
     << "</td></tr>\n";
+  o << "<tr><td>drive sampling convention</td><td>" << kDriveSamplingNames.name(u.drive_sampling);
+  if (std::isfinite(u.sampling_fit_gain))
+    o << " (baseline FIT " << html_number(u.sampling_fit_gain, 2)
+      << " points better than the other convention)";
+  o << "</td></tr>\n";
   if (u.preyield_flow > 0.0)
     o << "<tr><td>pre-yield smoothness of the static map</td><td>plug switch width "
       << html_number(u.preyield_flow) << " m^3/s (" << html_number(100 * u.preyield_fraction, 2)

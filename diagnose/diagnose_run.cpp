@@ -6,12 +6,14 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <thread>
 
 #include "core/error.hpp"
 #include "diagnose/diagnose_noise.hpp"
 #include "lumped/metrics.hpp"
+#include "lumped/recording_excerpt.hpp"
 
 namespace rheomag::diagnose {
 
@@ -113,6 +115,57 @@ std::vector<bool> nuisances_held(const DiagnosisModel& model, const std::vector<
   return held;
 }
 
+/// Nuisances held while a candidate is screened and fitted: the pre-yield smoothness always;
+/// the output delay only when the baseline put it at its bound (it was free to absorb a
+/// candidate's phase, e.g. an inertia's lead or a compliance's lag, and is re-fitted with each
+/// candidate so that the comparison is between two models each with its best delay; at a bound
+/// it would make every step project onto the bound).
+std::vector<bool> held_in_candidates(const DiagnosisModel& model,
+                                     const std::vector<Effect>& effects,
+                                     const std::vector<double>& values) {
+  auto held = nuisances_held(model, effects);
+  const auto layout = model.static_params();
+  for (std::size_t j = model.delay_index(); j < layout.size(); ++j) {
+    const auto& p = layout[j];
+    const double v = values[j];
+    const bool at_bound = p.log_scale ? v <= p.lower * 1.001 || v >= p.upper / 1.001
+                                      : std::abs(v - p.lower) < 5e-4 * (p.upper - p.lower) ||
+                                            std::abs(v - p.upper) < 5e-4 * (p.upper - p.lower);
+    if (!at_bound) held[j] = false;
+  }
+  return held;
+}
+
+/// Re-calibrates the nuisances of `fit` that are not at a bound with everything else held (after
+/// an accepted effect the pre-yield smoothing and delay it was compared with may no longer be
+/// the best, and the next candidate would be credited with their gain).
+void recalibrate_nuisances(const DiagnosisModel& model, ModelFit& fit, const FitSettings& base) {
+  auto free = held_in_candidates(model, fit.effects, fit.values);
+  bool any = false;
+  std::vector<bool> fixed(fit.values.size(), true);
+  for (std::size_t j = model.delay_index(); j < model.static_params().size(); ++j)
+    if (!free[j]) fixed[j] = false, any = true;
+  if (!any) return;
+  auto s = base;
+  s.fixed = fixed;
+  auto f = fit_model(model, fit.effects, fit.values, s);
+  if (f.sse < fit.sse) fit = std::move(f);
+}
+
+/// Sets `fit`'s output delay to its best value for the rest of its parameters (no refit).
+void polish_delay(const DiagnosisModel& model, ModelFit& fit) {
+  const std::size_t j = model.delay_index();
+  auto values = fit.values;
+  values[j] = 0.0;
+  double sse = 0.0;
+  const auto undelayed = model.predict(fit.effects, values);
+  const double delay = model.best_delay(undelayed, values, sse);
+  if (!(sse < fit.sse)) return;
+  fit.values[j] = delay;
+  fit.sse = sse;
+  fit.prediction = model.delayed(undelayed, fit.values);
+}
+
 std::vector<bool> block_mask(std::size_t n, int blocks, bool even) {
   std::vector<bool> mask(n);
   for (std::size_t k = 0; k < n; ++k) {
@@ -155,6 +208,12 @@ double heldout_sse(const DiagnosisModel& model, const ModelFit& full, int blocks
   for (const auto& e : failure)
     if (e) std::rethrow_exception(e);
   return fold_sse[0] + fold_sse[1];
+}
+
+std::string num(double v) {
+  std::ostringstream text;
+  text << v;
+  return text.str();
 }
 
 std::string fmt(double v, int digits = 3) {
@@ -314,6 +373,14 @@ std::string rejection(const DiagnosisModel& model, const ModelFit& current, cons
   if (share < options.min_share)
     return head + " but removed only " + fmt(100 * share, 2) +
            " % of the residual energy above the noise floor: not accepted";
+  // Materiality against the noise: the output change it explains, in rms over the recording,
+  // at least min_noise_multiple noise standard deviations (floor_sse = n sigma^2).
+  const double explained_rms_in_sigma =
+      floor_sse > 0.0 ? std::sqrt(std::max(current.sse - fit.sse, 0.0) / floor_sse) : 1e300;
+  if (explained_rms_in_sigma < options.min_noise_multiple)
+    return head + " but the output change it explains is only " + fmt(explained_rms_in_sigma, 2) +
+           " noise standard deviations in rms (at least " + fmt(options.min_noise_multiple, 2) +
+           " needed): below the noise, not accepted";
   // A time constant shorter than one sample interval cannot be told from the recording's own
   // timing (channel skew, held drives), which the delay nuisance already absorbs.
   if (const double tau = resolved_time_constant(model, fit);
@@ -368,14 +435,23 @@ Nuisance nuisance_of(const DiagnosisModel& model, const ModelFit& fit) {
   }
   u.delay_samples = u.delay / model.sample_interval();
   if (model.peak_flow() > 0.0) u.preyield_fraction = u.preyield_flow / model.peak_flow();
+  u.drive_sampling = model.sampling();
   const double frac = std::abs(u.delay_samples);
-  u.sampling = frac < 0.25
-                   ? "output and drives aligned (smooth, linearly interpolated drives)"
+  u.sampling =
+      std::string(u.drive_sampling == DriveSampling::held
+                      ? "drives held between samples (the coil drive a zero-order hold, each "
+                        "sample standing for the interval it begins; the motion read at the "
+                        "interval's middle)"
+                      : "drives linear between samples") +
+      "; " +
+      (frac < 0.25 ? std::string("output and drives aligned")
                    : std::string(u.delay_samples > 0 ? "output behind" : "output ahead of") +
-                         " the drives by " + fmt(frac, 2) +
-                         " samples: channel skew, or drives recorded as held samples "
-                         "(a zero-order hold acts as half a sample); calibrated, not "
-                         "physics";
+                         " the drives by " + fmt(frac, 2) + " samples (channel skew" +
+                         (u.drive_sampling == DriveSampling::linear
+                              ? ", or drives recorded as held samples, which a linear reading "
+                                "sees half a sample late)"
+                              : ")")) +
+      "; calibrated, not physics";
   return u;
 }
 
@@ -395,7 +471,7 @@ double size_relative_se(const DiagnosisModel& model, const ModelFit& fit, int th
   FitSettings s;
   s.max_iterations = 0;
   s.threads = threads;
-  s.fixed = nuisances_held(model, fit.effects);
+  s.fixed = held_in_candidates(model, fit.effects, fit.values);
   const auto f = fit_model(model, fit.effects, fit.values, s);
   const std::size_t j = f.layout.size() - model.effect_params(f.effects.back()).size();
   const double v = std::abs(f.values[j]);
@@ -416,62 +492,66 @@ Unexplained unexplained_of(const std::vector<double>& residual, double baseline_
   return u;
 }
 
-}  // namespace
+/// The `length` consecutive samples (starting on a grid of length/4, or ending at the last
+/// sample) whose baseline residual energy is largest: where the baseline misses most is where
+/// what it lacks shows, and a stretch at rest carries no evidence.
+lumped::SampleRange representative_excerpt(const std::vector<double>& residual,
+                                           std::size_t length) {
+  const std::size_t n = residual.size();
+  std::vector<double> energy(n + 1, 0.0);  // cumulative squared residual
+  for (std::size_t k = 0; k < n; ++k) energy[k + 1] = energy[k] + residual[k] * residual[k];
+  const std::size_t step = std::max<std::size_t>(length / 4, 1);
+  lumped::SampleRange best{0, length};
+  double best_energy = -1.0;
+  for (std::size_t b = 0;; b += step) {
+    const std::size_t begin = std::min(b, n - length);
+    const double e = energy[begin + length] - energy[begin];
+    if (e > best_energy) best_energy = e, best = {begin, begin + length};
+    if (begin == n - length) break;
+  }
+  return best;
+}
 
-Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options) {
-  const auto run_start = std::chrono::steady_clock::now();
-  auto stage_start = run_start;
-  auto since = [](std::chrono::steady_clock::time_point t) {
+/// Progress of one diagnosis: each finished stage with its own time, each candidate's result,
+/// timed from the start of the run.
+class Clock {
+ public:
+  using time_point = std::chrono::steady_clock::time_point;
+  explicit Clock(const ProgressCallback& progress) : progress_(progress) {}
+  /// [s] since `t`.
+  static double since(time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-  };
-  auto num = [](double v) {
-    std::ostringstream text;
-    text << v;
-    return text.str();
-  };
-  // A finished stage: its name and its own time in the detail.
-  auto stage = [&](const std::string& what) {
-    if (!options.progress) return;
+  }
+  /// [s] since the run started.
+  double elapsed() const { return since(start_); }
+  /// Reports `event` to the listener, if any (its elapsed time set here).
+  void report(ProgressEvent event) const {
+    if (!progress_) return;
+    event.elapsed = elapsed();
+    progress_(event);
+  }
+  /// A finished stage: its name and its own time in the detail.
+  void stage(const std::string& what) {
     const auto now = std::chrono::steady_clock::now();
-    options.progress(
-        {what, 0.0, 0.0, since(run_start),
-         "in " + num(std::chrono::duration<double>(now - stage_start).count()) + " s"});
-    stage_start = now;
-  };
-  DiagnosisModel model(rec, options.baseline_model ? &*options.baseline_model : nullptr);
-  check_informative(model);
-  Diagnosis d;
-  d.recording = rec.csv_path;
-  d.output_column = model.output_column();
-  d.t = rec.t;
-  d.measured = model.measured();
+    report({what, 0.0, 0.0, 0.0,
+            "in " + num(std::chrono::duration<double>(now - stage_).count()) + " s"});
+    stage_ = now;
+  }
+
+ private:
+  const ProgressCallback& progress_;
+  time_point start_ = std::chrono::steady_clock::now();
+  time_point stage_ = start_;
+};
+
+/// Forward selection on `model` from its calibrated baseline `current`: candidates are fitted,
+/// tested and accepted one at a time (scores, findings and notes appended to `d`); returns the
+/// fit of the last accepted model (`current` itself when nothing is accepted). `floor_sse` is
+/// the noise floor n sigma^2 of this model's baseline residual.
+ModelFit forward_select(const DiagnosisModel& model, ModelFit current, double floor_sse,
+                        const DiagnoseOptions& options, Diagnosis& d, Clock& clock) {
   const auto& y = model.measured();
   const std::size_t n = y.size();
-
-  // 1. Baseline: calibrate the static parameters.
-  std::vector<double> start = nuisance_start(model, options.threads);
-  FitSettings calib;
-  calib.max_iterations = 50;
-  calib.threads = options.threads;
-  d.baseline = fit_model(model, {}, start, calib);
-  d.baseline_fit_percent = fit_percent_of(y, d.baseline.prediction);
-  d.includes = model.includes();
-  d.nuisance = nuisance_of(model, d.baseline);
-  stage("baseline calibration");
-
-  // 2. Locate.
-  std::vector<double> residual(n);
-  for (std::size_t k = 0; k < n; ++k) residual[k] = y[k] - d.baseline.prediction[k];
-  d.mismatch = locate_mismatch(model.recording(), residual);
-  d.baseline_stats =
-      residual_statistics(model.recording(), rec.meta.drive, y, d.baseline.prediction);
-  // The noise floor: the white part of the baseline's residual (output sensor noise and drive
-  // noise the static map passes through); no candidate can explain it.
-  const double sigma = noise_sigma(residual);
-  const double floor_sse = static_cast<double>(n) * sigma * sigma;
-
-  // 3. Name: forward selection.
-  ModelFit current = d.baseline;
   FitSettings settings;
   settings.max_iterations = options.max_iterations;
   settings.threads = options.threads;
@@ -485,6 +565,11 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
       double delta_bic;
     };
     std::vector<Tried> tried;
+    // The current model with its best output delay (one simulation): each candidate is fitted
+    // with the delay free, so the gain it is credited with must not be the delay's.
+    if (!held_in_candidates(model, current.effects, current.values)[model.delay_index()])
+      polish_delay(model, current);
+    if (step > 0) recalibrate_nuisances(model, current, settings);
     const double bic_now = bic(current.sse, n, current.values.size());
     const bool first_step = step == 0;
     for (Effect c : candidates) {
@@ -513,25 +598,23 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
       try {
         const auto started = std::chrono::steady_clock::now();
         double grid_sse = 0.0;
-        s = grid_start(model, effects, s, &grid_sse, options.threads);
+        const bool scan_delay = !held_in_candidates(model, effects, s)[model.delay_index()];
+        s = grid_start(model, effects, s, &grid_sse, options.threads, scan_delay);
         // Screening: a candidate that lowers the error at no decade of its parameter (the
         // others held at the current fit) is scored there and not fitted.
         if (!(grid_sse < current.sse)) {
           const double db = bic_now - bic(grid_sse, n, s.size());
           d.candidates.push_back({c, step, 0.0, db, true});
-          if (options.progress)
-            options.progress({"step " + std::to_string(step + 1) + " " + effect_name(c), 0.0, 0.0,
-                              since(run_start), "screened out (no decade of its parameter helps)"});
+          clock.report({"step " + std::to_string(step + 1) + " " + effect_name(c), 0.0, 0.0, 0.0,
+                        "screened out (no decade of its parameter helps)"});
           continue;
         }
         auto candidate_settings = settings;
-        candidate_settings.fixed = nuisances_held(model, effects);
+        candidate_settings.fixed = held_in_candidates(model, effects, current.values);
         auto f = fit_model(model, effects, s, candidate_settings);
         const double db = bic_now - bic(f.sse, n, f.values.size());
-        if (options.progress)
-          options.progress({"step " + std::to_string(step + 1) + " " + effect_name(c), 0.0, 0.0,
-                            since(run_start),
-                            "dBIC " + num(db) + " in " + num(since(started)) + " s"});
+        clock.report({"step " + std::to_string(step + 1) + " " + effect_name(c), 0.0, 0.0, 0.0,
+                      "dBIC " + num(db) + " in " + num(Clock::since(started)) + " s"});
         d.candidates.push_back({c, step, fit_percent_of(y, f.prediction), db});
         tried.push_back({c, std::move(f), db});
       } catch (const ConvergenceError&) {
@@ -539,7 +622,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
                           std::to_string(step + 1));
       }
     }
-    stage("step " + std::to_string(step + 1) + " candidates");
+    clock.stage("step " + std::to_string(step + 1) + " candidates");
     if (tried.empty()) break;
     std::stable_sort(tried.begin(), tried.end(),
                      [](const Tried& a, const Tried& b) { return a.delta_bic > b.delta_bic; });
@@ -565,7 +648,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
                                                                 cv_iterations, options.threads);
       held_current = held_now;
       held_new = heldout_sse(model, c.fit, options.blocks, cv_iterations, options.threads);
-      stage("held-out check of " + effect_name(c.effect));
+      clock.stage("held-out check of " + effect_name(c.effect));
       gain = held_now > 0 ? 1.0 - held_new / held_now : 0.0;
       if (gain < options.heldout_margin) {
         d.notes.push_back(effect_name(c.effect) + " lowered BIC by " + fmt(c.delta_bic) +
@@ -606,6 +689,91 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
     held_current = held_new;
   }
 
+  return current;
+}
+
+}  // namespace
+
+Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options) {
+  Clock clock(options.progress);
+  const ModelBaseline* fitted = options.baseline_model ? &*options.baseline_model : nullptr;
+  auto chosen = std::make_unique<DiagnosisModel>(rec, fitted);
+  check_informative(*chosen);
+  Diagnosis d;
+  d.recording = rec.csv_path;
+
+  // 1. Baseline: calibrate the static parameters and nuisances, with the drive sampling
+  // convention (linear or held between samples) that fits better.
+  FitSettings calib;
+  calib.max_iterations = 50;
+  calib.threads = options.threads;
+  auto calibrate = [&](const DiagnosisModel& m) {
+    return fit_model(m, {}, nuisance_start(m, options.threads), calib);
+  };
+  d.baseline = calibrate(*chosen);
+  double other_fit_percent = std::numeric_limits<double>::quiet_NaN();
+  if (chosen->can_hold()) {
+    auto held = std::make_unique<DiagnosisModel>(chosen->held());
+    auto held_fit = calibrate(*held);
+    if (held_fit.sse < d.baseline.sse) {
+      std::swap(chosen, held);
+      std::swap(d.baseline, held_fit);
+    }
+    other_fit_percent = fit_percent_of(chosen->measured(), held_fit.prediction);
+  }
+  const DiagnosisModel& model = *chosen;
+  d.output_column = model.output_column();
+  d.t = rec.t;
+  d.measured = model.measured();
+  const auto& y = model.measured();
+  const std::size_t n = y.size();
+  d.baseline_fit_percent = fit_percent_of(y, d.baseline.prediction);
+  d.includes = model.includes();
+  d.nuisance = nuisance_of(model, d.baseline);
+  d.nuisance.sampling_fit_gain = d.baseline_fit_percent - other_fit_percent;
+  clock.stage("baseline calibration");
+
+  // 2. Locate.
+  std::vector<double> residual(n);
+  for (std::size_t k = 0; k < n; ++k) residual[k] = y[k] - d.baseline.prediction[k];
+  d.mismatch = locate_mismatch(model.recording(), residual);
+  d.baseline_stats =
+      residual_statistics(model.recording(), rec.meta.drive, y, d.baseline.prediction);
+  // The noise floor: the white part of the baseline's residual (output sensor noise and drive
+  // noise the static map passes through); no candidate can explain it.
+  const double sigma = noise_sigma(residual);
+  const double floor_sse = static_cast<double>(n) * sigma * sigma;
+
+  // 3. Name: forward selection, on the whole recording or, when it is long, on its most
+  // informative excerpt (the cost rule; the final re-fit below uses every sample).
+  ModelFit current = d.baseline;
+  if (options.selection_samples > 0 && n > options.selection_samples) {
+    d.selection = representative_excerpt(residual, options.selection_samples);
+    const DiagnosisModel part(lumped::excerpt(rec, d.selection), fitted, model.sampling());
+    const auto part_baseline = fit_model(part, {}, d.baseline.values, calib);
+    std::vector<double> part_residual(d.selection.size());
+    for (std::size_t k = 0; k < part_residual.size(); ++k)
+      part_residual[k] = part.measured()[k] - part_baseline.prediction[k];
+    const double part_sigma = noise_sigma(part_residual);
+    clock.stage("excerpt calibration");
+    const auto selected = forward_select(
+        part, part_baseline, static_cast<double>(part_residual.size()) * part_sigma * part_sigma,
+        options, d, clock);
+    if (!d.findings.empty()) {
+      current.effects = selected.effects;
+      current.values = selected.values;
+      current.sse = std::numeric_limits<double>::infinity();  // not yet simulated on every sample
+    }
+    d.notes.push_back("long recording (" + std::to_string(n) +
+                      " samples): candidates were screened, fitted and checked on samples " +
+                      std::to_string(d.selection.begin) + ":" + std::to_string(d.selection.end) +
+                      " (the " + std::to_string(d.selection.size()) +
+                      "-sample stretch with the largest baseline residual energy); the final "
+                      "joint re-fit and FIT use every sample");
+  } else {
+    current = forward_select(model, std::move(current), floor_sse, options, d, clock);
+  }
+
   // Re-fit all accepted effects together, with the nuisances free again (they were held while
   // the candidates were compared); where that does not improve, keep the last forward step's fit
   // (with its standard errors).
@@ -620,7 +788,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
     }
     current = std::move(refit);
   }
-  stage("joint re-fit");
+  clock.stage("joint re-fit");
   d.final_fit = current;
   d.final_fit_percent = fit_percent_of(y, current.prediction);
   d.final_stats = residual_statistics(model.recording(), rec.meta.drive, y, current.prediction);
@@ -628,6 +796,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
   d.final_mismatch = locate_mismatch(model.recording(), residual);
   d.unexplained = unexplained_of(residual, d.baseline.sse, sigma);
   d.final_nuisance = nuisance_of(model, current);
+  d.final_nuisance.sampling_fit_gain = d.nuisance.sampling_fit_gain;
   std::size_t offset = model.static_params().size();
   for (auto& f : d.findings) {
     for (const auto& p : model.effect_params(f.effect)) {
@@ -661,11 +830,15 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
 namespace {
 
 nlohmann::json nuisance_json(const Nuisance& u) {
-  nlohmann::json j = {{"delay", u.delay},
-                      {"delay_samples", u.delay_samples},
-                      {"sampling", u.sampling},
-                      {"drive_noise", u.drive_noise},
-                      {"velocity_filter_bandwidth", u.velocity_filter_bandwidth}};
+  nlohmann::json j = {
+      {"delay", u.delay},
+      {"delay_samples", u.delay_samples},
+      {"sampling", u.sampling},
+      {"drive_sampling", kDriveSamplingNames.name(u.drive_sampling)},
+      {"sampling_fit_gain",
+       std::isfinite(u.sampling_fit_gain) ? nlohmann::json(u.sampling_fit_gain) : nlohmann::json()},
+      {"drive_noise", u.drive_noise},
+      {"velocity_filter_bandwidth", u.velocity_filter_bandwidth}};
   if (u.preyield_flow > 0.0) {
     j["preyield_flow"] = u.preyield_flow;
     j["preyield_fraction_of_peak_flow"] = u.preyield_fraction;
@@ -762,6 +935,8 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
          {"fit_percent", c.screened ? nlohmann::json() : nlohmann::json(c.fit_percent)},
          {"screened", c.screened},
          {"delta_bic", c.delta_bic}});
+  if (d.selection.size() > 0)
+    out["selection_samples"] = {{"begin", d.selection.begin}, {"end", d.selection.end}};
   out["notes"] = d.notes;
   return out;
 }

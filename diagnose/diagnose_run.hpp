@@ -2,6 +2,7 @@
 // The diagnosis of one recording: calibrate the baseline, locate the mismatch, forward-select
 // candidate physics (held-out blocks + BIC), re-fit all accepted effects together.
 
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -12,6 +13,7 @@
 #include "diagnose/diagnose_fit.hpp"
 #include "diagnose/diagnose_locate.hpp"
 #include "diagnose/diagnose_model.hpp"
+#include "lumped/metrics.hpp"
 #include "lumped/recording.hpp"
 
 namespace rheomag::diagnose {
@@ -24,11 +26,20 @@ struct DiagnoseOptions {
   /// ... and remove this share of the residual energy above the noise floor (practical
   /// significance)
   double min_share = 0.1;
+  /// ... and explain an output change at least this many noise standard deviations in rms over
+  /// the recording: (SSE_now - SSE_new) >= min_noise_multiple^2 n sigma^2 (an effect smaller
+  /// than the noise on every sample is not material, however well a long recording resolves it)
+  double min_noise_multiple = 0.5;
   double max_relative_se = 0.5;  ///< ... with its size parameter identified to this rel. error
   int blocks = 8;                ///< alternating time blocks for the two-fold held-out check
   int max_iterations = 15;       ///< Levenberg-Marquardt iterations per fit
   ProgressCallback progress;     ///< told each stage and candidate fit with its time (or none)
   int threads = 2;               ///< threads for Jacobian columns, grid points and held-out folds
+  /// Cost rule for long recordings: with more samples than this, candidates are screened,
+  /// fitted and checked on this many consecutive samples (the stretch with the largest baseline
+  /// residual energy); the baseline, the final joint re-fit and every reported FIT use all
+  /// samples. 0: always the whole recording.
+  std::size_t selection_samples = 15000;
   /// A fitted model as the baseline instead of the sidecar's rig (`--baseline MODEL.json`).
   std::optional<ModelBaseline> baseline_model;
 };
@@ -63,7 +74,10 @@ struct Finding {
 struct Nuisance {
   double delay = 0.0;          ///< [s] output behind the drives (negative: ahead)
   double delay_samples = 0.0;  ///< the same in sample intervals
-  std::string sampling;        ///< what the delay says about the drive's sampling convention
+  std::string sampling;        ///< the drive sampling convention and what the delay says
+  DriveSampling drive_sampling = DriveSampling::linear;  ///< the convention calibrated
+  /// FIT points the calibrated convention gains over the other (NaN: only one applies)
+  double sampling_fit_gain = std::numeric_limits<double>::quiet_NaN();
   double preyield_flow = 0.0;  ///< [m^3/s] width of the static map's plug switch (0: not fitted)
   double preyield_fraction = 0.0;             ///< preyield_flow / peak flow
   std::map<std::string, double> drive_noise;  ///< column -> white-noise std (SI)
@@ -90,7 +104,9 @@ struct Diagnosis {
   Nuisance nuisance;                   ///< as calibrated in the baseline
   std::vector<MismatchWindow> mismatch;
   ResidualStats baseline_stats;
-  std::vector<CandidateScore> candidates;
+  std::vector<CandidateScore> candidates;  ///< scored on `selection` when it is not empty
+  /// Samples the candidates were selected on (a long recording's excerpt; empty: all of them).
+  lumped::SampleRange selection;
   std::vector<Finding> findings;
   ModelFit final_fit;
   double final_fit_percent = 0.0;

@@ -61,6 +61,7 @@ enum class Drive { velocity, current, voltage, current_cmd };
 struct DriveInputs {
   const std::vector<double>* t = nullptr;
   const std::vector<double>* columns[4] = {nullptr, nullptr, nullptr, nullptr};
+  bool held[4] = {false, false, false, false};  ///< RigSpec::held_drives, by role
   mutable std::size_t hint = 0;
   /// Value and slope of drive `which` at time tt.
   std::pair<double, double> at(Drive which, double tt) const {
@@ -70,6 +71,12 @@ struct DriveInputs {
     const double slope = (v[k + 1] - v[k]) / (ts[k + 1] - ts[k]);
     if (tt <= ts.front()) return {v.front(), slope};
     if (tt >= ts.back()) return {v.back(), slope};
+    if (held[static_cast<int>(which)]) {
+      const double ramp = kHeldStepFraction * (ts[k + 1] - ts[k]);
+      const double from = ts[k + 1] - ramp;
+      if (tt < from) return {v[k], 0.0};
+      return {v[k] + (v[k + 1] - v[k]) * (tt - from) / ramp, (v[k + 1] - v[k]) / ramp};
+    }
     return {v[k] + slope * (tt - ts[k]), slope};
   }
   /// Index k of the segment [t_k, t_k+1) holding tt (clamped to the first and last segment).
@@ -352,6 +359,12 @@ Recording simulate_rig(const RigSpec& spec_in, const Recording& drive) {
     case DriverMode::current_pi:
       in.columns[static_cast<int>(Drive::current_cmd)] = &drive.column("current_cmd");
       break;
+  }
+  for (const auto& column : spec_in.held_drives) {
+    if (column == "velocity") in.held[static_cast<int>(Drive::velocity)] = true;
+    if (column == "current") in.held[static_cast<int>(Drive::current)] = true;
+    if (column == spec_in.voltage_column) in.held[static_cast<int>(Drive::voltage)] = true;
+    if (column == "current_cmd") in.held[static_cast<int>(Drive::current_cmd)] = true;
   }
   if (spec_in.inertance && *spec_in.inertance <= 0)
     throw InputError("simulate: inertance must be > 0");

@@ -56,7 +56,14 @@ struct RigSpec {
   /// LC circuit ringing faster than the samples) takes grid_edge_substeps in every interval.
   int grid_substeps = 0;
   int grid_edge_substeps = 8;
+  /// Drive columns recorded as held samples: each sample stands for the interval it begins
+  /// (zero-order hold), stepping to the next over the interval's last kHeldStepFraction (so that
+  /// rates stay finite); the other drive columns are linear between samples.
+  std::vector<std::string> held_drives;
 };
+
+/// Share of a sample interval over which a held drive column moves to its next sample.
+inline constexpr double kHeldStepFraction = 0.125;
 
 /// Parses "constant_velocity_pump" | "bypass_cylinder" | "damper" | "coil_bench".
 bool parse_rig_kind(const std::string& name, RigKind& kind);

@@ -66,6 +66,16 @@ inline VirtualRecording make_recording(lumped::RigSpec truth, const lumped::Reco
   return v;
 }
 
+/// Prints each finding of `d` with its parameters (SI), one line each.
+inline void print_findings(const diagnose::Diagnosis& d) {
+  for (const auto& f : d.findings) {
+    std::cout << "  " << diagnose::effect_name(f.effect);
+    for (std::size_t j = 0; j < f.params.size(); ++j)
+      std::cout << " " << f.param_names[j] << "=" << f.params[j];
+    std::cout << "\n";
+  }
+}
+
 /// The diagnosis with default options (candidate timings on stderr if RHEOMAG_DIAGNOSE_TRACE set).
 inline diagnose::Diagnosis run_diagnosis(const lumped::Recording& rec) {
   diagnose::DiagnoseOptions options;

@@ -38,12 +38,7 @@ const Finding* find(const Diagnosis& d, Effect e) {
 void print(const Diagnosis& d, double ceiling) {
   std::cout << "baseline FIT " << d.baseline_fit_percent << ", final " << d.final_fit_percent
             << ", ceiling " << ceiling << "\n";
-  for (const auto& f : d.findings) {
-    std::cout << "  " << effect_name(f.effect);
-    for (std::size_t j = 0; j < f.params.size(); ++j)
-      std::cout << " " << f.param_names[j] << "=" << f.params[j];
-    std::cout << "\n";
-  }
+  rheomag::test::print_findings(d);
   for (const auto& note : d.notes) std::cout << "  note: " << note << "\n";
 }
 
