@@ -17,7 +17,7 @@ using namespace rheomag::lumped;
 
 namespace {
 
-const std::string kData = std::string(RHEOMAG_SOURCE_DIR) + "/../shared/data/utfsm/";
+const std::string kData = std::string(RHEOMAG_SHARED_DIR) + "/data/utfsm/";
 const std::vector<std::string> kCurrents = {"0A", "0x25A", "0x5A", "0x75A", "1A"};
 const std::vector<std::string> kModels = {"damper",  "bouc-wen", "lugre",      "dahl",
                                           "maxwell", "bingham",  "bi-viscous", "tanh"};

@@ -26,7 +26,7 @@ BENCHMARK(BM_SimulateBypassRig10s1kHz)->Unit(benchmark::kMillisecond);
 
 static void BM_FitBoucWenMrdamper(benchmark::State& state) {
   const Recording rec =
-      read_recording(std::string(RHEOMAG_SOURCE_DIR) + "/../shared/data/mrdamper/mrdamper.csv");
+      read_recording(std::string(RHEOMAG_SHARED_DIR) + "/data/mrdamper/mrdamper.csv");
   GreyboxOptions options;
   options.train = SampleRange{0, 2000};
   options.starts = static_cast<int>(state.range(0));

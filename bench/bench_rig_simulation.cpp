@@ -24,8 +24,8 @@ using namespace rheomag;
 
 const lumped::Recording& dyke_recording() {
   static const lumped::Recording rec = [] {
-    auto r = lumped::read_csv_samples(std::string(RHEOMAG_SOURCE_DIR) +
-                                      "/../shared/data/dyke1996/ranran_50.csv");
+    auto r =
+        lumped::read_csv_samples(std::string(RHEOMAG_SHARED_DIR) + "/data/dyke1996/ranran_50.csv");
     r.meta = lumped::read_sidecar(std::string(RHEOMAG_SOURCE_DIR) +
                                   "/tests/data/diagnosis/dyke1996.toml");
     return r;
