@@ -34,13 +34,25 @@ bool has_effect(const ModelFit& f, Effect e) {
   return std::find(f.effects.begin(), f.effects.end(), e) != f.effects.end();
 }
 
-/// True if `c` was fitted at the first step (not screened out) and did not make the fit clearly
-/// worse (BIC up by more than `margin`): a candidate masked by a larger effect then still gets its
-/// second chance.
-bool worth_retrying(const std::vector<CandidateScore>& scores, Effect c, double margin) {
-  for (const auto& s : scores)
-    if (s.step == 0 && s.effect == c) return !s.screened && s.delta_bic > -margin;
-  return false;
+/// Whether candidate `c` is tried again at `step` (> 0). A candidate fitted at the first step is
+/// retried unless it made the fit clearly worse alone (BIC up by more than `margin`): masked by
+/// a larger effect, it still gets its second chance. A candidate screened out at the first step
+/// (no decade of its parameter helped the bare baseline) is re-screened once, at the step after
+/// the first accepted effect: an effect can be invisible beside another one it sits next to (a
+/// Coulomb step beside a chamber compliance that is not yet in) and show once that one is in.
+/// From then on its second-step score decides, by the same rule.
+bool worth_retrying(const std::vector<CandidateScore>& scores, Effect c, int step, double margin) {
+  auto score_at = [&](int at) -> const CandidateScore* {
+    for (const auto& s : scores)
+      if (s.step == at && s.effect == c) return &s;
+    return nullptr;
+  };
+  const CandidateScore* first = score_at(0);
+  if (!first) return false;
+  if (!first->screened) return first->delta_bic > -margin;
+  if (step == 1) return true;
+  const CandidateScore* second = score_at(1);
+  return second && !second->screened && second->delta_bic > -margin;
 }
 
 /// Candidates whose output fits tie (within 5 % of the best's improvement) are told apart by
@@ -367,16 +379,30 @@ std::string rejection(const DiagnosisModel& model, const ModelFit& current, cons
                       Effect effect, double delta_bic, double floor_sse,
                       const DiagnoseOptions& options, double& share) {
   const std::string head = effect_name(effect) + " lowered BIC by " + fmt(delta_bic);
+  // What the candidate itself explains: the gain over the current model, but no more than the
+  // error its fit gains back when the candidate alone is switched off (every other parameter
+  // as fitted). A fit that only finishes converging the current model's own parameters (a
+  // Coulomb force of a milli-newton beside a re-fitted compliance) is not credited with that.
+  const auto without = std::vector<Effect>(fit.effects.begin(), fit.effects.end() - 1);
+  const auto without_values = std::vector<double>(
+      fit.values.begin(),
+      fit.values.end() - static_cast<std::ptrdiff_t>(model.effect_params(effect).size()));
+  double sse_off = std::numeric_limits<double>::infinity();
+  try {
+    sse_off = masked_sse(model.measured(), model.predict(without, without_values), {});
+  } catch (const ConvergenceError&) {
+  }
+  const double gain = std::min(current.sse, sse_off) - fit.sse;
   // Practical significance: a material share of the residual energy above the noise floor.
   const double excess = current.sse - floor_sse;
-  share = excess > 0.0 ? (current.sse - fit.sse) / excess : 0.0;
+  share = excess > 0.0 ? gain / excess : 0.0;
   if (share < options.min_share)
     return head + " but removed only " + fmt(100 * share, 2) +
            " % of the residual energy above the noise floor: not accepted";
   // Materiality against the noise: the output change it explains, in rms over the recording,
   // at least min_noise_multiple noise standard deviations (floor_sse = n sigma^2).
   const double explained_rms_in_sigma =
-      floor_sse > 0.0 ? std::sqrt(std::max(current.sse - fit.sse, 0.0) / floor_sse) : 1e300;
+      floor_sse > 0.0 ? std::sqrt(std::max(gain, 0.0) / floor_sse) : 1e300;
   if (explained_rms_in_sigma < options.min_noise_multiple)
     return head + " but the output change it explains is only " + fmt(explained_rms_in_sigma, 2) +
            " noise standard deviations in rms (at least " + fmt(options.min_noise_multiple, 2) +
@@ -575,8 +601,8 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, double fl
     for (Effect c : candidates) {
       if (std::find(current.effects.begin(), current.effects.end(), c) != current.effects.end())
         continue;
-      // After the first step, candidates that made the fit clearly worse alone are not retried.
-      if (!first_step && !worth_retrying(d.candidates, c, options.bic_margin)) continue;
+      // After the first step, candidates that made the fit clearly worse are not retried.
+      if (!first_step && !worth_retrying(d.candidates, c, step, options.bic_margin)) continue;
       // Eddy currents and MR response time are the same first-order lag block in the rig model:
       // when neither is in yet, the second is the first's fit under another name.
       if (c == Effect::eddy_currents && !has_effect(current, Effect::mr_response_time)) {
