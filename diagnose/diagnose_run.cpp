@@ -436,6 +436,59 @@ std::string rejection(const DiagnosisModel& model, const ModelFit& current, cons
   return "";
 }
 
+/// Drops from `d` (and from `fit`, the final joint re-fit) each finding that no longer passes the
+/// practical-significance and noise bars inside the joint model: switched off there with every
+/// other parameter as fitted, the error rises by less than `min_share` of the residual above the
+/// noise floor or less than `min_noise_multiple` noise deviations in rms. A finding accepted
+/// beside another can fade in the joint re-fit (a Coulomb force that ends at a few newtons
+/// once a compliance and the static map are re-fitted with it); it is then not reported.
+void drop_faded_findings(const DiagnosisModel& model, ModelFit& fit, double floor_sse,
+                         const DiagnoseOptions& options, Diagnosis& d) {
+  bool dropped = true;
+  while (dropped && fit.effects.size() > 1) {
+    dropped = false;
+    std::size_t offset = model.static_params().size();
+    for (std::size_t i = 0; i < fit.effects.size(); ++i) {
+      const std::size_t k = model.effect_params(fit.effects[i]).size();
+      auto effects = fit.effects;
+      effects.erase(effects.begin() + static_cast<std::ptrdiff_t>(i));
+      auto values = fit.values;
+      values.erase(values.begin() + static_cast<std::ptrdiff_t>(offset),
+                   values.begin() + static_cast<std::ptrdiff_t>(offset + k));
+      offset += k;
+      std::vector<double> without;
+      try {
+        without = model.predict(effects, values);
+      } catch (const ConvergenceError&) {
+        continue;
+      }
+      const double sse_off = masked_sse(model.measured(), without, {});
+      const double gain = sse_off - fit.sse;
+      const double excess = sse_off - floor_sse;
+      const bool material =
+          excess > 0.0 && gain >= options.min_share * excess &&
+          gain >= options.min_noise_multiple * options.min_noise_multiple * floor_sse;
+      if (material) continue;
+      const Effect e = fit.effects[i];
+      d.notes.push_back(effect_name(e) +
+                        " was accepted in forward selection but in the joint "
+                        "re-fit it explains only " +
+                        fmt(excess > 0.0 ? 100 * gain / excess : 0.0, 2) +
+                        " % of the residual energy above the noise floor: not reported");
+      d.findings.erase(std::remove_if(d.findings.begin(), d.findings.end(),
+                                      [e](const Finding& f) { return f.effect == e; }),
+                       d.findings.end());
+      // The model without it, its parameters as fitted (standard errors from one evaluation).
+      FitSettings s;
+      s.max_iterations = 0;
+      s.threads = options.threads;
+      fit = fit_model(model, effects, values, s);
+      dropped = true;
+      break;
+    }
+  }
+}
+
 /// Static start values; the pre-yield smoothness (when calibrated) from a decade grid, since a
 /// plug switch much narrower than a sample's flow step leaves the error flat in it.
 std::vector<double> nuisance_start(const DiagnosisModel& model, int threads) {
@@ -813,6 +866,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
       refit = fit_model(model, current.effects, current.values, final_settings);
     }
     current = std::move(refit);
+    drop_faded_findings(model, current, floor_sse, options, d);
   }
   clock.stage("joint re-fit");
   d.final_fit = current;
