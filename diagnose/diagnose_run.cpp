@@ -38,21 +38,13 @@ bool has_effect(const ModelFit& f, Effect e) {
 /// retried unless it made the fit clearly worse alone (BIC up by more than `margin`): masked by
 /// a larger effect, it still gets its second chance. A candidate screened out at the first step
 /// (no decade of its parameter helped the bare baseline) is re-screened once, at the step after
-/// the first accepted effect: an effect can be invisible beside another one it sits next to (a
-/// Coulomb step beside a chamber compliance that is not yet in) and show once that one is in.
-/// From then on its second-step score decides, by the same rule.
+/// the first accepted effect, and not after it: an effect can be invisible beside the one it
+/// sits next to (a Coulomb step beside a chamber compliance that is not yet in) and show once
+/// that one is in; one that shows only after two others is not looked for.
 bool worth_retrying(const std::vector<CandidateScore>& scores, Effect c, int step, double margin) {
-  auto score_at = [&](int at) -> const CandidateScore* {
-    for (const auto& s : scores)
-      if (s.step == at && s.effect == c) return &s;
-    return nullptr;
-  };
-  const CandidateScore* first = score_at(0);
-  if (!first) return false;
-  if (!first->screened) return first->delta_bic > -margin;
-  if (step == 1) return true;
-  const CandidateScore* second = score_at(1);
-  return second && !second->screened && second->delta_bic > -margin;
+  for (const auto& s : scores)
+    if (s.step == 0 && s.effect == c) return s.screened ? step == 1 : s.delta_bic > -margin;
+  return false;
 }
 
 /// Candidates whose output fits tie (within 5 % of the best's improvement) are told apart by
