@@ -9,6 +9,7 @@
 #include <memory>
 #include <sstream>
 #include <thread>
+#include <utility>
 
 #include "core/error.hpp"
 #include "diagnose/diagnose_noise.hpp"
@@ -363,6 +364,31 @@ constexpr std::size_t kMaxTries = 3;
 double size_relative_se(const DiagnosisModel& model, const ModelFit& fit, int threads);
 double resolved_time_constant(const DiagnosisModel& model, const ModelFit& fit);
 
+/// Effects and parameter values of a model.
+struct EffectSet {
+  std::vector<Effect> effects;
+  std::vector<double> values;
+};
+
+/// `fit` with its i-th effect switched off (removed, every other parameter as fitted), and that
+/// model's squared error (infinite when it cannot be simulated).
+std::pair<EffectSet, double> sse_switched_off(const DiagnosisModel& model, const ModelFit& fit,
+                                              std::size_t i) {
+  std::size_t offset = model.static_params().size();
+  for (std::size_t j = 0; j < i; ++j) offset += model.effect_params(fit.effects[j]).size();
+  const std::size_t k = model.effect_params(fit.effects[i]).size();
+  EffectSet without{fit.effects, fit.values};
+  without.effects.erase(without.effects.begin() + static_cast<std::ptrdiff_t>(i));
+  without.values.erase(without.values.begin() + static_cast<std::ptrdiff_t>(offset),
+                       without.values.begin() + static_cast<std::ptrdiff_t>(offset + k));
+  double sse = std::numeric_limits<double>::infinity();
+  try {
+    sse = masked_sse(model.measured(), model.predict(without.effects, without.values), {});
+  } catch (const ConvergenceError&) {
+  }
+  return {std::move(without), sse};
+}
+
 /// Why a candidate fit that lowered BIC is still not accepted ("" if nothing speaks against it
 /// before the held-out check): it removes too small a share of the residual energy above the
 /// noise floor (`share` returns the share), its time constant is shorter than a sample, or its
@@ -375,15 +401,7 @@ std::string rejection(const DiagnosisModel& model, const ModelFit& current, cons
   // error its fit gains back when the candidate alone is switched off (every other parameter
   // as fitted). A fit that only finishes converging the current model's own parameters (a
   // Coulomb force of a milli-newton beside a re-fitted compliance) is not credited with that.
-  const auto without = std::vector<Effect>(fit.effects.begin(), fit.effects.end() - 1);
-  const auto without_values = std::vector<double>(
-      fit.values.begin(),
-      fit.values.end() - static_cast<std::ptrdiff_t>(model.effect_params(effect).size()));
-  double sse_off = std::numeric_limits<double>::infinity();
-  try {
-    sse_off = masked_sse(model.measured(), model.predict(without, without_values), {});
-  } catch (const ConvergenceError&) {
-  }
+  const double sse_off = sse_switched_off(model, fit, fit.effects.size() - 1).second;
   const double gain = std::min(current.sse, sse_off) - fit.sse;
   // Practical significance: a material share of the residual energy above the noise floor.
   const double excess = current.sse - floor_sse;
@@ -439,22 +457,9 @@ void drop_faded_findings(const DiagnosisModel& model, ModelFit& fit, double floo
   bool dropped = true;
   while (dropped && fit.effects.size() > 1) {
     dropped = false;
-    std::size_t offset = model.static_params().size();
     for (std::size_t i = 0; i < fit.effects.size(); ++i) {
-      const std::size_t k = model.effect_params(fit.effects[i]).size();
-      auto effects = fit.effects;
-      effects.erase(effects.begin() + static_cast<std::ptrdiff_t>(i));
-      auto values = fit.values;
-      values.erase(values.begin() + static_cast<std::ptrdiff_t>(offset),
-                   values.begin() + static_cast<std::ptrdiff_t>(offset + k));
-      offset += k;
-      std::vector<double> without;
-      try {
-        without = model.predict(effects, values);
-      } catch (const ConvergenceError&) {
-        continue;
-      }
-      const double sse_off = masked_sse(model.measured(), without, {});
+      const auto [without, sse_off] = sse_switched_off(model, fit, i);
+      if (!std::isfinite(sse_off)) continue;
       const double gain = sse_off - fit.sse;
       const double excess = sse_off - floor_sse;
       const bool material =
@@ -474,7 +479,7 @@ void drop_faded_findings(const DiagnosisModel& model, ModelFit& fit, double floo
       FitSettings s;
       s.max_iterations = 0;
       s.threads = options.threads;
-      fit = fit_model(model, effects, values, s);
+      fit = fit_model(model, without.effects, without.values, s);
       dropped = true;
       break;
     }
