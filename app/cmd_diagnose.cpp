@@ -50,7 +50,11 @@ void print_summary(const diagnose::Diagnosis& d) {
   for (const auto& item : d.includes)
     std::cout << "  baseline has " << item.name << ": " << item.source << "\n";
   const auto& u = d.nuisance;
-  std::cout << "  nuisance: delay " << 1e3 * u.delay << " ms (" << u.delay_samples << " samples)";
+  std::cout << "  nuisance: delay " << 1e3 * u.delay << " ms (" << u.delay_samples << " samples)"
+            << ", drives " << diagnose::kDriveSamplingNames.name(u.drive_sampling)
+            << " between samples";
+  if (std::isfinite(u.sampling_fit_gain))
+    std::cout << " (" << u.sampling_fit_gain << " FIT points better than the other convention)";
   if (u.preyield_flow > 0.0)
     std::cout << ", pre-yield smoothing " << 100 * u.preyield_fraction << " % of peak flow";
   std::cout << "\n";

@@ -9,6 +9,7 @@
 #include <memory>
 #include <sstream>
 #include <thread>
+#include <utility>
 
 #include "core/error.hpp"
 #include "diagnose/diagnose_noise.hpp"
@@ -34,12 +35,16 @@ bool has_effect(const ModelFit& f, Effect e) {
   return std::find(f.effects.begin(), f.effects.end(), e) != f.effects.end();
 }
 
-/// True if `c` was fitted at the first step (not screened out) and did not make the fit clearly
-/// worse (BIC up by more than `margin`): a candidate masked by a larger effect then still gets its
-/// second chance.
-bool worth_retrying(const std::vector<CandidateScore>& scores, Effect c, double margin) {
+/// Whether candidate `c` is tried again at `step` (> 0). A candidate fitted at the first step is
+/// retried unless it made the fit clearly worse alone (BIC up by more than `margin`): masked by
+/// a larger effect, it still gets its second chance. A candidate screened out at the first step
+/// (no decade of its parameter helped the bare baseline) is re-screened once, at the step after
+/// the first accepted effect, and not after it: an effect can be invisible beside the one it
+/// sits next to (a Coulomb step beside a chamber compliance that is not yet in) and show once
+/// that one is in; one that shows only after two others is not looked for.
+bool worth_retrying(const std::vector<CandidateScore>& scores, Effect c, int step, double margin) {
   for (const auto& s : scores)
-    if (s.step == 0 && s.effect == c) return !s.screened && s.delta_bic > -margin;
+    if (s.step == 0 && s.effect == c) return s.screened ? step == 1 : s.delta_bic > -margin;
   return false;
 }
 
@@ -359,6 +364,31 @@ constexpr std::size_t kMaxTries = 3;
 double size_relative_se(const DiagnosisModel& model, const ModelFit& fit, int threads);
 double resolved_time_constant(const DiagnosisModel& model, const ModelFit& fit);
 
+/// Effects and parameter values of a model.
+struct EffectSet {
+  std::vector<Effect> effects;
+  std::vector<double> values;
+};
+
+/// `fit` with its i-th effect switched off (removed, every other parameter as fitted), and that
+/// model's squared error (infinite when it cannot be simulated).
+std::pair<EffectSet, double> sse_switched_off(const DiagnosisModel& model, const ModelFit& fit,
+                                              std::size_t i) {
+  std::size_t offset = model.static_params().size();
+  for (std::size_t j = 0; j < i; ++j) offset += model.effect_params(fit.effects[j]).size();
+  const std::size_t k = model.effect_params(fit.effects[i]).size();
+  EffectSet without{fit.effects, fit.values};
+  without.effects.erase(without.effects.begin() + static_cast<std::ptrdiff_t>(i));
+  without.values.erase(without.values.begin() + static_cast<std::ptrdiff_t>(offset),
+                       without.values.begin() + static_cast<std::ptrdiff_t>(offset + k));
+  double sse = std::numeric_limits<double>::infinity();
+  try {
+    sse = masked_sse(model.measured(), model.predict(without.effects, without.values), {});
+  } catch (const ConvergenceError&) {
+  }
+  return {std::move(without), sse};
+}
+
 /// Why a candidate fit that lowered BIC is still not accepted ("" if nothing speaks against it
 /// before the held-out check): it removes too small a share of the residual energy above the
 /// noise floor (`share` returns the share), its time constant is shorter than a sample, or its
@@ -367,16 +397,22 @@ std::string rejection(const DiagnosisModel& model, const ModelFit& current, cons
                       Effect effect, double delta_bic, double floor_sse,
                       const DiagnoseOptions& options, double& share) {
   const std::string head = effect_name(effect) + " lowered BIC by " + fmt(delta_bic);
+  // What the candidate itself explains: the gain over the current model, but no more than the
+  // error its fit gains back when the candidate alone is switched off (every other parameter
+  // as fitted). A fit that only finishes converging the current model's own parameters (a
+  // Coulomb force of a milli-newton beside a re-fitted compliance) is not credited with that.
+  const double sse_off = sse_switched_off(model, fit, fit.effects.size() - 1).second;
+  const double gain = std::min(current.sse, sse_off) - fit.sse;
   // Practical significance: a material share of the residual energy above the noise floor.
   const double excess = current.sse - floor_sse;
-  share = excess > 0.0 ? (current.sse - fit.sse) / excess : 0.0;
+  share = excess > 0.0 ? gain / excess : 0.0;
   if (share < options.min_share)
     return head + " but removed only " + fmt(100 * share, 2) +
            " % of the residual energy above the noise floor: not accepted";
   // Materiality against the noise: the output change it explains, in rms over the recording,
   // at least min_noise_multiple noise standard deviations (floor_sse = n sigma^2).
   const double explained_rms_in_sigma =
-      floor_sse > 0.0 ? std::sqrt(std::max(current.sse - fit.sse, 0.0) / floor_sse) : 1e300;
+      floor_sse > 0.0 ? std::sqrt(std::max(gain, 0.0) / floor_sse) : 1e300;
   if (explained_rms_in_sigma < options.min_noise_multiple)
     return head + " but the output change it explains is only " + fmt(explained_rms_in_sigma, 2) +
            " noise standard deviations in rms (at least " + fmt(options.min_noise_multiple, 2) +
@@ -408,6 +444,46 @@ std::string rejection(const DiagnosisModel& model, const ModelFit& current, cons
            (std::isfinite(rse) ? fmt(100 * rse, 2) + " %" : std::string("unbounded")) +
            "): not accepted";
   return "";
+}
+
+/// Drops from `d` (and from `fit`, the final joint re-fit) each finding that no longer passes the
+/// practical-significance and noise bars inside the joint model: switched off there with every
+/// other parameter as fitted, the error rises by less than `min_share` of the residual above the
+/// noise floor or less than `min_noise_multiple` noise deviations in rms. A finding accepted
+/// beside another can fade in the joint re-fit (a Coulomb force that ends at a few newtons
+/// once a compliance and the static map are re-fitted with it); it is then not reported.
+void drop_faded_findings(const DiagnosisModel& model, ModelFit& fit, double floor_sse,
+                         const DiagnoseOptions& options, Diagnosis& d) {
+  bool dropped = true;
+  while (dropped && fit.effects.size() > 1) {
+    dropped = false;
+    for (std::size_t i = 0; i < fit.effects.size(); ++i) {
+      const auto [without, sse_off] = sse_switched_off(model, fit, i);
+      if (!std::isfinite(sse_off)) continue;
+      const double gain = sse_off - fit.sse;
+      const double excess = sse_off - floor_sse;
+      const bool material =
+          excess > 0.0 && gain >= options.min_share * excess &&
+          gain >= options.min_noise_multiple * options.min_noise_multiple * floor_sse;
+      if (material) continue;
+      const Effect e = fit.effects[i];
+      d.notes.push_back(effect_name(e) +
+                        " was accepted in forward selection but in the joint "
+                        "re-fit it explains only " +
+                        fmt(excess > 0.0 ? 100 * gain / excess : 0.0, 2) +
+                        " % of the residual energy above the noise floor: not reported");
+      d.findings.erase(std::remove_if(d.findings.begin(), d.findings.end(),
+                                      [e](const Finding& f) { return f.effect == e; }),
+                       d.findings.end());
+      // The model without it, its parameters as fitted (standard errors from one evaluation).
+      FitSettings s;
+      s.max_iterations = 0;
+      s.threads = options.threads;
+      fit = fit_model(model, without.effects, without.values, s);
+      dropped = true;
+      break;
+    }
+  }
 }
 
 /// Static start values; the pre-yield smoothness (when calibrated) from a decade grid, since a
@@ -575,8 +651,8 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, double fl
     for (Effect c : candidates) {
       if (std::find(current.effects.begin(), current.effects.end(), c) != current.effects.end())
         continue;
-      // After the first step, candidates that made the fit clearly worse alone are not retried.
-      if (!first_step && !worth_retrying(d.candidates, c, options.bic_margin)) continue;
+      // After the first step, candidates that made the fit clearly worse are not retried.
+      if (!first_step && !worth_retrying(d.candidates, c, step, options.bic_margin)) continue;
       // Eddy currents and MR response time are the same first-order lag block in the rig model:
       // when neither is in yet, the second is the first's fit under another name.
       if (c == Effect::eddy_currents && !has_effect(current, Effect::mr_response_time)) {
@@ -787,6 +863,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
       refit = fit_model(model, current.effects, current.values, final_settings);
     }
     current = std::move(refit);
+    drop_faded_findings(model, current, floor_sse, options, d);
   }
   clock.stage("joint re-fit");
   d.final_fit = current;
