@@ -479,9 +479,15 @@ std::string rejection(const DiagnosisModel& model, const ModelFit& current, cons
            " needed): below the noise, not accepted";
   }
   // A time constant shorter than one sample interval cannot be told from the recording's own
-  // timing (channel skew, held drives), which the delay nuisance already absorbs.
+  // timing (channel skew, held drives), which the delay nuisance already absorbs; except a coil
+  // inductance fitted to the coil current itself (the output of a coil bench): there the L/R
+  // lag is the only dynamics between the recorded voltage and the recorded output, and its
+  // exponential approach after each step is not a shift (a delay moves the whole step; the
+  // lag's remainder decays over the following samples at a rate the step heights fix).
+  const bool lag_on_output =
+      effect == Effect::coil_inductance && model.output_column() == "current";
   if (const double tau = resolved_time_constant(model, fit);
-      tau > 0.0 && tau < model.sample_interval())
+      tau > 0.0 && tau < model.sample_interval() && !lag_on_output)
     return head + " with a time constant of " + fmt(1e3 * tau) +
            " ms, shorter than one sample interval (" + fmt(1e3 * model.sample_interval()) +
            " ms): not told apart from the recording's timing; not accepted";
