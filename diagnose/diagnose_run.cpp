@@ -213,33 +213,29 @@ TwoSse two_sse(const std::vector<double>& measured, const std::vector<double>& p
 }
 
 /// Held-out squared error: fit on even blocks, score on odd, and the other way round (the two
-/// folds on two threads when `threads` > 1); scored on every held-out sample and, when the
-/// prediction steps, again with both folds fitted and scored on the samples away from steps
-/// only (the residual at a step is its unrecorded timing: a fold fitted to it moves the delay
-/// and the candidate with the few steps the fold holds).
-TwoSse heldout_sse(const DiagnosisModel& model, const ModelFit& full, int blocks, int iterations,
-                   int threads, const Evidence& evidence) {
-  TwoSse fold_sse[2];
+/// folds on two threads when `threads` > 1); only on the samples of `keep` when it is not empty
+/// (the samples away from steps: a fold fitted to the steps' residual moves the delay and the
+/// candidate with the few steps the fold holds).
+double heldout_sse(const DiagnosisModel& model, const ModelFit& full, int blocks, int iterations,
+                   int threads, const std::vector<bool>& keep) {
+  double fold_sse[2] = {0.0, 0.0};
   std::exception_ptr failure[2];
   auto fold = [&](int k) {
     try {
       FitSettings s;
       s.mask = block_mask(model.measured().size(), blocks, k == 0);
+      auto other = s.mask;
+      other.flip();
+      for (std::size_t i = 0; i < keep.size(); ++i) {
+        s.mask[i] = s.mask[i] && keep[i];
+        other[i] = other[i] && keep[i];
+      }
       s.max_iterations = iterations;
       s.threads = threads > 1 ? std::max(threads / 2, 1) : 1;
       s.standard_errors = false;
       s.projected_line_search = true;
       const auto f = fit_model(model, full.effects, full.values, s);
-      auto other = s.mask;
-      other.flip();
-      fold_sse[k].all = fold_sse[k].away = masked_sse(model.measured(), f.prediction, other);
-      if (evidence.away.empty()) return;
-      for (std::size_t i = 0; i < evidence.away.size(); ++i) {
-        s.mask[i] = s.mask[i] && evidence.away[i];
-        other[i] = other[i] && evidence.away[i];
-      }
-      const auto g = fit_model(model, full.effects, full.values, s);
-      fold_sse[k].away = masked_sse(model.measured(), g.prediction, other);
+      fold_sse[k] = masked_sse(model.measured(), f.prediction, other);
     } catch (...) {
       failure[k] = std::current_exception();
     }
@@ -254,7 +250,7 @@ TwoSse heldout_sse(const DiagnosisModel& model, const ModelFit& full, int blocks
   }
   for (const auto& e : failure)
     if (e) std::rethrow_exception(e);
-  return {fold_sse[0].all + fold_sse[1].all, fold_sse[0].away + fold_sse[1].away};
+  return fold_sse[0] + fold_sse[1];
 }
 
 std::string num(double v) {
@@ -715,7 +711,8 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evi
     return bic(two_sse(y, before.prediction, evidence).away, n_away, before.values.size()) -
            bic(two_sse(y, after.prediction, evidence).away, n_away, after.values.size());
   };
-  TwoSse held_current{-1.0, -1.0};  // held-out error of `current`, once known
+  // Held-out error of `current` on every sample and away from steps, once known (< 0: not yet).
+  TwoSse held_current{-1.0, -1.0};
   const auto candidates = model.applicable_effects();
   for (int step = 0; step < options.max_effects; ++step) {
     struct Tried {
@@ -819,20 +816,23 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evi
         continue;
       }
       if (!on_all) share = share_away;
-      const TwoSse held_now = held_current.all >= 0.0
-                                  ? held_current
-                                  : heldout_sse(model, current, options.blocks, cv_iterations,
-                                                options.threads, evidence);
-      held_current = held_now;
-      held_new =
-          heldout_sse(model, c.fit, options.blocks, cv_iterations, options.threads, evidence);
-      clock.stage("held-out check of " + effect_name(c.effect));
-      gain = on_all && held_now.all > 0 ? 1.0 - held_new.all / held_now.all
-                                        : -std::numeric_limits<double>::infinity();
-      if (on_away && held_now.away > 0) {
-        const double gain_away = 1.0 - held_new.away / held_now.away;
+      // The held-out check on the set(s) the candidate passed on; away from steps only when
+      // every sample does not already show the gain (each check costs four fold fits).
+      auto held_gain = [&](bool away, double& now, double& with) {
+        const auto& keep = away ? evidence.away : std::vector<bool>{};
+        if (now < 0.0)
+          now = heldout_sse(model, current, options.blocks, cv_iterations, options.threads, keep);
+        with = heldout_sse(model, c.fit, options.blocks, cv_iterations, options.threads, keep);
+        return now > 0.0 ? 1.0 - with / now : 0.0;
+      };
+      held_new = {-1.0, -1.0};
+      gain = on_all ? held_gain(false, held_current.all, held_new.all)
+                    : -std::numeric_limits<double>::infinity();
+      if (on_away && gain < options.heldout_margin) {
+        const double gain_away = held_gain(true, held_current.away, held_new.away);
         if (gain_away > gain) gain = gain_away, share = share_away;
       }
+      clock.stage("held-out check of " + effect_name(c.effect));
       if (gain < options.heldout_margin) {
         d.notes.push_back(effect_name(c.effect) + " lowered BIC by " + fmt(c.delta_bic) +
                           " but cut the held-out error by only " + fmt(100 * gain, 2) +
