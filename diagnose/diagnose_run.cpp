@@ -792,32 +792,9 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evi
     std::size_t accepted = tried.size();
     for (std::size_t i = 0; i < tried.size() && i < kMaxTries; ++i) {
       const auto& c = tried[i];
-      // Every test is passed on one sample set: every sample, or those away from steps.
-      const double db_away = evidence.away.empty() ? -std::numeric_limits<double>::infinity()
-                                                   : delta_bic_away(current, c.fit);
-      if (c.delta_bic <= options.bic_margin && db_away <= options.bic_margin) continue;
-      std::string why;
-      double share_away = 0.0;
-      bool on_all = false, on_away = false;
-      if (c.delta_bic > options.bic_margin) {
-        why = rejection(model, current, c.fit, c.effect, c.delta_bic, evidence, false, options,
-                        share);
-        on_all = why.empty();
-      }
-      if (db_away > options.bic_margin) {
-        const auto why_away = rejection(model, current, c.fit, c.effect, db_away, evidence, true,
-                                        options, share_away);
-        on_away = why_away.empty();
-        if (why.empty() && !on_all) why = why_away;
-      }
-      if (!on_all && !on_away) {
-        d.notes.push_back(why);
-        rejected.push_back(c.effect);
-        continue;
-      }
-      if (!on_all) share = share_away;
-      // The held-out check on the set(s) the candidate passed on; away from steps only when
-      // every sample does not already show the gain (each check costs four fold fits).
+      // Every test is passed on one sample set: every sample, or those away from steps. The
+      // second set is tried only when the first does not already accept the candidate (each
+      // try costs a Jacobian and, past the tests, four fold fits).
       auto held_gain = [&](bool away, double& now, double& with) {
         const auto& keep = away ? evidence.away : std::vector<bool>{};
         if (now < 0.0)
@@ -826,11 +803,36 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evi
         return now > 0.0 ? 1.0 - with / now : 0.0;
       };
       held_new = {-1.0, -1.0};
-      gain = on_all ? held_gain(false, held_current.all, held_new.all)
-                    : -std::numeric_limits<double>::infinity();
-      if (on_away && gain < options.heldout_margin) {
-        const double gain_away = held_gain(true, held_current.away, held_new.away);
-        if (gain_away > gain) gain = gain_away, share = share_away;
+      std::string why;
+      bool tested = false;  // passed the tests before the held-out check on some set
+      gain = -std::numeric_limits<double>::infinity();
+      if (c.delta_bic > options.bic_margin) {
+        why = rejection(model, current, c.fit, c.effect, c.delta_bic, evidence, false, options,
+                        share);
+        if (why.empty()) {
+          tested = true;
+          gain = held_gain(false, held_current.all, held_new.all);
+        }
+      }
+      if (gain < options.heldout_margin && !evidence.away.empty()) {
+        const double db_away = delta_bic_away(current, c.fit);
+        double share_away = 0.0;
+        const auto why_away = db_away > options.bic_margin
+                                  ? rejection(model, current, c.fit, c.effect, db_away, evidence,
+                                              true, options, share_away)
+                                  : std::string("-");
+        if (why_away.empty()) {
+          tested = true;
+          const double gain_away = held_gain(true, held_current.away, held_new.away);
+          if (gain_away > gain) gain = gain_away, share = share_away;
+        } else if (why.empty() && !tested && why_away != "-") {
+          why = why_away;
+        }
+      }
+      if (!tested) {
+        if (!why.empty()) d.notes.push_back(why);
+        if (!why.empty()) rejected.push_back(c.effect);
+        continue;
       }
       clock.stage("held-out check of " + effect_name(c.effect));
       if (gain < options.heldout_margin) {
