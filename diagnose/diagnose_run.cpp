@@ -190,6 +190,7 @@ struct Evidence {
   double floor_away = 0.0;  ///< the same on the samples away from steps
 };
 
+/// The Evidence of a baseline prediction whose residual has white noise of deviation `sigma`.
 Evidence evidence_of(const std::vector<double>& baseline_prediction, double sigma) {
   Evidence e;
   e.away = away_from_steps(baseline_prediction);
@@ -206,6 +207,7 @@ struct TwoSse {
   double all = 0.0, away = 0.0;
 };
 
+/// The squared error of `prediction` against `measured` on both sample sets of `e`.
 TwoSse two_sse(const std::vector<double>& measured, const std::vector<double>& prediction,
                const Evidence& e) {
   const double all = masked_sse(measured, prediction, {});
