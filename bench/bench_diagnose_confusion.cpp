@@ -614,7 +614,8 @@ Outcome run(const Draw& drawn, unsigned seed, bool visible) {
           o.truth_in_ambiguous = true;
       for (const auto& g : d.findings) {
         o.all_named += (o.all_named.empty() ? "" : "+") + diagnose::effect_name(g.effect) + "(" +
-                       fmt(g.params.front()) + ")";
+                       fmt(g.params.front()) +
+                       (g.params.size() > 1 ? "," + fmt(g.params[1]) : std::string()) + ")";
         named_classes.push_back(effect_class(diagnose::effect_name(g.effect)));
       }
     }

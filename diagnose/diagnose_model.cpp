@@ -63,18 +63,9 @@ double median_interval(const std::vector<double>& t) {
 
 namespace {
 
-/// True if `u` moves within one sample interval by more than 5 % of its range and more than ten
-/// times its median move per interval (a step, not noise) somewhere.
+/// True if `u` steps somewhere (step_intervals).
 bool steps(const std::vector<double>& u) {
-  if (u.size() < 3) return false;
-  std::vector<double> move(u.size() - 1);
-  for (std::size_t k = 0; k + 1 < u.size(); ++k) move[k] = std::abs(u[k + 1] - u[k]);
-  auto sorted = move;
-  const auto mid = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
-  std::nth_element(sorted.begin(), mid, sorted.end());
-  const auto [lo, hi] = std::minmax_element(u.begin(), u.end());
-  const double step = std::max(0.05 * (*hi - *lo), 10.0 * *mid);
-  return step > 0.0 && std::any_of(move.begin(), move.end(), [&](double m) { return m > step; });
+  return !step_intervals(u).empty();
 }
 
 }  // namespace

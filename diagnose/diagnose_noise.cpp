@@ -29,6 +29,30 @@ double noise_sigma(const std::vector<double>& x) {
   return 1.4826 * median(d) / std::sqrt(20.0);
 }
 
+std::vector<std::size_t> step_intervals(const std::vector<double>& u) {
+  if (u.size() < 3) return {};
+  std::vector<double> move(u.size() - 1);
+  for (std::size_t k = 0; k + 1 < u.size(); ++k) move[k] = std::abs(u[k + 1] - u[k]);
+  auto sorted = move;
+  const auto [lo, hi] = std::minmax_element(u.begin(), u.end());
+  const double step = std::max(0.05 * (*hi - *lo), 10.0 * median(sorted));
+  std::vector<std::size_t> out;
+  if (!(step > 0.0)) return out;
+  for (std::size_t j = 0; j < move.size(); ++j)
+    if (move[j] > step) out.push_back(j);
+  return out;
+}
+
+std::vector<bool> away_from_steps(const std::vector<double>& prediction) {
+  const auto steps = step_intervals(prediction);
+  if (steps.empty()) return {};
+  const std::size_t n = prediction.size();
+  std::vector<bool> keep(n, true);
+  for (std::size_t j : steps)
+    for (std::size_t k = j > 0 ? j - 1 : 0; k <= std::min(j + 2, n - 1); ++k) keep[k] = false;
+  return keep;
+}
+
 SmoothedDrive savitzky_golay(const std::vector<double>& x, double dt, std::size_t half_width) {
   SmoothedDrive out;
   out.values = x;

@@ -13,6 +13,17 @@ namespace rheomag::diagnose {
 /// noise; a polynomial of degree <= 2 vanishes, the median ignores the few samples at edges).
 double noise_sigma(const std::vector<double>& x);
 
+/// Intervals j (between samples j and j + 1) across which `u` steps: it moves by more than 5 %
+/// of its range and more than ten times its median move per interval (a step, not noise).
+std::vector<std::size_t> step_intervals(const std::vector<double>& u);
+
+/// The samples that carry evidence beyond the recorder's timing (true): all but those within
+/// one sample interval of a step of `prediction` (samples j - 1 to j + 2 of each step interval
+/// j). A step between two samples happens at an instant the recording does not keep (channel
+/// skew, a held or smooth drive); a sample beside it is off by a share of the whole step that
+/// no model of the recorded drives can predict. Empty (every sample) when nothing steps.
+std::vector<bool> away_from_steps(const std::vector<double>& prediction);
+
 /// A noisy drive smoothed for the model: a cubic Savitzky-Golay filter (centred least-squares
 /// cubic over 2 half_width + 1 samples, zero phase; the first and last half_width samples are
 /// left as measured). A cubic passes any signal that is locally a cubic unchanged.

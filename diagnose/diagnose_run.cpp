@@ -180,23 +180,63 @@ std::vector<bool> block_mask(std::size_t n, int blocks, bool even) {
   return mask;
 }
 
+/// What no candidate can explain in a model's residual, on two sets of samples: every sample,
+/// and the samples away from the steps of the baseline's prediction (away_from_steps), whose
+/// values depend on the unrecorded sub-sample instant of a drive step. The white noise floor
+/// n sigma^2 is counted on each set.
+struct Evidence {
+  std::vector<bool> away;   ///< samples away from steps (empty: every sample)
+  double floor_all = 0.0;   ///< n sigma^2 on every sample
+  double floor_away = 0.0;  ///< the same on the samples away from steps
+};
+
+/// The Evidence of a baseline prediction whose residual has white noise of deviation `sigma`.
+Evidence evidence_of(const std::vector<double>& baseline_prediction, double sigma) {
+  Evidence e;
+  e.away = away_from_steps(baseline_prediction);
+  const auto n = static_cast<double>(baseline_prediction.size());
+  const auto n_away =
+      e.away.empty() ? n : static_cast<double>(std::count(e.away.begin(), e.away.end(), true));
+  e.floor_all = n * sigma * sigma;
+  e.floor_away = n_away * sigma * sigma;
+  return e;
+}
+
+/// A squared error on every sample and on the samples away from steps (Evidence).
+struct TwoSse {
+  double all = 0.0, away = 0.0;
+};
+
+/// The squared error of `prediction` against `measured` on both sample sets of `e`.
+TwoSse two_sse(const std::vector<double>& measured, const std::vector<double>& prediction,
+               const Evidence& e) {
+  const double all = masked_sse(measured, prediction, {});
+  return {all, e.away.empty() ? all : masked_sse(measured, prediction, e.away)};
+}
+
 /// Held-out squared error: fit on even blocks, score on odd, and the other way round (the two
-/// folds on two threads when `threads` > 1).
+/// folds on two threads when `threads` > 1); only on the samples of `keep` when it is not empty
+/// (the samples away from steps: a fold fitted to the steps' residual moves the delay and the
+/// candidate with the few steps the fold holds).
 double heldout_sse(const DiagnosisModel& model, const ModelFit& full, int blocks, int iterations,
-                   int threads) {
+                   int threads, const std::vector<bool>& keep) {
   double fold_sse[2] = {0.0, 0.0};
   std::exception_ptr failure[2];
   auto fold = [&](int k) {
     try {
       FitSettings s;
       s.mask = block_mask(model.measured().size(), blocks, k == 0);
+      auto other = s.mask;
+      other.flip();
+      for (std::size_t i = 0; i < keep.size(); ++i) {
+        s.mask[i] = s.mask[i] && keep[i];
+        other[i] = other[i] && keep[i];
+      }
       s.max_iterations = iterations;
       s.threads = threads > 1 ? std::max(threads / 2, 1) : 1;
       s.standard_errors = false;
       s.projected_line_search = true;
       const auto f = fit_model(model, full.effects, full.values, s);
-      auto other = s.mask;
-      other.flip();
       fold_sse[k] = masked_sse(model.measured(), f.prediction, other);
     } catch (...) {
       failure[k] = std::current_exception();
@@ -361,7 +401,8 @@ constexpr double kLoopNoiseRatio = 10.0;
 /// Most candidates tried for acceptance at one forward step (each costs a held-out check).
 constexpr std::size_t kMaxTries = 3;
 
-double size_relative_se(const DiagnosisModel& model, const ModelFit& fit, int threads);
+double size_relative_se(const DiagnosisModel& model, const ModelFit& fit, int threads,
+                        const std::vector<bool>& mask);
 double resolved_time_constant(const DiagnosisModel& model, const ModelFit& fit);
 
 /// Effects and parameter values of a model.
@@ -371,9 +412,9 @@ struct EffectSet {
 };
 
 /// `fit` with its i-th effect switched off (removed, every other parameter as fitted), and that
-/// model's squared error (infinite when it cannot be simulated).
-std::pair<EffectSet, double> sse_switched_off(const DiagnosisModel& model, const ModelFit& fit,
-                                              std::size_t i) {
+/// model's squared error on each sample set of `evidence` (infinite when it cannot be simulated).
+std::pair<EffectSet, TwoSse> sse_switched_off(const DiagnosisModel& model, const ModelFit& fit,
+                                              std::size_t i, const Evidence& evidence) {
   std::size_t offset = model.static_params().size();
   for (std::size_t j = 0; j < i; ++j) offset += model.effect_params(fit.effects[j]).size();
   const std::size_t k = model.effect_params(fit.effects[i]).size();
@@ -381,46 +422,70 @@ std::pair<EffectSet, double> sse_switched_off(const DiagnosisModel& model, const
   without.effects.erase(without.effects.begin() + static_cast<std::ptrdiff_t>(i));
   without.values.erase(without.values.begin() + static_cast<std::ptrdiff_t>(offset),
                        without.values.begin() + static_cast<std::ptrdiff_t>(offset + k));
-  double sse = std::numeric_limits<double>::infinity();
+  const double inf = std::numeric_limits<double>::infinity();
+  TwoSse sse{inf, inf};
   try {
-    sse = masked_sse(model.measured(), model.predict(without.effects, without.values), {});
+    sse = two_sse(model.measured(), model.predict(without.effects, without.values), evidence);
   } catch (const ConvergenceError&) {
   }
   return {std::move(without), sse};
 }
 
+/// Whether removing `gain` from a residual of `sse` is material: at least `min_share` of the
+/// energy above the noise floor `floor_sse` (the share is returned in `share`) and at least
+/// `min_noise_multiple` noise deviations in rms (in `rms_in_sigma`).
+bool material(double sse, double gain, double floor_sse, const DiagnoseOptions& options,
+              double& share, double& rms_in_sigma) {
+  const double excess = sse - floor_sse;
+  share = excess > 0.0 ? gain / excess : 0.0;
+  rms_in_sigma = floor_sse > 0.0 ? std::sqrt(std::max(gain, 0.0) / floor_sse) : 1e300;
+  return share >= options.min_share && rms_in_sigma >= options.min_noise_multiple;
+}
+
 /// Why a candidate fit that lowered BIC is still not accepted ("" if nothing speaks against it
 /// before the held-out check): it removes too small a share of the residual energy above the
 /// noise floor (`share` returns the share), its time constant is shorter than a sample, or its
-/// size parameter is not identified.
+/// size parameter is not identified. Measured on every sample, or (`away`) on the samples away
+/// from steps only (Evidence).
 std::string rejection(const DiagnosisModel& model, const ModelFit& current, const ModelFit& fit,
-                      Effect effect, double delta_bic, double floor_sse,
+                      Effect effect, double delta_bic, const Evidence& evidence, bool away,
                       const DiagnoseOptions& options, double& share) {
-  const std::string head = effect_name(effect) + " lowered BIC by " + fmt(delta_bic);
+  const std::string head = effect_name(effect) + " lowered BIC by " + fmt(delta_bic) +
+                           (away ? " on the samples away from steps" : "");
   // What the candidate itself explains: the gain over the current model, but no more than the
   // error its fit gains back when the candidate alone is switched off (every other parameter
   // as fitted). A fit that only finishes converging the current model's own parameters (a
   // Coulomb force of a milli-newton beside a re-fitted compliance) is not credited with that.
-  const double sse_off = sse_switched_off(model, fit, fit.effects.size() - 1).second;
-  const double gain = std::min(current.sse, sse_off) - fit.sse;
-  // Practical significance: a material share of the residual energy above the noise floor.
-  const double excess = current.sse - floor_sse;
-  share = excess > 0.0 ? gain / excess : 0.0;
-  if (share < options.min_share)
-    return head + " but removed only " + fmt(100 * share, 2) +
-           " % of the residual energy above the noise floor: not accepted";
-  // Materiality against the noise: the output change it explains, in rms over the recording,
-  // at least min_noise_multiple noise standard deviations (floor_sse = n sigma^2).
-  const double explained_rms_in_sigma =
-      floor_sse > 0.0 ? std::sqrt(std::max(gain, 0.0) / floor_sse) : 1e300;
-  if (explained_rms_in_sigma < options.min_noise_multiple)
+  const auto on_set = [away](const TwoSse& e) { return away ? e.away : e.all; };
+  const double sse_off =
+      on_set(sse_switched_off(model, fit, fit.effects.size() - 1, evidence).second);
+  const double sse_now =
+      away ? two_sse(model.measured(), current.prediction, evidence).away : current.sse;
+  const double sse_new = away ? two_sse(model.measured(), fit.prediction, evidence).away : fit.sse;
+  const double floor_sse = away ? evidence.floor_away : evidence.floor_all;
+  double explained_rms_in_sigma = 0.0;
+  if (!material(sse_now, std::min(sse_now, sse_off) - sse_new, floor_sse, options, share,
+                explained_rms_in_sigma)) {
+    // Practical significance: a material share of the residual energy above the noise floor.
+    if (share < options.min_share)
+      return head + " but removed only " + fmt(100 * share, 2) +
+             " % of the residual energy above the noise floor: not accepted";
+    // Materiality against the noise: the output change it explains, in rms over the recording,
+    // at least min_noise_multiple noise standard deviations (floor_sse = n sigma^2).
     return head + " but the output change it explains is only " + fmt(explained_rms_in_sigma, 2) +
            " noise standard deviations in rms (at least " + fmt(options.min_noise_multiple, 2) +
            " needed): below the noise, not accepted";
+  }
   // A time constant shorter than one sample interval cannot be told from the recording's own
-  // timing (channel skew, held drives), which the delay nuisance already absorbs.
+  // timing (channel skew, held drives), which the delay nuisance already absorbs; except a coil
+  // inductance fitted to the coil current itself (the output of a coil bench): there the L/R
+  // lag is the only dynamics between the recorded voltage and the recorded output, and its
+  // exponential approach after each step is not a shift (a delay moves the whole step; the
+  // lag's remainder decays over the following samples at a rate the step heights fix).
+  const bool lag_on_output =
+      effect == Effect::coil_inductance && model.output_column() == "current";
   if (const double tau = resolved_time_constant(model, fit);
-      tau > 0.0 && tau < model.sample_interval())
+      tau > 0.0 && tau < model.sample_interval() && !lag_on_output)
     return head + " with a time constant of " + fmt(1e3 * tau) +
            " ms, shorter than one sample interval (" + fmt(1e3 * model.sample_interval()) +
            " ms): not told apart from the recording's timing; not accepted";
@@ -437,7 +502,8 @@ std::string rejection(const DiagnosisModel& model, const ModelFit& current, cons
   }
   // Identifiability: the effect's size parameter known to a relative standard error below
   // max_relative_se.
-  const double rse = size_relative_se(model, fit, options.threads);
+  const double rse =
+      size_relative_se(model, fit, options.threads, away ? evidence.away : std::vector<bool>{});
   if (!(rse < options.max_relative_se))
     return head + " but its " + model.effect_params(effect).front().name +
            " is not identified (relative standard error " +
@@ -452,25 +518,25 @@ std::string rejection(const DiagnosisModel& model, const ModelFit& current, cons
 /// noise floor or less than `min_noise_multiple` noise deviations in rms. A finding accepted
 /// beside another can fade in the joint re-fit (a Coulomb force that ends at a few newtons
 /// once a compliance and the static map are re-fitted with it); it is then not reported.
-void drop_faded_findings(const DiagnosisModel& model, ModelFit& fit, double floor_sse,
+void drop_faded_findings(const DiagnosisModel& model, ModelFit& fit, const Evidence& evidence,
                          const DiagnoseOptions& options, Diagnosis& d) {
   bool dropped = true;
   while (dropped && fit.effects.size() > 1) {
     dropped = false;
     for (std::size_t i = 0; i < fit.effects.size(); ++i) {
-      const auto [without, sse_off] = sse_switched_off(model, fit, i);
-      if (!std::isfinite(sse_off)) continue;
-      const double gain = sse_off - fit.sse;
-      const double excess = sse_off - floor_sse;
-      const bool material =
-          excess > 0.0 && gain >= options.min_share * excess &&
-          gain >= options.min_noise_multiple * options.min_noise_multiple * floor_sse;
-      if (material) continue;
+      const auto [without, sse_off] = sse_switched_off(model, fit, i, evidence);
+      if (!std::isfinite(sse_off.all)) continue;
+      const TwoSse with{fit.sse, two_sse(model.measured(), fit.prediction, evidence).away};
+      double share = 0.0, share_away = 0.0, rms = 0.0;
+      if (material(sse_off.all, sse_off.all - with.all, evidence.floor_all, options, share, rms) ||
+          (!evidence.away.empty() && material(sse_off.away, sse_off.away - with.away,
+                                              evidence.floor_away, options, share_away, rms)))
+        continue;
       const Effect e = fit.effects[i];
       d.notes.push_back(effect_name(e) +
                         " was accepted in forward selection but in the joint "
                         "re-fit it explains only " +
-                        fmt(excess > 0.0 ? 100 * gain / excess : 0.0, 2) +
+                        fmt(100 * std::max(share, share_away), 2) +
                         " % of the residual energy above the noise floor: not reported");
       d.findings.erase(std::remove_if(d.findings.begin(), d.findings.end(),
                                       [e](const Finding& f) { return f.effect == e; }),
@@ -542,9 +608,12 @@ double resolved_time_constant(const DiagnosisModel& model, const ModelFit& fit) 
   return 0.0;
 }
 
-/// Relative standard error of the size parameter (the first) of the last effect of `fit`.
-double size_relative_se(const DiagnosisModel& model, const ModelFit& fit, int threads) {
+/// Relative standard error of the size parameter (the first) of the last effect of `fit`, on the
+/// samples of `mask` (all when empty).
+double size_relative_se(const DiagnosisModel& model, const ModelFit& fit, int threads,
+                        const std::vector<bool>& mask) {
   FitSettings s;
+  s.mask = mask;
   s.max_iterations = 0;
   s.threads = threads;
   s.fixed = held_in_candidates(model, fit.effects, fit.values);
@@ -622,9 +691,11 @@ class Clock {
 
 /// Forward selection on `model` from its calibrated baseline `current`: candidates are fitted,
 /// tested and accepted one at a time (scores, findings and notes appended to `d`); returns the
-/// fit of the last accepted model (`current` itself when nothing is accepted). `floor_sse` is
-/// the noise floor n sigma^2 of this model's baseline residual.
-ModelFit forward_select(const DiagnosisModel& model, ModelFit current, double floor_sse,
+/// fit of the last accepted model (`current` itself when nothing is accepted). `evidence` holds
+/// the noise floor n sigma^2 of this model's baseline residual and the samples away from its
+/// steps; ΔBIC, practical significance and the held-out gain are each met on every sample or
+/// on the samples away from steps.
+ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evidence& evidence,
                         const DiagnoseOptions& options, Diagnosis& d, Clock& clock) {
   const auto& y = model.measured();
   const std::size_t n = y.size();
@@ -632,7 +703,18 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, double fl
   settings.max_iterations = options.max_iterations;
   settings.threads = options.threads;
   settings.standard_errors = false;  // only the final model's are reported
-  double held_current = -1.0;        // held-out error of `current`, once known
+  // BIC on the samples away from steps (the residual at a step is its unrecorded timing, which
+  // is not Gaussian noise about the model: it can swamp a slow effect's gain in the likelihood).
+  const std::size_t n_away =
+      evidence.away.empty()
+          ? n
+          : static_cast<std::size_t>(std::count(evidence.away.begin(), evidence.away.end(), true));
+  auto delta_bic_away = [&](const ModelFit& before, const ModelFit& after) {
+    return bic(two_sse(y, before.prediction, evidence).away, n_away, before.values.size()) -
+           bic(two_sse(y, after.prediction, evidence).away, n_away, after.values.size());
+  };
+  // Held-out error of `current` on every sample and away from steps, once known (< 0: not yet).
+  TwoSse held_current{-1.0, -1.0};
   const auto candidates = model.applicable_effects();
   for (int step = 0; step < options.max_effects; ++step) {
     struct Tried {
@@ -707,25 +789,54 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, double fl
     // next best (by BIC) is tried, up to kMaxTries of them.
     const int cv_iterations = std::max(options.max_iterations / 3, 5);
     std::vector<Effect> rejected;
-    double gain = 0.0, share = 0.0, held_new = 0.0;
+    double gain = 0.0, share = 0.0;
+    TwoSse held_new;
     std::size_t accepted = tried.size();
     for (std::size_t i = 0; i < tried.size() && i < kMaxTries; ++i) {
       const auto& c = tried[i];
-      if (c.delta_bic <= options.bic_margin) break;
-      const std::string why =
-          rejection(model, current, c.fit, c.effect, c.delta_bic, floor_sse, options, share);
-      if (!why.empty()) {
-        d.notes.push_back(why);
-        rejected.push_back(c.effect);
+      // Every test is passed on one sample set: every sample, or those away from steps. The
+      // second set is tried only when the first does not already accept the candidate (each
+      // try costs a Jacobian and, past the tests, four fold fits).
+      auto held_gain = [&](bool away, double& now, double& with) {
+        const auto& keep = away ? evidence.away : std::vector<bool>{};
+        if (now < 0.0)
+          now = heldout_sse(model, current, options.blocks, cv_iterations, options.threads, keep);
+        with = heldout_sse(model, c.fit, options.blocks, cv_iterations, options.threads, keep);
+        return now > 0.0 ? 1.0 - with / now : 0.0;
+      };
+      held_new = {-1.0, -1.0};
+      std::string why;
+      bool tested = false;  // passed the tests before the held-out check on some set
+      gain = -std::numeric_limits<double>::infinity();
+      if (c.delta_bic > options.bic_margin) {
+        why = rejection(model, current, c.fit, c.effect, c.delta_bic, evidence, false, options,
+                        share);
+        if (why.empty()) {
+          tested = true;
+          gain = held_gain(false, held_current.all, held_new.all);
+        }
+      }
+      if (gain < options.heldout_margin && !evidence.away.empty()) {
+        const double db_away = delta_bic_away(current, c.fit);
+        double share_away = 0.0;
+        const auto why_away = db_away > options.bic_margin
+                                  ? rejection(model, current, c.fit, c.effect, db_away, evidence,
+                                              true, options, share_away)
+                                  : std::string("-");
+        if (why_away.empty()) {
+          tested = true;
+          const double gain_away = held_gain(true, held_current.away, held_new.away);
+          if (gain_away > gain) gain = gain_away, share = share_away;
+        } else if (why.empty() && !tested && why_away != "-") {
+          why = why_away;
+        }
+      }
+      if (!tested) {
+        if (!why.empty()) d.notes.push_back(why);
+        if (!why.empty()) rejected.push_back(c.effect);
         continue;
       }
-      const double held_now = held_current >= 0.0 ? held_current
-                                                  : heldout_sse(model, current, options.blocks,
-                                                                cv_iterations, options.threads);
-      held_current = held_now;
-      held_new = heldout_sse(model, c.fit, options.blocks, cv_iterations, options.threads);
       clock.stage("held-out check of " + effect_name(c.effect));
-      gain = held_now > 0 ? 1.0 - held_new / held_now : 0.0;
       if (gain < options.heldout_margin) {
         d.notes.push_back(effect_name(c.effect) + " lowered BIC by " + fmt(c.delta_bic) +
                           " but cut the held-out error by only " + fmt(100 * gain, 2) +
@@ -818,7 +929,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
   // The noise floor: the white part of the baseline's residual (output sensor noise and drive
   // noise the static map passes through); no candidate can explain it.
   const double sigma = noise_sigma(residual);
-  const double floor_sse = static_cast<double>(n) * sigma * sigma;
+  const Evidence evidence = evidence_of(d.baseline.prediction, sigma);
 
   // 3. Name: forward selection, on the whole recording or, when it is long, on its most
   // informative excerpt (the cost rule; the final re-fit below uses every sample).
@@ -833,8 +944,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
     const double part_sigma = noise_sigma(part_residual);
     clock.stage("excerpt calibration");
     const auto selected = forward_select(
-        part, part_baseline, static_cast<double>(part_residual.size()) * part_sigma * part_sigma,
-        options, d, clock);
+        part, part_baseline, evidence_of(part_baseline.prediction, part_sigma), options, d, clock);
     if (!d.findings.empty()) {
       current.effects = selected.effects;
       current.values = selected.values;
@@ -847,7 +957,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
                       "-sample stretch with the largest baseline residual energy); the final "
                       "joint re-fit and FIT use every sample");
   } else {
-    current = forward_select(model, std::move(current), floor_sse, options, d, clock);
+    current = forward_select(model, std::move(current), evidence, options, d, clock);
   }
 
   // Re-fit all accepted effects together, with the nuisances free again (they were held while
@@ -863,7 +973,7 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
       refit = fit_model(model, current.effects, current.values, final_settings);
     }
     current = std::move(refit);
-    drop_faded_findings(model, current, floor_sse, options, d);
+    drop_faded_findings(model, current, evidence, options, d);
   }
   clock.stage("joint re-fit");
   d.final_fit = current;
