@@ -919,7 +919,10 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
       f.evidence += ", but the measured coil current rules that out";
     }
   }
-  if (!model.chamber_volume_given() && !d.findings.empty())
+  const bool chamber_finding = std::any_of(d.findings.begin(), d.findings.end(), [](const auto& f) {
+    return f.effect == Effect::compressibility || f.effect == Effect::pre_yield;
+  });
+  if (!model.chamber_volume_given() && chamber_finding)
     d.notes.push_back(
         "[rig] chamber_volume not given: compressibility assumed 2e-5 m^3 of oil "
         "per chamber");
