@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <sstream>
 
 #include "core/error.hpp"
 #include "diagnose/diagnose_noise.hpp"
@@ -283,26 +284,75 @@ void DiagnosisModel::chain_map(const std::string& where) {
                            " flows; yield and viscous scales calibrated)"});
 }
 
+namespace {
+
+/// Median time [s] after a velocity reversal for the motion to travel `stroke` [m] (0: none).
+double plug_swing_time(const std::vector<double>& t, const std::vector<double>& velocity,
+                       double stroke) {
+  // The motion after each reversal is integrated until it has travelled `stroke`; the median over
+  // the reversals is the time the chambers need to carry the valve from one yield to the other.
+  std::vector<double> times;
+  for (std::size_t k = 1; k < velocity.size(); ++k) {
+    if ((velocity[k - 1] < 0.0) == (velocity[k] < 0.0)) continue;
+    double travelled = 0.0;
+    std::size_t j = k;
+    for (; j < velocity.size() && travelled < stroke; ++j)
+      travelled += std::abs(velocity[j]) * (t[j] - t[j - 1]);
+    if (travelled >= stroke) times.push_back(t[j - 1] - t[k - 1]);
+  }
+  if (times.empty()) return 0.0;
+  auto mid = times.begin() + static_cast<std::ptrdiff_t>(times.size() / 2);
+  std::nth_element(times.begin(), mid, times.end());
+  return *mid;
+}
+
+}  // namespace
+
 void DiagnosisModel::stiff_or_compliant_chambers() {
-  // The oil's own compliance (bulk modulus 1.5 GPa) makes a lag R C_oil / 2 between the two
-  // chambers. Shorter than a tenth of a sample it is the stiff fluid of the baseline.
+  // The oil's own compliance (bulk modulus 1.5 GPa) acts twice: it makes a lag R C_oil / 2
+  // between the two chambers while the valve flows; and at a flow reversal, where the plug
+  // holds, the piston must compress the oil by C_oil P (P the largest yield pressure) before the
+  // valve yields the other way, so the force reverses that much stroke after the motion. Where
+  // either is longer than a tenth of a sample the baseline is calibrated with and without it and
+  // keeps the better (a real damper's force shows it; a simulator may keep the stated oil
+  // stiff). Otherwise the fluid is stiff to within the sampling.
   lumped::ChamberBlock oil;
   oil.oil_volume = chamber_volume_;
+  const double capacitance = oil.capacitance(oil.precharge);
   const double resistance =
       fe_chain_ ? base_.valve.chain->viscous_resistance : base_.valve.viscous_resistance;
-  const double lag = 0.5 * resistance * oil.capacitance(oil.precharge);
-  if (lag >= 0.1 * sample_interval_) {
-    base_.compressibility = oil;
-    includes_.push_back({"chamber_volume", chamber_volume_, "m^3",
-                         "sidecar [rig] chamber_volume (oil compliance simulated: lag " +
-                             std::to_string(1e3 * lag) + " ms)"});
-  } else {
-    includes_.push_back({"chamber_volume", chamber_volume_, "m^3",
-                         "sidecar [rig] chamber_volume (oil compliance lag " +
-                             std::to_string(1e3 * lag) +
-                             " ms < 0.1 sample: stiff fluid; the compressibility candidate adds "
-                             "air to it)"});
-  }
+  const double lag = 0.5 * resistance * capacitance;
+  const std::vector<double>& yields =
+      fe_chain_ ? base_.valve.chain->yield : base_.valve.yield_pressure;
+  const double yield = yields.empty() ? 0.0 : *std::max_element(yields.begin(), yields.end());
+  const double swing = plug_swing_time(rec_.t, rec_.column("velocity"),
+                                       capacitance * std::abs(yield) / base_.piston_area);
+  oil_compliance_lags_ =
+      "lag " + std::to_string(1e3 * lag) + " ms, reversal " + std::to_string(1e3 * swing) + " ms";
+  oil_compliance_optional_ = std::max(lag, swing) >= 0.1 * sample_interval_;
+  includes_.push_back({"chamber_volume", chamber_volume_, "m^3",
+                       "sidecar [rig] chamber_volume (oil compliance " + oil_compliance_lags_ +
+                           (oil_compliance_optional_ ? ": calibrated, stiff fluid fitted better"
+                                                     : " < 0.1 sample: stiff fluid") +
+                           "; the compressibility candidate adds air to it)"});
+}
+
+DiagnosisModel DiagnosisModel::with_oil_compliance(double fit_gain) const {
+  DiagnosisModel m = *this;
+  if (base_.compressibility || fitted_ || base_.kind == RigKind::coil_bench) return m;
+  lumped::ChamberBlock oil;
+  oil.oil_volume = chamber_volume_;
+  m.base_.compressibility = oil;
+  for (auto& item : m.includes_)
+    if (item.name == "chamber_volume") {
+      std::ostringstream gain;
+      gain.precision(3);
+      gain << fit_gain;
+      item.source =
+          "sidecar [rig] chamber_volume (oil compliance simulated: " + oil_compliance_lags_ +
+          "; calibrated, baseline FIT " + gain.str() + " points over stiff fluid)";
+    }
+  return m;
 }
 
 lumped::DuhemBlock duhem_field(double a, double d) {

@@ -119,6 +119,16 @@ class DiagnosisModel {
   explicit DiagnosisModel(const lumped::Recording& rec, const ModelBaseline* fitted = nullptr,
                           DriveSampling sampling = DriveSampling::linear);
 
+  /// True when the stated chambers' oil compliance is not negligible (its viscous lag or the
+  /// plug's swing between yields at a flow reversal is a tenth of a sample or more), so that the
+  /// baseline is calibrated with and without it.
+  bool oil_compliance_optional() const { return oil_compliance_optional_; }
+  /// True when the baseline simulates the stated chambers' oil compliance.
+  bool oil_compliance() const { return base_.compressibility.has_value(); }
+  /// This model with the stated chambers' oil compliance simulated (a copy; unchanged on a coil
+  /// bench or a fitted baseline); `fit_gain` [FIT points over the stiff fluid] goes in the report.
+  DiagnosisModel with_oil_compliance(double fit_gain) const;
+
   /// This model under the held convention (a copy: the static map, e.g. a tabulated FE chain,
   /// is not built again); unchanged when the convention cannot apply (can_hold()).
   DiagnosisModel held() const;
@@ -207,6 +217,8 @@ class DiagnosisModel {
   std::vector<double> measured_;
   double chamber_volume_ = 2e-5;
   bool chamber_volume_given_ = false;
+  bool oil_compliance_optional_ = false;  ///< the oil's compliance may show: calibrated
+  std::string oil_compliance_lags_;       ///< its lag and reversal swing, in words
   bool constant_field_ = false;
   double output_rms_ = 1.0;
   double sample_interval_ = 1.0;

@@ -879,6 +879,24 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evi
   return current;
 }
 
+/// True when the stated oil's compliance may fit `model`'s recording better than the calibrated
+/// stiff `baseline`. A recording longer than `selection_samples` is judged on its most
+/// informative excerpt (both calibrated there), so that the whole record is calibrated a second
+/// time only when the compliance wins there.
+bool compliance_fits_better(const DiagnosisModel& model, const ModelFit& baseline,
+                            std::size_t selection_samples, const FitSettings& calib) {
+  const auto& y = model.measured();
+  if (selection_samples == 0 || y.size() <= selection_samples) return true;
+  std::vector<double> residual(y.size());
+  for (std::size_t k = 0; k < y.size(); ++k) residual[k] = y[k] - baseline.prediction[k];
+  const auto selection = representative_excerpt(residual, selection_samples);
+  const DiagnosisModel part(lumped::excerpt(model.recording(), selection), nullptr,
+                            model.sampling());
+  const auto stiff = fit_model(part, {}, baseline.values, calib);
+  const auto compliant = fit_model(part.with_oil_compliance(0.0), {}, baseline.values, calib);
+  return compliant.sse < stiff.sse;
+}
+
 }  // namespace
 
 Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options) {
@@ -898,6 +916,17 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
     return fit_model(m, {}, nuisance_start(m, options.threads), calib);
   };
   d.baseline = calibrate(*chosen);
+  if (chosen->oil_compliance_optional() &&
+      compliance_fits_better(*chosen, d.baseline, options.selection_samples, calib)) {
+    // The stated oil's compliance: kept where it fits better than a stiff fluid.
+    auto compliant_fit = calibrate(chosen->with_oil_compliance(0.0));
+    if (compliant_fit.sse < d.baseline.sse) {
+      const double gain = fit_percent_of(chosen->measured(), compliant_fit.prediction) -
+                          fit_percent_of(chosen->measured(), d.baseline.prediction);
+      chosen = std::make_unique<DiagnosisModel>(chosen->with_oil_compliance(gain));
+      d.baseline = std::move(compliant_fit);
+    }
+  }
   double other_fit_percent = std::numeric_limits<double>::quiet_NaN();
   if (chosen->can_hold()) {
     auto held = std::make_unique<DiagnosisModel>(chosen->held());
@@ -936,7 +965,8 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
   ModelFit current = d.baseline;
   if (options.selection_samples > 0 && n > options.selection_samples) {
     d.selection = representative_excerpt(residual, options.selection_samples);
-    const DiagnosisModel part(lumped::excerpt(rec, d.selection), fitted, model.sampling());
+    DiagnosisModel part(lumped::excerpt(rec, d.selection), fitted, model.sampling());
+    if (model.oil_compliance() && !part.oil_compliance()) part = part.with_oil_compliance(0.0);
     const auto part_baseline = fit_model(part, {}, d.baseline.values, calib);
     std::vector<double> part_residual(d.selection.size());
     for (std::size_t k = 0; k < part_residual.size(); ++k)
@@ -999,7 +1029,10 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
       f.evidence += ", but the measured coil current rules that out";
     }
   }
-  if (!model.chamber_volume_given() && !d.findings.empty())
+  const bool chamber_finding = std::any_of(d.findings.begin(), d.findings.end(), [](const auto& f) {
+    return f.effect == Effect::compressibility || f.effect == Effect::pre_yield;
+  });
+  if (!model.chamber_volume_given() && chamber_finding)
     d.notes.push_back(
         "[rig] chamber_volume not given: compressibility assumed 2e-5 m^3 of oil "
         "per chamber");
