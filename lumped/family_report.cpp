@@ -169,10 +169,14 @@ std::string family_report_html(const FamilyFit& r, const std::vector<Recording>&
   rows(r.training, "fit");
   rows(r.predicted, "predicted");
   o << "</table>\n<h2>Parameters (SI, &plusmn; one standard error)</h2>\n<table><tr><th>name</th>"
-       "<th>value</th><th>standard error</th><th>unit</th><th>remark</th></tr>\n";
+       "<th>value</th><th>standard error</th><th>between recordings</th><th>unit</th>"
+       "<th>remark</th></tr>\n";
+  const auto se_cell = [](const std::optional<double>& se) {
+    return se ? html_number(*se, 3) : std::string("&mdash;");
+  };
   for (const FittedParameter& p : r.fit.params)
     o << "<tr><td>" << html_escape(p.name) << "</td><td>" << html_number(p.value, 5) << "</td><td>"
-      << (p.standard_error ? html_number(*p.standard_error, 3) : std::string("&mdash;"))
+      << se_cell(p.standard_error) << "</td><td>" << se_cell(p.standard_error_between_recordings)
       << "</td><td>" << html_escape(p.unit) << "</td><td>"
       << (p.fixed             ? "held"
           : p.at_bound        ? "at bound"

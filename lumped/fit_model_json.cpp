@@ -38,11 +38,14 @@ void put_parameters(json& j, const std::vector<FittedParameter>& params) {
   for (const FittedParameter& p : params) {
     const json se = p.standard_error && std::isfinite(*p.standard_error) ? json(*p.standard_error)
                                                                          : json(nullptr);
-    j["parameters"].push_back({{"name", p.name},
-                               {"unit", p.unit},
-                               {"value", p.value},
-                               {"standard_error", se},
-                               {"fixed", p.fixed}});
+    json entry = {{"name", p.name},
+                  {"unit", p.unit},
+                  {"value", p.value},
+                  {"standard_error", se},
+                  {"fixed", p.fixed}};
+    if (p.standard_error_between_recordings && std::isfinite(*p.standard_error_between_recordings))
+      entry["standard_error_between_recordings"] = *p.standard_error_between_recordings;
+    j["parameters"].push_back(entry);
     j["params"][p.name] = p.value;
     j["standard_errors"][p.name] = se;
   }
@@ -130,6 +133,9 @@ std::vector<FittedParameter> read_parameters(const Field& list) {
     params[k].value = p.at("value").number();
     if (p.has("standard_error"))
       params[k].standard_error = p.at("standard_error").number(Domain::non_negative());
+    if (p.has("standard_error_between_recordings"))
+      params[k].standard_error_between_recordings =
+          p.at("standard_error_between_recordings").number(Domain::non_negative());
     params[k].fixed = p.at("fixed").flag();
   }
   return params;

@@ -594,6 +594,11 @@ void run_fit(const FitData& data, const GreyboxSetup& setup, const ParamGuess& g
   fit.best_start = best.start;
   fit.converged = best.converged;
   const std::vector<std::optional<double>> se = jacobian_standard_errors(jf, res);
+  std::vector<int> cluster_rows;
+  for (const FitResidual<N, NF>& functor : functors)
+    cluster_rows.push_back(static_cast<int>(functor.range.size()));
+  const std::vector<std::optional<double>> se_between =
+      cluster_standard_errors(jf, res, cluster_rows);
 
   const auto& specs = pheno_params(setup.kind);
   fit.params.clear();
@@ -613,6 +618,7 @@ void run_fit(const FitData& data, const GreyboxSetup& setup, const ParamGuess& g
     fp.at_bound = std::abs(fp.value - guess.lower[k]) < 1e-6 * span ||
                   std::abs(fp.value - guess.upper[k]) < 1e-6 * span;
     if (se[j]) fp.standard_error = *se[j] * guess.scale[k];
+    if (se_between[j]) fp.standard_error_between_recordings = *se_between[j] * guess.scale[k];
   }
 }
 

@@ -34,8 +34,11 @@ struct FittedParameter {
   std::string unit;
   double value = 0.0;
   std::optional<double> standard_error;  ///< empty when held fixed or not identifiable
-  bool fixed = false;                    ///< held constant (e.g. field terms without a field input)
-  bool at_bound = false;                 ///< ended on a bound
+  /// Cluster-robust standard error, each training recording one cluster (family fits of two or
+  /// more recordings; cluster_standard_errors): how far the recordings disagree on the value.
+  std::optional<double> standard_error_between_recordings;
+  bool fixed = false;     ///< held constant (e.g. field terms without a field input)
+  bool at_bound = false;  ///< ended on a bound
 };
 
 /// How a model reads a recording: which columns drive it and the fixed settings.

@@ -1,5 +1,6 @@
 #pragma once
-// Standard errors of least-squares parameters from the Jacobian at the optimum.
+// Standard errors of least-squares parameters from the Jacobian at the optimum: the classical
+// ones (independent residuals) and the cluster-robust ones (residuals correlated within a cluster).
 
 #include <Eigen/Dense>
 #include <optional>
@@ -12,5 +13,15 @@ namespace rheomag::lumped {
 /// parameter with a component > 0.1 along one gets no standard error (empty).
 std::vector<std::optional<double>> jacobian_standard_errors(const Eigen::MatrixXd& jacobian,
                                                             const Eigen::VectorXd& residuals);
+
+/// Cluster-robust (sandwich, CR1) standard errors: cov = (J^T J)^-1 (sum_g s_g s_g^T) (J^T J)^-1
+/// g/(g-1) (m-1)/(m-p), s_g = J_g^T r_g the score of cluster g, whose rows are the next
+/// cluster_rows[g] rows of J and r. With recordings as clusters it measures how far the
+/// recordings disagree on each parameter, which the classical form (independent residuals)
+/// misses when the residuals are correlated within a recording. Empty with fewer than 2 clusters
+/// or where jacobian_standard_errors finds a parameter not identifiable.
+std::vector<std::optional<double>> cluster_standard_errors(const Eigen::MatrixXd& jacobian,
+                                                           const Eigen::VectorXd& residuals,
+                                                           const std::vector<int>& cluster_rows);
 
 }  // namespace rheomag::lumped

@@ -133,6 +133,14 @@ TEST(FitFamilyCli, ReportRendersInHeadlessChromium) {
   EXPECT_GT(j["prediction"][0]["fit_percent"].get<double>(), 99.0);
   // The printed model reads back (lumped/fit_model_json.hpp) and predicts c.csv as printed.
   const FitModel back = parse_fit_model_json(r.out, "stdout");
+  // Two recordings: every free parameter has a between-recordings (clustered) error, read back.
+  for (std::size_t k = 0; k < back.greybox->params.size(); ++k)
+    if (!back.greybox->params[k].fixed && j["parameters"][k]["standard_error"].is_number()) {
+      ASSERT_TRUE(back.greybox->params[k].standard_error_between_recordings.has_value())
+          << back.greybox->params[k].name;
+      EXPECT_EQ(*back.greybox->params[k].standard_error_between_recordings,
+                j["parameters"][k]["standard_error_between_recordings"].get<double>());
+    }
   const Recording rc = read_recording(c);
   const std::vector<double> y = simulate_fit_model(rc, back);
   EXPECT_NEAR(compute_metrics(rc.column("force"), y).fit_percent,
@@ -144,6 +152,7 @@ TEST(FitFamilyCli, ReportRendersInHeadlessChromium) {
     ++svgs;
   EXPECT_EQ(svgs, 6u);  // force-displacement and force-velocity for 3 recordings
   EXPECT_NE(html.find("standard error"), std::string::npos);
+  EXPECT_NE(html.find("between recordings"), std::string::npos);
   EXPECT_EQ(html.find("src=\"http"), std::string::npos);  // self-contained
   if (run("command -v chromium > /dev/null 2>&1") != 0) GTEST_SKIP() << "chromium not installed";
   const fs::path png = dir / "report.png";
