@@ -8,6 +8,7 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,14 +45,16 @@ nlohmann::json member_json(const FamilyMember& m) {
           {"field", m.field},
           {"fit_percent", m.metrics.fit_percent},
           {"rmse_percent", m.metrics.rmse_percent},
-          {"re", m.metrics.re}};
+          {"re", m.metrics.re},
+          {"mean_removed", m.mean_removed}};
 }
 
 void print_members(const char* title, const std::vector<FamilyMember>& members) {
   rheomag::app::print("%s\n  %-40s %8s %8s %8s\n", title, "recording", "field", "FIT%", "RE");
   for (const auto& m : members)
-    rheomag::app::print("  %-40s %8.3g %8.1f %8.3f\n", m.csv_path.c_str(), m.field,
-                        m.metrics.fit_percent, m.metrics.re);
+    rheomag::app::print(
+        "  %-40s %8.3g %8.1f %8.3f%s\n", m.csv_path.c_str(), m.field, m.metrics.fit_percent,
+        m.metrics.re, m.mean_removed ? "  (mean removed: compared without the model's mean)" : "");
 }
 
 void run_fit_family(const FamilyOptions& o) {
@@ -73,12 +76,18 @@ void run_fit_family(const FamilyOptions& o) {
   if (!o.json) {
     rheomag::app::print("model %s, joint fit on %zu recordings (every %d-th sample)\n",
                         r.fit.model.c_str(), training.size(), o.decimation);
-    for (const auto& p : r.fit.params) {
-      rheomag::app::print("  %-24s %14.6g", p.name.c_str(), p.value);
-      if (p.standard_error)
-        rheomag::app::print(" +- %-10.3g", *p.standard_error);
+    rheomag::app::print("  %-24s %14s %-13s %-13s\n", "parameter", "value", "+- classical",
+                        "+- between recordings");
+    const auto error_column = [](const std::optional<double>& e) {
+      if (e)
+        rheomag::app::print(" +- %-10.3g", *e);
       else
         rheomag::app::print("    %-10s", "");
+    };
+    for (const auto& p : r.fit.params) {
+      rheomag::app::print("  %-24s %14.6g", p.name.c_str(), p.value);
+      error_column(p.standard_error);
+      error_column(p.standard_error_between_recordings);
       rheomag::app::print(" %s%s\n", p.unit.c_str(),
                           p.fixed      ? " (fixed)"
                           : p.at_bound ? " (at bound)"
@@ -124,7 +133,7 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
   cmd->add_flag("--json", o->json,
                 "Print one JSON object: the fitted model (readable back as a model file, "
                 "docs/fit-model-json.md), params, train and prediction (arrays of {file, "
-                "field, fit_percent, rmse_percent, re}), mode");
+                "field, fit_percent, rmse_percent, re, mean_removed}), mode");
   cmd->callback([o]() { run_fit_family(*o); });
 });
 

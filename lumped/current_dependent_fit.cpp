@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "core/error.hpp"
+#include "lumped/output_smoothing.hpp"
 
 namespace rheomag::lumped {
 
@@ -20,6 +21,7 @@ FamilyMember evaluate_member(const Recording& rec, const GreyboxFit& fit) {
     m.field = std::accumulate(u.begin(), u.end(), 0.0) / static_cast<double>(u.size());
   }
   m.simulated = simulate_greybox(rec, fit);
+  m.mean_removed = output_mean_removed(rec.column(fit.setup.output_column));
   m.metrics = compute_metrics(rec.column(fit.setup.output_column), m.simulated);
   return m;
 }

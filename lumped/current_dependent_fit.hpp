@@ -24,6 +24,8 @@ struct FamilyMember {
   std::string csv_path;
   double field = 0.0;  ///< [A or V] mean of the field drive column (the recording's current)
   Metrics metrics;
+  /// The recording's output had its mean removed, so the model's was too (output_mean_removed).
+  bool mean_removed = false;
   std::vector<double> simulated;  ///< free-run model output at the recording's samples
 };
 

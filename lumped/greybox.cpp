@@ -27,7 +27,8 @@ namespace {
 /// Drive and output samples of one recording as a model sees them.
 struct DriveSeries {
   std::vector<double> t, position, motion, field, acceleration, y;
-  double period = 0.0;  ///< [s] period of a periodic motion drive, else 0 (drive_period)
+  double period = 0.0;        ///< [s] period of a periodic motion drive, else 0 (drive_period)
+  bool mean_removed = false;  ///< the recording's output had its mean removed (output_mean_removed)
   PhenoDrive at(std::size_t i) const { return {position[i], motion[i], field[i], acceleration[i]}; }
   /// Linear interpolation between sample i and i+1 at fraction w in [0, 1].
   PhenoDrive between(std::size_t i, double w) const {
@@ -65,6 +66,7 @@ DriveSeries drive_series(const Recording& rec, const GreyboxSetup& setup, std::s
                                        : every(rec.column(setup.field_column), step);
   d.acceleration = rate_of(d.t, d.motion);
   d.period = drive_period(d.t, d.motion);
+  d.mean_removed = output_mean_removed(rec.column(setup.output_column));
   if (!setup.position_column.empty()) {
     d.position = every(rec.column(setup.position_column), step);
   } else {
@@ -103,14 +105,16 @@ double stiffest_rate(PhenoKind kind, const T* p, const PhenoDrive& d, const Phen
   return rate;
 }
 
-/// A model's output seen through the recording's smoothing: a centred moving average over
+/// A model's output seen through the recording's processing: a centred moving average over
 /// output_smoothing (the model's last parameter) times the drive's period (nothing without a
-/// periodic drive).
+/// periodic drive), then, if the recording's output had its mean removed and `range` is the whole
+/// recording, the output's own mean removed.
 template <class T>
-void smooth_output(PhenoKind kind, const T* p, const DriveSeries& d, SampleRange range, T* out) {
+void process_output(PhenoKind kind, const T* p, const DriveSeries& d, SampleRange range, T* out) {
   if (d.period > 0.0)
     centred_boxcar(&d.t[range.begin], range.size(), T(p[pheno_smoothing_index(kind)] * d.period),
                    out);
+  if (d.mean_removed && range.begin == 0 && range.end == d.t.size()) remove_mean(out, range.size());
 }
 
 /// Models integrated by their own stiff-stable exponential step (damper_step, bouc_wen_step).
@@ -215,7 +219,7 @@ struct FitResidual {
     if (!simulate_rk4(kind, p.data(), *d, settings, range.begin, range.end, max_substep,
                       yhat.data()))
       return false;
-    smooth_output(kind, p.data(), *d, range, yhat.data());
+    process_output(kind, p.data(), *d, range, yhat.data());
     for (std::size_t i = 0; i < range.size(); ++i)
       residual[i] = (yhat[i] - orientation * d->y[range.begin + i]) / y_scale;
     return true;
@@ -476,7 +480,7 @@ std::vector<double> simulate_for_report(const DriveSeries& d, const GreyboxSetup
       y = fixed_step(max_substep);
     }
   }
-  smooth_output(setup.kind, params.data(), d, SampleRange{0, d.t.size()}, y.data());
+  process_output(setup.kind, params.data(), d, SampleRange{0, d.t.size()}, y.data());
   return y;
 }
 

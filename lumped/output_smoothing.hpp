@@ -1,11 +1,13 @@
 #pragma once
-// The smoothing a recording's processing applied to its output: a centred moving average (boxcar)
-// of the model output over a window that is a fixed fraction of the drive's period (the UTFSM
-// damper tests were filtered with a moving average over a tenth of the period,
-// docs/damper-model.md), and the drive period it is measured against. Templated so Ceres Jets flow
-// through the window.
+// The processing a recording applied to its output, which a model's output must go through before
+// the two are compared: a centred moving average (boxcar) over a window that is a fixed fraction
+// of the drive's period (the UTFSM damper tests were filtered with a moving average over a tenth
+// of the period, docs/damper-model.md) and the drive period it is measured against, and the
+// removal of the output's mean (those tests' forces had their means removed). Templated so Ceres
+// Jets flow through.
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -46,6 +48,29 @@ void centred_boxcar(const double* t, std::size_t n, const T& width, T* y) {
                  : y[i];
   }
   std::copy(out.begin(), out.end(), y);
+}
+
+/// True if the mean of `y` is zero to within 1e-4 of its rms: an output whose mean the recording's
+/// processing removed (a measured signal's mean is that small only by construction).
+inline bool output_mean_removed(const std::vector<double>& y) {
+  if (y.empty()) return false;
+  double sum = 0.0, squares = 0.0;
+  for (double v : y) {
+    sum += v;
+    squares += v * v;
+  }
+  const double n = static_cast<double>(y.size());
+  return squares > 0.0 && std::abs(sum / n) <= 1e-4 * std::sqrt(squares / n);
+}
+
+/// Subtracts the mean of y[0..n) from each of them.
+template <class T>
+void remove_mean(T* y, std::size_t n) {
+  if (n == 0) return;
+  T sum = T(0.0);
+  for (std::size_t i = 0; i < n; ++i) sum += y[i];
+  const T mean = sum / static_cast<double>(n);
+  for (std::size_t i = 0; i < n; ++i) y[i] -= mean;
 }
 
 }  // namespace rheomag::lumped
