@@ -62,6 +62,9 @@ std::vector<std::string> split_cells(const std::string& line) {
   return cells;
 }
 
+/// Largest |value| a recording's cell may hold (SI units).
+constexpr double kLargestRecordedMagnitude = 1e15;
+
 [[noreturn]] void fail_at(const std::string& file, std::size_t line, const std::string& what) {
   throw InputError(file + ":" + std::to_string(line) + ": " + what);
 }
@@ -80,6 +83,13 @@ double parse_cell(const std::string& cell, const std::string& file, std::size_t 
     fail_at(file, line, "'" + cell + "' in column '" + column + "' is not a number");
   if (!std::isfinite(value))
     fail_at(file, line, "'" + cell + "' in column '" + column + "' is NaN or infinite");
+  // No recorded quantity in SI units comes near 1e15 (31 million years, 1e15 N or Pa); such a
+  // value is a corrupt cell, and its square would overflow every norm computed from it.
+  if (std::abs(value) > kLargestRecordedMagnitude)
+    fail_at(file, line,
+            "'" + cell + "' in column '" + column +
+                "' is beyond any measured magnitude (|value| > 1e15 in SI units); expected a "
+                "measured value");
   return value;
 }
 

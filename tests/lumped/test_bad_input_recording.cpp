@@ -149,6 +149,18 @@ TEST(BadInputCsv, NonFiniteCellRefused) {
             "rec.csv:3: 'nan' in column 'force' is NaN or infinite");
 }
 
+// A finite but absurd cell (1e200 N: its square overflows, so every FIT from it would be NaN) is
+// refused at its line; 1e15 itself and an unknown column's value are not checked against it.
+TEST(BadInputCsv, AbsurdMagnitudeRefused) {
+  EXPECT_EQ(csv_error("t,force\n0,1\n0.1,1e200\n"),
+            "rec.csv:3: '1e200' in column 'force' is beyond any measured magnitude (|value| > "
+            "1e15 in SI units); expected a measured value");
+  EXPECT_EQ(csv_error("t,force\n0,1\n0.1,-2e15\n"),
+            "rec.csv:3: '-2e15' in column 'force' is beyond any measured magnitude (|value| > "
+            "1e15 in SI units); expected a measured value");
+  EXPECT_NO_THROW(parse_csv_samples("t,force,note\n0,1e15,1e200\n0.1,2,3\n", "rec.csv"));
+}
+
 // Constant-output errors named no file or column.
 TEST(BadInputRecording, ConstantOutputNamed) {
   Recording rec = parse_csv_samples("t,velocity,force\n0,1,5\n0.1,2,5\n0.2,3,5\n", "rec.csv");
