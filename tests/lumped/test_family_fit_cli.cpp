@@ -131,6 +131,10 @@ TEST(FitFamilyCli, ReportRendersInHeadlessChromium) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["standard_errors"].contains("yield_per_field"));
   EXPECT_GT(j["prediction"][0]["fit_percent"].get<double>(), 99.0);
+  // Two whole cycles of a symmetric force: the output's mean is zero, so the model is compared
+  // without its own mean (docs/damper-model.md), and each recording says so.
+  EXPECT_TRUE(j["train"][0]["mean_removed"].get<bool>());
+  EXPECT_TRUE(j["prediction"][0]["mean_removed"].get<bool>());
   // The printed model reads back (lumped/fit_model_json.hpp) and predicts c.csv as printed.
   const FitModel back = parse_fit_model_json(r.out, "stdout");
   // Two recordings: every free parameter has a between-recordings (clustered) error, read back.
@@ -141,6 +145,11 @@ TEST(FitFamilyCli, ReportRendersInHeadlessChromium) {
       EXPECT_EQ(*back.greybox->params[k].standard_error_between_recordings,
                 j["parameters"][k]["standard_error_between_recordings"].get<double>());
     }
+  // The text output has the same columns of errors as the JSON: classical and between recordings.
+  const CliRun text = run_fit_family(a + " " + b + " --model bingham");
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("+- between recordings"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("(mean removed: compared without the model's mean)"), std::string::npos);
   const Recording rc = read_recording(c);
   const std::vector<double> y = simulate_fit_model(rc, back);
   EXPECT_NEAR(compute_metrics(rc.column("force"), y).fit_percent,
