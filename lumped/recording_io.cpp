@@ -49,15 +49,30 @@ std::string trim(std::string_view s) {
   return std::string(s.substr(a, b - a));
 }
 
+/// The cells of one CSV line: split at commas outside double quotes, each trimmed, a quoted cell
+/// ("force", as spreadsheets and some DAQ exports write them) unquoted with "" read as ".
 std::vector<std::string> split_cells(const std::string& line) {
+  std::vector<std::string> raw(1);
+  bool quoted = false;
+  for (char c : line) {
+    if (c == '"') quoted = !quoted;
+    if (c == ',' && !quoted)
+      raw.emplace_back();
+    else
+      raw.back() += c;
+  }
   std::vector<std::string> cells;
-  std::size_t start = 0;
-  while (true) {
-    std::size_t comma = line.find(',', start);
-    cells.push_back(trim(std::string_view(line).substr(
-        start, comma == std::string::npos ? std::string::npos : comma - start)));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
+  for (const std::string& r : raw) {
+    std::string cell = trim(r);
+    if (cell.size() >= 2 && cell.front() == '"' && cell.back() == '"') {
+      std::string inner;
+      for (std::size_t i = 1; i + 1 < cell.size(); ++i) {
+        inner += cell[i];
+        if (cell[i] == '"' && cell[i + 1] == '"') ++i;  // "" is one quote
+      }
+      cell = trim(inner);
+    }
+    cells.push_back(cell);
   }
   return cells;
 }

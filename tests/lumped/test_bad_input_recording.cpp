@@ -149,6 +149,19 @@ TEST(BadInputCsv, NonFiniteCellRefused) {
             "rec.csv:3: 'nan' in column 'force' is NaN or infinite");
 }
 
+// Quoted cells (spreadsheet and DAQ exports: "t","force") read as their contents, a comma inside
+// quotes does not split, and "" inside quotes is one quote.
+TEST(BadInputCsv, QuotedCellsAreRead) {
+  const Recording rec = parse_csv_samples(
+      "\"t\", \"force\",\"note, free\"\n\"0\",1.5,\"a \"\"b\"\"\"\n0.1,\"2\",c\n", "rec.csv");
+  ASSERT_EQ(rec.t.size(), 2u);
+  EXPECT_EQ(rec.t[1], 0.1);
+  EXPECT_EQ(rec.column("force")[0], 1.5);
+  EXPECT_EQ(rec.column("force")[1], 2.0);
+  EXPECT_EQ(csv_error("\"t\",\"force\"\n0,1\n0.1,\"x\"\n"),
+            "rec.csv:3: 'x' in column 'force' is not a number");
+}
+
 // A finite but absurd cell (1e200 N: its square overflows, so every FIT from it would be NaN) is
 // refused at its line; 1e15 itself and an unknown column's value are not checked against it.
 TEST(BadInputCsv, AbsurdMagnitudeRefused) {
