@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -15,6 +16,7 @@
 
 #include "case/toml_section.hpp"
 #include "core/atomic_file.hpp"
+#include "core/closest_key.hpp"
 #include "core/error.hpp"
 #include "core/quantity_domain.hpp"
 
@@ -40,6 +42,66 @@ namespace {
 bool is_known_column(const std::string& name) {
   const auto& k = known_columns();
   return std::find(k.begin(), k.end(), name) != k.end();
+}
+
+/// The SI unit of each known column, as the recording format writes it.
+std::string si_unit_of(const std::string& column) {
+  if (column == "t") return "s";
+  if (column == "current" || column == "current_cmd") return "A";
+  if (column == "voltage" || column == "command") return "V";
+  if (column == "flow") return "m^3/s";
+  if (column == "velocity") return "m/s";
+  if (column == "displacement") return "m";
+  if (column == "pressure") return "Pa";
+  if (column == "force") return "N";
+  if (column == "flux_linkage") return "Wb";
+  return "degC";  // temperature
+}
+
+/// True if `unit` as a header writes it names the SI unit of `column` (m^3/s also as m3/s or m³/s,
+/// degC also as °C or C).
+bool is_si_unit_of(const std::string& unit, const std::string& column) {
+  const std::string si = si_unit_of(column);
+  if (unit == si) return true;
+  if (si == "m^3/s") return unit == "m3/s" || unit == "m\u00b3/s";
+  if (si == "degC") return unit == "\u00b0C" || unit == "C";
+  return false;
+}
+
+/// A header cell "name [unit]" or "name (unit)": the name and the unit ("" if none).
+std::pair<std::string, std::string> split_unit(const std::string& header) {
+  for (const auto& [open, close] : {std::pair{'[', ']'}, std::pair{'(', ')'}}) {
+    const std::size_t at = header.find(open);
+    if (at != std::string::npos && at > 0 && header.back() == close) {
+      std::string name = header.substr(0, at), unit = header.substr(at + 1);
+      unit.pop_back();
+      while (!name.empty() && (name.back() == ' ' || name.back() == '_')) name.pop_back();
+      return {name, unit};
+    }
+  }
+  return {header, ""};
+}
+
+/// The known column a header names: itself, or "name [unit]" with the column's SI unit. Throws at
+/// `line` for a known name with another unit (the format is SI: the file must be converted).
+/// "" for an unknown column.
+std::string column_named(const std::string& header, const std::string& file, std::size_t line);
+
+std::string lower_case(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+/// A hint for an unknown header cell: the known column it resembles (case, "time"), or "".
+std::string column_hint(const std::string& header) {
+  const std::string name = lower_case(split_unit(header).first);
+  const std::string column = name == "time" ? "t" : name;
+  if (is_known_column(column))
+    return "; did you mean '" + column +
+           "'? (columns are named in lower case, in SI units: " + column + " in " +
+           si_unit_of(column) + ")";
+  const std::string near = closest_key(name, known_columns());
+  return near.empty() ? "" : "; did you mean '" + near + "'?";
 }
 
 std::string trim(std::string_view s) {
@@ -82,6 +144,18 @@ constexpr double kLargestRecordedMagnitude = 1e15;
 
 [[noreturn]] void fail_at(const std::string& file, std::size_t line, const std::string& what) {
   throw InputError(file + ":" + std::to_string(line) + ": " + what);
+}
+
+std::string column_named(const std::string& header, const std::string& file, std::size_t line) {
+  if (is_known_column(header)) return header;
+  const auto [name, unit] = split_unit(header);
+  if (unit.empty() || !is_known_column(name)) return "";
+  if (!is_si_unit_of(unit, name))
+    fail_at(file, line,
+            "column '" + header + "': the recording format's '" + name + "' is in " +
+                si_unit_of(name) + "; convert the column to " + si_unit_of(name) +
+                " (the format is SI throughout)");
+  return name;
 }
 
 double parse_cell(const std::string& cell, const std::string& file, std::size_t line,
@@ -242,16 +316,26 @@ Recording parse_csv_samples(std::string_view text, const std::string& csv_path) 
     if (header[c].empty())
       fail_at(csv_path, line_no,
               "empty column name in header (column " + std::to_string(c + 1) + ")");
-    if (!seen.insert(header[c]).second)
-      fail_at(csv_path, line_no, "column '" + header[c] + "' appears twice");
-    if (is_known_column(header[c])) {
+    const std::string name = column_named(header[c], csv_path, line_no);
+    if (!seen.insert(name.empty() ? header[c] : name).second)
+      fail_at(csv_path, line_no,
+              "column '" + header[c] + "' appears twice" +
+                  (name.empty() || name == header[c] ? "" : " (as '" + name + "')"));
+    if (!name.empty()) {
       slot[c] = static_cast<int>(kept.size());
-      kept.push_back(header[c]);
+      kept.push_back(name);
     } else {
-      warnings.push_back(csv_path + ": ignoring unknown column '" + header[c] + "'");
+      warnings.push_back(csv_path + ": ignoring unknown column '" + header[c] + "'" +
+                         column_hint(header[c]));
     }
   }
-  if (!seen.count("t")) fail_at(csv_path, line_no, "no 't' column (time in s is required)");
+  if (!seen.count("t")) {
+    std::string hint;
+    for (const std::string& h : header)
+      if (hint.empty() && column_hint(h).find("'t'") != std::string::npos)
+        hint = "; the header has '" + h + "': name it 't'";
+    fail_at(csv_path, line_no, "no 't' column (time in s is required)" + hint);
+  }
   std::vector<std::vector<double>> data(kept.size());
   const int t_slot = static_cast<int>(std::find(kept.begin(), kept.end(), "t") - kept.begin());
   while (std::getline(in, line)) {

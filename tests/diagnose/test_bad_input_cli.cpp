@@ -177,26 +177,22 @@ double overflowing_force(int k) {
   return 1e200 * std::sin(0.1 * k);
 }
 
-// A fit whose metrics or parameters overflow printed "FIT -nan %" (text) or null (JSON, nlohmann
-// writes NaN as null) with exit 0; now exit 3 naming the line or the JSON key, and nothing from
-// Ceres/glog on stderr.
-TEST_F(BadInputCli, OverflowingFitIsExit3NamingTheValue) {
+// A force of 1e200 N made a fit whose metrics or parameters overflow: it printed "FIT -nan %"
+// (text) or null (JSON, nlohmann writes NaN as null) with exit 0, then exit 3 from the output
+// guard, far from the cause. Now the reader refuses the cell: exit 2 naming the file, line and
+// column, for every model, and nothing from Ceres/glog on stderr. (The output guard itself: core's
+// FiniteOutput tests.)
+TEST_F(BadInputCli, OverflowingCellIsExit2NamingItsLine) {
   recording("big", damper_sidecar("1.0e-3"), overflowing_force);
-  const CliRun grey = run_in(dir, "fit big.csv --model bingham");
-  EXPECT_EQ(grey.code, 3) << grey.err;
-  EXPECT_EQ(grey.out, "model bingham (simulation mode)\n");
-  EXPECT_EQ(grey.err.find("rheomag: result is not a finite number: stdout line 2 holds a "
-                          "non-finite number ('-nan' in \"train 0:400 "),
-            0u)
-      << grey.err;
-  EXPECT_EQ(std::count(grey.err.begin(), grey.err.end(), '\n'), 1) << grey.err;
-  const CliRun json = run_in(dir, "fit big.csv --model arx:2,2,1 --json");
-  EXPECT_EQ(json.code, 3) << json.err;
-  EXPECT_EQ(json.out, "");
-  EXPECT_EQ(json.err,
-            "rheomag: result is not a finite number: stdout (JSON): key 'params.a1' is not a "
-            "finite number; the result was not written; produced by: rheomag fit big.csv --model "
-            "arx:2,2,1 --json\n");
+  const std::string expected =
+      "rheomag: error: big.csv:3: '9.98334e+198' in column 'force' is beyond any measured "
+      "magnitude (|value| > 1e15 in SI units); expected a measured value\n";
+  for (const char* model : {"bingham", "arx:2,2,1 --json"}) {
+    const CliRun r = run_in(dir, std::string("fit big.csv --model ") + model);
+    EXPECT_EQ(r.code, 2) << model << r.err;
+    EXPECT_EQ(r.out, "") << model;
+    EXPECT_EQ(r.err, expected) << model;
+  }
 }
 
 // `--vtk` on a full disk exited 0 with a truncated file in place of the old one, VTK's error on

@@ -162,6 +162,29 @@ TEST(BadInputCsv, QuotedCellsAreRead) {
             "rec.csv:3: 'x' in column 'force' is not a number");
 }
 
+// Headers with units: "force [N]" / "t (s)" in the column's SI unit read as the column; another
+// unit is refused naming the SI one (the format is SI: no silent scaling); a column in another case
+// or named "time" is not guessed, but the message names the column it resembles.
+TEST(BadInputCsv, HeaderUnitsAndNamesResembled) {
+  const Recording rec = parse_csv_samples(
+      "t (s),velocity [m/s],flow [m3/s],force [N]\n0,1,2,3\n0.1,4,5,6\n", "rec.csv");
+  EXPECT_EQ(rec.column("force")[1], 6.0);
+  EXPECT_EQ(rec.column("flow")[0], 2.0);
+  EXPECT_EQ(rec.t[1], 0.1);
+  EXPECT_EQ(csv_error("t,displacement [mm]\n0,1\n0.1,2\n"),
+            "rec.csv:1: column 'displacement [mm]': the recording format's 'displacement' is in "
+            "m; convert the column to m (the format is SI throughout)");
+  EXPECT_EQ(csv_error("t,force,force [N]\n0,1,1\n0.1,2,2\n"),
+            "rec.csv:1: column 'force [N]' appears twice (as 'force')");
+  EXPECT_EQ(csv_error("time,Force\n0,1\n0.1,2\n"),
+            "rec.csv:1: no 't' column (time in s is required); the header has 'time': name it 't'");
+  const Recording hinted = parse_csv_samples("t,Force\n0,1\n0.1,2\n", "rec.csv");
+  ASSERT_EQ(hinted.warnings.size(), 1u);
+  EXPECT_EQ(hinted.warnings[0],
+            "rec.csv: ignoring unknown column 'Force'; did you mean 'force'? (columns are named "
+            "in lower case, in SI units: force in N)");
+}
+
 // A finite but absurd cell (1e200 N: its square overflows, so every FIT from it would be NaN) is
 // refused at its line; 1e15 itself and an unknown column's value are not checked against it.
 TEST(BadInputCsv, AbsurdMagnitudeRefused) {
