@@ -313,9 +313,11 @@ Recording parse_csv_samples(std::string_view text, const std::string& csv_path) 
   std::vector<std::string> kept;
   std::set<std::string> seen;
   for (std::size_t c = 0; c < header.size(); ++c) {
-    if (header[c].empty())
-      fail_at(csv_path, line_no,
-              "empty column name in header (column " + std::to_string(c + 1) + ")");
+    if (header[c].empty()) {  // spreadsheet exports end rows with a comma
+      warnings.push_back(csv_path + ": ignoring unnamed column " + std::to_string(c + 1) +
+                         " (an empty header cell)");
+      continue;
+    }
     const std::string name = column_named(header[c], csv_path, line_no);
     if (!seen.insert(name.empty() ? header[c] : name).second)
       fail_at(csv_path, line_no,

@@ -185,6 +185,15 @@ TEST(BadInputCsv, HeaderUnitsAndNamesResembled) {
             "in lower case, in SI units: force in N)");
 }
 
+// Spreadsheet exports end every row with a comma: the unnamed last column is ignored with a
+// warning, its cells unread.
+TEST(BadInputCsv, UnnamedColumnIgnored) {
+  const Recording rec = parse_csv_samples("t,force,\n0,1,\n0.1,2,x\n", "rec.csv");
+  EXPECT_EQ(rec.column("force")[1], 2.0);
+  ASSERT_EQ(rec.warnings.size(), 1u);
+  EXPECT_EQ(rec.warnings[0], "rec.csv: ignoring unnamed column 3 (an empty header cell)");
+}
+
 // A finite but absurd cell (1e200 N: its square overflows, so every FIT from it would be NaN) is
 // refused at its line; 1e15 itself and an unknown column's value are not checked against it.
 TEST(BadInputCsv, AbsurdMagnitudeRefused) {
