@@ -387,12 +387,16 @@ Recording read_recording(const std::string& csv_path) {
   RecordingMeta meta = read_sidecar(sidecar);
   Recording rec = read_csv_samples(csv_path);
   rec.meta = std::move(meta);
+  const auto missing = [&](const std::string& role, const std::string& name) {
+    std::string present;
+    for (const auto& column : rec.columns) present += ", " + column.first;
+    throw InputError(sidecar + ": [recording] " + role + " column '" + name + "' is not in " +
+                     csv_path + " (its columns: t" + present + ")" +
+                     (is_known_column(name) ? "" : column_hint(name)));
+  };
   for (const auto& d : rec.meta.drive)
-    if (!rec.columns.count(d))
-      throw InputError(sidecar + ": [recording] drive column '" + d + "' is not in " + csv_path);
-  if (!rec.columns.count(rec.meta.output))
-    throw InputError(sidecar + ": [recording] output column '" + rec.meta.output + "' is not in " +
-                     csv_path);
+    if (!rec.columns.count(d)) missing("drive", d);
+  if (!rec.columns.count(rec.meta.output)) missing("output", rec.meta.output);
   return rec;
 }
 

@@ -5,9 +5,12 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -17,6 +20,7 @@
 
 using ::testing::HasSubstr;
 using namespace rheomag::lumped;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -192,6 +196,28 @@ TEST(BadInputCsv, UnnamedColumnIgnored) {
   EXPECT_EQ(rec.column("force")[1], 2.0);
   ASSERT_EQ(rec.warnings.size(), 1u);
   EXPECT_EQ(rec.warnings[0], "rec.csv: ignoring unnamed column 3 (an empty header cell)");
+}
+
+// A sidecar naming a column the CSV lacks: the message lists the CSV's columns and, for a name
+// that is not a column of the format, the one it resembles.
+TEST(BadInputSidecar, MissingColumnListsTheCsvColumns) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("rheomag_missing_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "r.csv") << "t,velocity,force\n0,1,2\n0.1,2,3\n";
+  std::ofstream(dir / "r.toml") << "[recording]\ndrive = [\"velocity\"]\noutput = \"Force\"\n";
+  const std::string csv = (dir / "r.csv").string(), toml = (dir / "r.toml").string();
+  EXPECT_THAT([&] { read_recording(csv); },
+              ::testing::ThrowsMessage<rheomag::InputError>(
+                  toml + ": [recording] output column 'Force' is not in " + csv +
+                  " (its columns: t, force, velocity); did you mean 'force'? (columns are named in "
+                  "lower case, in SI units: force in N)"));
+  std::ofstream(dir / "r.toml") << "[recording]\ndrive = [\"flow\"]\noutput = \"force\"\n";
+  EXPECT_THAT([&] { read_recording(csv); },
+              ::testing::ThrowsMessage<rheomag::InputError>(
+                  toml + ": [recording] drive column 'flow' is not in " + csv +
+                  " (its columns: t, force, velocity)"));
+  fs::remove_all(dir);
 }
 
 // A finite but absurd cell (1e200 N: its square overflows, so every FIT from it would be NaN) is
