@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "app/command.hpp"
+#include "app/progress_lines.hpp"
 #include "core/error.hpp"
 #include "lumped/fit_model_json.hpp"
 #include "lumped/greybox.hpp"
@@ -37,6 +38,7 @@ struct FitOptions {
   std::string validate;
   EvalMode mode = EvalMode::simulation;
   bool json = false;
+  bool quiet = false;
   std::string plot;
 };
 
@@ -170,6 +172,7 @@ FitReport fit_grey_box_model(const FitOptions& o, const Recording& rec, const Sa
   reject_prediction_mode(o);
   GreyboxOptions options;
   options.train = train;
+  if (!o.quiet) options.progress = rheomag::app::progress_lines("fit", std::cerr);
   const GreyboxFit fit = fit_greybox(rec, o.model, options);
   FitReport report = grey_box_report(
       fit, rec, train, val, [&](const Recording& other) { return simulate_greybox(other, fit); });
@@ -347,6 +350,7 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
           std::map<std::string, EvalMode>{{"simulation", EvalMode::simulation},
                                           {"prediction", EvalMode::prediction}},
           CLI::ignore_case));
+  cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr (grey-box fits report them)");
   cmd->add_flag("--json", o->json,
                 "Print one JSON object: the fitted model (format, kind, model, rig, drive, output, "
                 "setup, parameters with units, static_map of valve-chain; readable back as a "

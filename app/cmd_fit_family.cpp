@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "app/command.hpp"
+#include "app/progress_lines.hpp"
 #include "core/error.hpp"
 #include "lumped/current_dependent_fit.hpp"
 #include "lumped/family_report.hpp"
@@ -31,6 +32,7 @@ struct FamilyOptions {
   int starts = 2;
   double max_substep = 2e-3;
   bool json = false;
+  bool quiet = false;
   std::string report;
 };
 
@@ -71,6 +73,7 @@ void run_fit_family(const FamilyOptions& o) {
   options.decimation = o.decimation;
   options.greybox.starts = o.starts;
   options.greybox.max_substep = o.max_substep;
+  if (!o.quiet) options.greybox.progress = rheomag::app::progress_lines("fit-family", std::cerr);
   const FamilyFit r = fit_current_dependent(training, o.model, prediction, options);
   if (!o.report.empty()) write_family_report(o.report, r, training, prediction);
   if (!o.json) {
@@ -134,6 +137,7 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
                 "Print one JSON object: the fitted model (readable back as a model file, "
                 "docs/fit-model-json.md), params, train and prediction (arrays of {file, "
                 "field, fit_percent, rmse_percent, re, mean_removed}), mode");
+  cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr");
   cmd->callback([o]() { run_fit_family(*o); });
 });
 

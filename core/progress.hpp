@@ -10,11 +10,12 @@ namespace rheomag {
 /// One progress report: what is being done, how far (done of total, total 0 when unknown) and
 /// the seconds elapsed since the computation started.
 struct ProgressEvent {
-  std::string stage;     ///< e.g. "candidate fluid_inertia" or "design 12"
-  double done = 0.0;     ///< units of work finished
-  double total = 0.0;    ///< units of work in all (0: unknown)
-  double elapsed = 0.0;  ///< [s]
-  std::string detail;    ///< a finished step's result, e.g. "dBIC 12.3" ("" while running)
+  std::string stage;            ///< e.g. "candidate fluid_inertia" or "design 12"
+  double done = 0.0;            ///< units of work finished
+  double total = 0.0;           ///< units of work in all (0: unknown)
+  double elapsed = 0.0;         ///< [s]
+  std::string detail;           ///< a finished step's result, e.g. "dBIC 12.3" ("" while running)
+  bool total_is_bound = false;  ///< `total` is an upper bound (e.g. an iteration limit)
 };
 
 /// Receives progress reports; an empty callback means nobody listens.

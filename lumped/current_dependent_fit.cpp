@@ -3,6 +3,7 @@
 #include "lumped/current_dependent_fit.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numeric>
 
@@ -100,9 +101,22 @@ FamilyFit fit_current_dependent(const std::vector<Recording>& training, const st
                                 const FamilyFitOptions& options) {
   check_family(training, prediction, model);
   FamilyFit out;
+  const auto start = std::chrono::steady_clock::now();
   out.fit = fit_greybox_family(training, model, options.greybox, options.decimation);
-  for (const Recording& r : training) out.training.push_back(evaluate_member(r, out.fit));
-  for (const Recording& r : prediction) out.predicted.push_back(evaluate_member(r, out.fit));
+  // Each recording simulated at its full rate with the fitted parameters.
+  const std::size_t members = training.size() + prediction.size();
+  const auto evaluate = [&](const Recording& r, std::vector<FamilyMember>& into) {
+    into.push_back(evaluate_member(r, out.fit));
+    if (!options.greybox.progress) return;
+    ProgressEvent e;
+    e.stage = "simulating every recording with the fitted " + out.fit.model;
+    e.done = static_cast<double>(out.training.size() + out.predicted.size());
+    e.total = static_cast<double>(members);
+    e.elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    options.greybox.progress(e);
+  };
+  for (const Recording& r : training) evaluate(r, out.training);
+  for (const Recording& r : prediction) evaluate(r, out.predicted);
   return out;
 }
 

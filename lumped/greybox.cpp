@@ -9,6 +9,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <numeric>
 #include <random>
@@ -491,6 +493,37 @@ double fit_step(PhenoKind kind, const GreyboxOptions& options) {
   return kind == PhenoKind::damper ? options.exponential_step : options.max_substep;
 }
 
+/// Reports each Levenberg-Marquardt iteration of a start as progress: the iterations of every
+/// start so far out of their bound.
+class IterationReport : public ceres::IterationCallback {
+ public:
+  IterationReport(const ProgressCallback& progress, std::atomic<int>& iterations,
+                  std::chrono::steady_clock::time_point start, std::string stage, int bound)
+      : progress_(progress),
+        iterations_(iterations),
+        start_(start),
+        stage_(std::move(stage)),
+        bound_(bound) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
+    if (summary.iteration == 0) return ceres::SOLVER_CONTINUE;  // the starting point
+    ProgressEvent e;
+    e.stage = stage_;
+    e.done = ++iterations_;
+    e.total = bound_;
+    e.total_is_bound = true;
+    e.elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    progress_(e);
+    return ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  const ProgressCallback& progress_;
+  std::atomic<int>& iterations_;
+  std::chrono::steady_clock::time_point start_;
+  std::string stage_;
+  int bound_;
+};
+
 /// The training data of a fit: one or more drive series, each simulated from its own initial
 /// state on its own sample range, its residuals divided by its own scale.
 struct FitData {
@@ -550,6 +583,8 @@ void run_fit(const FitData& data, const GreyboxSetup& setup, const ParamGuess& g
   const int threads_per_start =
       static_cast<int>(threads / std::min<unsigned>(threads, static_cast<unsigned>(starts)));
   std::vector<ceres::Solver::Summary> summaries(static_cast<std::size_t>(starts));
+  std::atomic<int> iterations{0};  // over all starts, for the progress report
+  const auto clock_start = std::chrono::steady_clock::now();
   const auto solve_start = [&](std::size_t start) {
     std::array<double, NF>& theta = thetas[start];
     ceres::Problem problem;
@@ -566,6 +601,9 @@ void run_fit(const FitData& data, const GreyboxSetup& setup, const ParamGuess& g
     ceres::Solver::Options so =
         greybox_solver_options(options.max_iterations, 50);  // trial steps into unstable regions
     so.num_threads = threads_per_start;
+    IterationReport report(options.progress, iterations, clock_start, "fitting " + fit.model,
+                           starts * options.max_iterations);
+    if (options.progress) so.callbacks.push_back(&report);
     ceres::Solve(so, &problem, &summaries[start]);
   };
   for_each_start(static_cast<std::size_t>(starts), threads, solve_start);

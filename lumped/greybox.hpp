@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/progress.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/phenomenological.hpp"
 #include "lumped/recording.hpp"
@@ -26,6 +27,9 @@ struct GreyboxOptions {
   double exponential_step = 5e-3;    ///< [s] largest step of the damper model's integrator
   double bouc_wen_step = 1e-3;       ///< [s] largest step of the Bouc-Wen model's integrator
   double eps_fraction = 1e-3;        ///< sign/|.| regularisation width as a fraction of rms motion
+  /// Reports the fit's Levenberg-Marquardt iterations (summed over the starts, out of the bound
+  /// starts x max_iterations); may be called from several threads at once.
+  ProgressCallback progress;
 };
 
 /// One fitted parameter in SI units (units spelled out for this recording's columns).

@@ -117,6 +117,26 @@ TEST(FitFamilyCli, RejectsAnUnknownModelListingTheKnownOnes) {
   fs::remove_all(dir);
 }
 
+// Progress on stderr (a family fit takes 10-60 s on real tests): the fit's iterations against
+// their bound (2 starts x 60), then the simulation of every recording, whose last step is always
+// printed; --quiet prints nothing; stdout carries only the result.
+TEST(FitFamilyCli, ReportsProgressOnStderrUnlessQuiet) {
+  const fs::path dir = fresh_dir("progress");
+  const std::string a = write_recording_at(dir, "a.csv", 0.0);
+  const std::string b = write_recording_at(dir, "b.csv", 1.0);
+  const CliRun r = run_fit_family(a + " " + b + " --model bingham --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.find("fit-family: fitting bingham, 1 of at most 120, "), 0u) << r.err;
+  EXPECT_NE(r.err.find("fit-family: simulating every recording with the fitted bingham, 2 of 2, "),
+            std::string::npos)
+      << r.err;
+  EXPECT_TRUE(nlohmann::json::accept(r.out)) << r.out;
+  const CliRun quiet = run_fit_family(a + " " + b + " --model bingham --json --quiet");
+  ASSERT_EQ(quiet.code, 0) << quiet.err;
+  EXPECT_EQ(quiet.err, "");
+  fs::remove_all(dir);
+}
+
 // A Bingham family at 0 and 1 A predicts 0.5 A exactly (noise-free, same structure): FIT > 99 %
 // on every recording; the JSON has standard errors; the report has a loop per recording and
 // renders in headless Chromium (screenshot not blank).

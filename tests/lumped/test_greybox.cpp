@@ -3,9 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <mutex>
 #include <random>
+#include <vector>
 
 #include "core/error.hpp"
 #include "lumped/greybox.hpp"
@@ -156,6 +159,36 @@ TEST(Greybox, ParallelStartsGiveTheSameFit) {
   for (std::size_t k = 0; k < a.params.size(); ++k)
     EXPECT_EQ(a.params[k].value, b.params[k].value) << a.params[k].name;
   EXPECT_EQ(a.train.fit_percent, b.train.fit_percent);
+}
+
+// Progress of a fit: one report per Levenberg-Marquardt iteration of any start (3 starts on 3
+// threads), counted 1, 2, 3, ... against the bound starts x max_iterations, which is marked as a
+// bound; the same parameters as a fit nobody listens to.
+TEST(Greybox, ReportsItsIterationsAsProgress) {
+  Recording rec = synthetic_recording(6.0, 2e-3);
+  simulate_into(rec, PhenoKind::bingham, {200.0, 800.0, 1500.0, 500.0, 0.01, -30.0}, 0.01, 3);
+  GreyboxOptions options;
+  options.starts = 3;
+  options.threads = 3;
+  std::mutex mutex;
+  std::vector<double> done;
+  options.progress = [&](const rheomag::ProgressEvent& e) {
+    std::lock_guard<std::mutex> lock(mutex);
+    EXPECT_EQ(e.stage, "fitting bingham");
+    EXPECT_EQ(e.total, 3.0 * options.max_iterations);
+    EXPECT_TRUE(e.total_is_bound);
+    EXPECT_GE(e.elapsed, 0.0);
+    done.push_back(e.done);
+  };
+  const GreyboxFit listened = fit_greybox(rec, "bingham", options);
+  ASSERT_FALSE(done.empty());
+  std::sort(done.begin(), done.end());  // threads may report out of order
+  for (std::size_t k = 0; k < done.size(); ++k) EXPECT_EQ(done[k], static_cast<double>(k + 1));
+  EXPECT_LE(done.back(), 3.0 * options.max_iterations);
+  options.progress = nullptr;
+  const GreyboxFit silent = fit_greybox(rec, "bingham", options);
+  for (std::size_t k = 0; k < silent.params.size(); ++k)
+    EXPECT_EQ(listened.params[k].value, silent.params[k].value) << silent.params[k].name;
 }
 
 // With fewer starts than threads, the spare threads evaluate a start's residual blocks (one per

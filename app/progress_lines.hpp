@@ -1,0 +1,18 @@
+#pragma once
+// Progress of a long command on stderr: a library's ProgressCallback printed as plain lines, at
+// most one every few seconds (plus every finished step), safe to call from several threads.
+
+#include <ostream>
+#include <string>
+
+#include "core/progress.hpp"
+
+namespace rheomag::app {
+
+/// A callback printing "PREFIX: stage, done of total, elapsed, time left" lines on `out` (a total
+/// that is a bound gives a time left that is one too); a step with a detail is always printed,
+/// other reports at most every `interval` seconds.
+ProgressCallback progress_lines(const std::string& prefix, std::ostream& out,
+                                double interval = 2.0);
+
+}  // namespace rheomag::app
