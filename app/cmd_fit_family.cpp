@@ -4,6 +4,7 @@
 // lumped/current_dependent_fit.hpp; this file maps options to it and prints the result.
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -48,15 +49,23 @@ nlohmann::json member_json(const FamilyMember& m) {
           {"fit_percent", m.metrics.fit_percent},
           {"rmse_percent", m.metrics.rmse_percent},
           {"re", m.metrics.re},
-          {"mean_removed", m.mean_removed}};
+          {"mean_removed", m.mean_removed},
+          {"band_rms", m.band ? nlohmann::json(m.band->rms) : nlohmann::json()},
+          {"band_percent", m.band ? nlohmann::json(m.band->percent) : nlohmann::json()}};
 }
 
 void print_members(const char* title, const std::vector<FamilyMember>& members) {
-  rheomag::app::print("%s\n  %-40s %8s %8s %8s\n", title, "recording", "field", "FIT%", "RE");
-  for (const auto& m : members)
+  const bool banded = std::any_of(members.begin(), members.end(),
+                                  [](const FamilyMember& m) { return m.band.has_value(); });
+  rheomag::app::print("%s\n  %-40s %8s %8s %8s%s\n", title, "recording", "field", "FIT%", "RE",
+                      banded ? "  band% (1 sigma, parameters between recordings)" : "");
+  for (const auto& m : members) {
+    rheomag::app::print("  %-40s %8.3g %8.1f %8.3f", m.csv_path.c_str(), m.field,
+                        m.metrics.fit_percent, m.metrics.re);
+    if (m.band) rheomag::app::print("  %5.1f", m.band->percent);
     rheomag::app::print(
-        "  %-40s %8.3g %8.1f %8.3f%s\n", m.csv_path.c_str(), m.field, m.metrics.fit_percent,
-        m.metrics.re, m.mean_removed ? "  (mean removed: compared without the model's mean)" : "");
+        "%s\n", m.mean_removed ? "  (mean removed: compared without the model's mean)" : "");
+  }
 }
 
 void run_fit_family(const FamilyOptions& o) {
@@ -133,10 +142,11 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
   cmd->add_option("--report", o->report,
                   "Write DIR/report.html: measured vs model loops of every recording, parameters "
                   "with standard errors and their field dependence, FIT per recording");
-  cmd->add_flag("--json", o->json,
-                "Print one JSON object: the fitted model (readable back as a model file, "
-                "docs/fit-model-json.md), params, train and prediction (arrays of {file, "
-                "field, fit_percent, rmse_percent, re, mean_removed}), mode");
+  cmd->add_flag(
+      "--json", o->json,
+      "Print one JSON object: the fitted model (readable back as a model file, "
+      "docs/fit-model-json.md), params, train and prediction (arrays of {file, "
+      "field, fit_percent, rmse_percent, re, mean_removed, band_rms, band_percent}), mode");
   cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr");
   cmd->callback([o]() { run_fit_family(*o); });
 });

@@ -116,7 +116,10 @@ FamilyFit fit_current_dependent(const std::vector<Recording>& training, const st
     options.greybox.progress(e);
   };
   for (const Recording& r : training) evaluate(r, out.training);
-  for (const Recording& r : prediction) evaluate(r, out.predicted);
+  for (const Recording& r : prediction) {
+    evaluate(r, out.predicted);
+    out.predicted.back().band = prediction_band(r, out.fit);
+  }
   return out;
 }
 

@@ -9,6 +9,7 @@
 
 #include "lumped/greybox.hpp"
 #include "lumped/metrics.hpp"
+#include "lumped/prediction_band.hpp"
 #include "lumped/recording.hpp"
 
 namespace rheomag::lumped {
@@ -26,6 +27,9 @@ struct FamilyMember {
   Metrics metrics;
   /// The recording's output had its mean removed, so the model's was too (output_mean_removed).
   bool mean_removed = false;
+  /// Predicted recordings: the prediction's one-sigma band from the parameters' disagreement
+  /// between the training recordings (prediction_band).
+  std::optional<PredictionBand> band;
   std::vector<double> simulated;  ///< free-run model output at the recording's samples
 };
 

@@ -639,8 +639,9 @@ void run_fit(const FitData& data, const GreyboxSetup& setup, const ParamGuess& g
   std::vector<int> cluster_rows;
   for (const FitResidual<N, NF>& functor : functors)
     cluster_rows.push_back(static_cast<int>(functor.range.size()));
+  const std::optional<ParameterCovariance> between = cluster_covariance(jf, res, cluster_rows);
   const std::vector<std::optional<double>> se_between =
-      cluster_standard_errors(jf, res, cluster_rows);
+      between ? standard_errors_of(*between) : std::vector<std::optional<double>>(NF);
 
   const auto& specs = pheno_params(setup.kind);
   fit.params.clear();
@@ -661,6 +662,16 @@ void run_fit(const FitData& data, const GreyboxSetup& setup, const ParamGuess& g
                   std::abs(fp.value - guess.upper[k]) < 1e-6 * span;
     if (se[j]) fp.standard_error = *se[j] * guess.scale[k];
     if (se_between[j]) fp.standard_error_between_recordings = *se_between[j] * guess.scale[k];
+  }
+  // The covariance between recordings in physical units, over the identifiable free parameters.
+  fit.covariance_between_recordings.resize(0, 0);
+  if (between) {
+    fit.covariance_between_recordings = Eigen::MatrixXd::Zero(N, N);
+    for (int a = 0; a < NF; ++a)
+      for (int b = 0; b < NF; ++b)
+        if (se_between[a] && se_between[b])
+          fit.covariance_between_recordings(free[a], free[b]) =
+              between->matrix(a, b) * guess.scale[free[a]] * guess.scale[free[b]];
   }
 }
 

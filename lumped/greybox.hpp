@@ -5,6 +5,7 @@
 // differentiation through a fixed-step RK4 simulation), multi-start, and standard errors from the
 // Jacobian.
 
+#include <Eigen/Core>
 #include <optional>
 #include <string>
 #include <vector>
@@ -68,6 +69,10 @@ struct GreyboxFit {
   int starts_run = 0;
   int best_start = 0;
   bool converged = false;  ///< Ceres reported convergence for the best start
+  /// Family fits of two or more recordings: the parameters' cluster-robust covariance between
+  /// recordings (N x N in the model's parameter order, SI units), zero for held and unidentifiable
+  /// parameters; empty otherwise.
+  Eigen::MatrixXd covariance_between_recordings;
 };
 
 /// Names accepted by fit_greybox: bingham, lugre, bouc-wen, maxwell, dahl, bi-viscous, tanh,

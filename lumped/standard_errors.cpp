@@ -59,12 +59,12 @@ std::vector<std::optional<double>> jacobian_standard_errors(const Eigen::MatrixX
   return diagonal_roots(n.inverse * sigma2, n.identifiable);
 }
 
-std::vector<std::optional<double>> cluster_standard_errors(const Eigen::MatrixXd& jacobian,
-                                                           const Eigen::VectorXd& residuals,
-                                                           const std::vector<int>& cluster_rows) {
+std::optional<ParameterCovariance> cluster_covariance(const Eigen::MatrixXd& jacobian,
+                                                      const Eigen::VectorXd& residuals,
+                                                      const std::vector<int>& cluster_rows) {
   const auto m = jacobian.rows(), p = jacobian.cols();
   const auto g = static_cast<Eigen::Index>(cluster_rows.size());
-  if (g < 2 || m <= p) return std::vector<std::optional<double>>(static_cast<std::size_t>(p));
+  if (g < 2 || m <= p) return std::nullopt;
   Eigen::Index total = 0;
   for (const int rows : cluster_rows) total += rows;
   if (total != m)
@@ -81,7 +81,21 @@ std::vector<std::optional<double>> cluster_standard_errors(const Eigen::MatrixXd
   // CR1 small-sample factor: g / (g - 1) for the clusters, (m - 1) / (m - p) for the parameters.
   const double factor = static_cast<double>(g) / static_cast<double>(g - 1) *
                         static_cast<double>(m - 1) / static_cast<double>(m - p);
-  return diagonal_roots(n.inverse * meat * n.inverse * factor, n.identifiable);
+  return ParameterCovariance{n.inverse * meat * n.inverse * factor, n.identifiable};
+}
+
+std::vector<std::optional<double>> standard_errors_of(const ParameterCovariance& covariance) {
+  return diagonal_roots(covariance.matrix, covariance.identifiable);
+}
+
+std::vector<std::optional<double>> cluster_standard_errors(const Eigen::MatrixXd& jacobian,
+                                                           const Eigen::VectorXd& residuals,
+                                                           const std::vector<int>& cluster_rows) {
+  const std::optional<ParameterCovariance> covariance =
+      cluster_covariance(jacobian, residuals, cluster_rows);
+  if (!covariance)
+    return std::vector<std::optional<double>>(static_cast<std::size_t>(jacobian.cols()));
+  return standard_errors_of(*covariance);
 }
 
 }  // namespace rheomag::lumped

@@ -14,6 +14,22 @@ namespace rheomag::lumped {
 std::vector<std::optional<double>> jacobian_standard_errors(const Eigen::MatrixXd& jacobian,
                                                             const Eigen::VectorXd& residuals);
 
+/// A parameter covariance matrix and which parameters it identifies (jacobian_standard_errors'
+/// rule).
+struct ParameterCovariance {
+  Eigen::MatrixXd matrix;
+  std::vector<bool> identifiable;
+};
+
+/// The cluster-robust (CR1) covariance of cluster_standard_errors; empty with fewer than 2 clusters
+/// or no more rows than parameters.
+std::optional<ParameterCovariance> cluster_covariance(const Eigen::MatrixXd& jacobian,
+                                                      const Eigen::VectorXd& residuals,
+                                                      const std::vector<int>& cluster_rows);
+
+/// Square roots of a covariance's diagonal where it identifies the parameter, else empty.
+std::vector<std::optional<double>> standard_errors_of(const ParameterCovariance& covariance);
+
 /// Cluster-robust (sandwich, CR1) standard errors: cov = (J^T J)^-1 (sum_g s_g s_g^T) (J^T J)^-1
 /// g/(g-1) (m-1)/(m-p), s_g = J_g^T r_g the score of cluster g, whose rows are the next
 /// cluster_rows[g] rows of J and r. With recordings as clusters it measures how far the

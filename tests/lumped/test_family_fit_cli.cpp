@@ -155,6 +155,10 @@ TEST(FitFamilyCli, ReportRendersInHeadlessChromium) {
   // without its own mean (docs/damper-model.md), and each recording says so.
   EXPECT_TRUE(j["train"][0]["mean_removed"].get<bool>());
   EXPECT_TRUE(j["prediction"][0]["mean_removed"].get<bool>());
+  // A prediction carries its band from the parameters' disagreement between the two recordings.
+  EXPECT_GE(j["prediction"][0]["band_percent"].get<double>(), 0.0);
+  EXPECT_GE(j["prediction"][0]["band_rms"].get<double>(), 0.0);
+  EXPECT_TRUE(j["train"][0]["band_percent"].is_null());
   // The printed model reads back (lumped/fit_model_json.hpp) and predicts c.csv as printed.
   const FitModel back = parse_fit_model_json(r.out, "stdout");
   // Two recordings: every free parameter has a between-recordings (clustered) error, read back.
