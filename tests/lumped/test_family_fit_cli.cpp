@@ -186,6 +186,7 @@ TEST(FitFamilyCli, ReportRendersInHeadlessChromium) {
   EXPECT_EQ(svgs, 6u);  // force-displacement and force-velocity for 3 recordings
   EXPECT_NE(html.find("standard error"), std::string::npos);
   EXPECT_NE(html.find("between recordings"), std::string::npos);
+  EXPECT_NE(html.find("band % (1&sigma;, parameters between recordings)"), std::string::npos);
   EXPECT_EQ(html.find("src=\"http"), std::string::npos);  // self-contained
   if (run("command -v chromium > /dev/null 2>&1") != 0) GTEST_SKIP() << "chromium not installed";
   const fs::path png = dir / "report.png";
