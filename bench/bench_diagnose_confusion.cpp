@@ -12,7 +12,9 @@
 // of the achievable ceiling (the truth driven by the recorded, noisy inputs).
 // Not a Google Benchmark (it takes minutes):
 //   bench_diagnose_confusion [--draws N] [--seed S] [--threads T] [--only NAME] [--index I]
-//                            [--csv FILE] [--nuisances 0|1] [--visible 0|1]
+//                            [--csv FILE] [--nuisances 0|1] [--visible 0|1] [--ringing-start 0|1]
+// --ringing-start 0 starts the fluid_inertia candidate from its decade grid alone, without the
+// inertances the residual's ringing gives (DiagnoseOptions::ringing_start; for comparison).
 // --visible 1 (the default) makes every concealed effect at least barely visible: the part of
 // its signature on the recording (truth with it minus truth without it, same drives and
 // nuisances) that the baseline's calibration cannot reproduce must have an rms of at least the
@@ -553,8 +555,10 @@ Draw make_visible(Draw d, Draw (*redraw)(const std::string&, int, unsigned, bool
   return d;
 }
 
-/// Simulates the draw, adds noise and the sidecar map error, and runs the diagnosis.
-Outcome run(const Draw& drawn, unsigned seed, bool visible) {
+/// Simulates the draw, adds noise and the sidecar map error, and runs the diagnosis with
+/// `options`.
+Outcome run(const Draw& drawn, unsigned seed, bool visible,
+            const diagnose::DiagnoseOptions& options) {
   std::mt19937 rng(seed);
   Outcome o;
   o.truth = drawn.truth;
@@ -586,7 +590,7 @@ Outcome run(const Draw& drawn, unsigned seed, bool visible) {
     if (!draw.state_inductance) rec.meta.coil.inductance.reset();
     rec.csv_path = draw.truth + "_" + std::to_string(draw.index) + ".csv";
     rec.meta.sidecar_path = draw.truth + "_" + std::to_string(draw.index) + ".toml";
-    const auto d = diagnose::diagnose(rec);
+    const auto d = diagnose::diagnose(rec, options);
     if (std::getenv("RHEOMAG_CONFUSION_NOTES")) {
       std::ostringstream notes;
       notes << "  notes " << draw.truth << " #" << draw.index << ":";
@@ -645,6 +649,7 @@ int main(int argc, char** argv) {
   bool nuisances = true, visible = true;
   unsigned seed = 2026;
   std::string only, csv;
+  diagnose::DiagnoseOptions options;
   for (int k = 1; k + 1 < argc; k += 2) {
     const std::string a = argv[k], v = argv[k + 1];
     if (a == "--draws")
@@ -663,6 +668,8 @@ int main(int argc, char** argv) {
       nuisances = std::atoi(v.c_str()) != 0;
     else if (a == "--visible")
       visible = std::atoi(v.c_str()) != 0;
+    else if (a == "--ringing-start")
+      options.ringing_start = std::atoi(v.c_str()) != 0;
     else {
       std::cerr << "unknown option " << a << "\n";
       return 2;
@@ -687,7 +694,7 @@ int main(int argc, char** argv) {
   }
   auto worker = [&]() {
     for (std::size_t j = next++; j < jobs.size(); j = next++) {
-      outcomes[j] = run(jobs[j], seed + 7u * static_cast<unsigned>(j) + 1u, visible);
+      outcomes[j] = run(jobs[j], seed + 7u * static_cast<unsigned>(j) + 1u, visible, options);
       const auto& o = outcomes[j];
       std::lock_guard<std::mutex> lock(print);
       std::cout << o.truth << " #" << jobs[j].index << " -> " << o.named

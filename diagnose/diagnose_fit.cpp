@@ -288,12 +288,13 @@ std::vector<double> grid_search(const DiagnosisModel& model, const std::vector<E
 
 std::vector<double> grid_start(const DiagnosisModel& model, const std::vector<Effect>& effects,
                                std::vector<double> start, double* best_sse, int threads,
-                               bool scan_delay) {
+                               bool scan_delay, const std::vector<double>& extra) {
   const auto layout = model.layout(effects);
   const std::size_t j = layout.size() - model.effect_params(effects.back()).size();
   const auto& d = layout[j];
   std::vector<double> grid;
   for (double v = d.lower * 3.0; v <= d.upper; v *= 10.0) grid.push_back(v);
+  grid.insert(grid.end(), extra.begin(), extra.end());
   return grid_search(model, effects, std::move(start), j, grid, best_sse, threads, scan_delay);
 }
 

@@ -57,9 +57,11 @@ std::vector<double> grid_search(const DiagnosisModel& model, const std::vector<E
 /// Best start for `effects.back()`'s first parameter: a decade grid over its bounds with the
 /// other values held at `start`; returns `start` with that parameter replaced and, in
 /// `best_sse` when given, the squared error there. The grid points share `threads` threads;
-/// `scan_delay` as in grid_search.
+/// `scan_delay` as in grid_search. `extra` values of that parameter (e.g. starts measured on the
+/// recording) are scored beside the grid's.
 std::vector<double> grid_start(const DiagnosisModel& model, const std::vector<Effect>& effects,
                                std::vector<double> start, double* best_sse = nullptr,
-                               int threads = 1, bool scan_delay = false);
+                               int threads = 1, bool scan_delay = false,
+                               const std::vector<double>& extra = {});
 
 }  // namespace rheomag::diagnose

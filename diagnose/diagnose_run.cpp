@@ -13,6 +13,7 @@
 
 #include "core/error.hpp"
 #include "diagnose/diagnose_noise.hpp"
+#include "diagnose/diagnose_ringing.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording_excerpt.hpp"
 
@@ -757,7 +758,12 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evi
         const auto started = std::chrono::steady_clock::now();
         double grid_sse = 0.0;
         const bool scan_delay = !held_in_candidates(model, effects, s)[model.delay_index()];
-        s = grid_start(model, effects, s, &grid_sse, options.threads, scan_delay);
+        // The inertance is also started at the ringing the residual shows (omega^2 = 1 / (I C)
+        // with the compliance already in the model): the error is multimodal in it.
+        const auto starts = c == Effect::fluid_inertia && options.ringing_start
+                                ? ringing_inertances(model, current)
+                                : std::vector<double>{};
+        s = grid_start(model, effects, s, &grid_sse, options.threads, scan_delay, starts);
         // Screening: a candidate that lowers the error at no decade of its parameter (the
         // others held at the current fit) is scored there and not fitted.
         if (!(grid_sse < current.sse)) {

@@ -40,6 +40,9 @@ struct DiagnoseOptions {
   /// residual energy); the baseline, the final joint re-fit and every reported FIT use all
   /// samples. 0: always the whole recording.
   std::size_t selection_samples = 15000;
+  /// Start the fluid_inertia candidate also at the inertances the residual's ringing gives
+  /// (diagnose_ringing.hpp) besides its decade grid; false: the grid alone (for comparison).
+  bool ringing_start = true;
   /// A fitted model as the baseline instead of the sidecar's rig (`--baseline MODEL.json`).
   std::optional<ModelBaseline> baseline_model;
 };
