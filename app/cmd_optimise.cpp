@@ -11,6 +11,7 @@
 #include <string>
 
 #include "app/command.hpp"
+#include "app/progress_lines.hpp"
 #include "case/case_file.hpp"
 #include "optimise/optimise_run.hpp"
 
@@ -21,6 +22,7 @@ struct OptimiseCli {
   std::string out_dir = ".";
   bool json = false;
   bool verbose = false;
+  bool quiet = false;
 };
 
 nlohmann::json design_json(const rheomag::optimise::DesignReport& d,
@@ -52,6 +54,7 @@ int run_optimise(const OptimiseCli& o) {
   optimise::OptimiseOptions options;
   options.out_dir = o.out_dir;
   options.print_level = o.verbose && !o.json ? 5 : 0;
+  if (!o.quiet) options.progress = app::progress_lines("optimise", std::cerr);
   const auto r = optimise::run_optimisation(c, options);
   if (o.json) {
     nlohmann::json out = {{"case", c.name},
@@ -126,6 +129,7 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
   cmd->add_option("--out", o->out_dir, "Output directory (default: current directory)");
   cmd->add_flag("--json", o->json, "Print one JSON object to stdout");
   cmd->add_flag("--verbose", o->verbose, "Show Ipopt's iteration log");
+  cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr");
   cmd->callback([o] {
     const int code = run_optimise(*o);
     if (code != 0) {  // infeasible: the report is printed; exit 1 (not an input error)

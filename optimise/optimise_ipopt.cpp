@@ -15,7 +15,15 @@ using Ipopt::Number;
 
 class DenseTnlp : public Ipopt::TNLP {
  public:
-  explicit DenseTnlp(const NlpProblem& problem) : p_(problem) {}
+  DenseTnlp(const NlpProblem& problem, const std::function<void(int)>& on_iteration)
+      : p_(problem), on_iteration_(on_iteration) {}
+
+  bool intermediate_callback(Ipopt::AlgorithmMode, Index iter, Number, Number, Number, Number,
+                             Number, Number, Number, Number, Index, const Ipopt::IpoptData*,
+                             Ipopt::IpoptCalculatedQuantities*) override {
+    if (on_iteration_) on_iteration_(static_cast<int>(iter));
+    return true;
+  }
 
   bool get_nlp_info(Index& n, Index& m, Index& nnz_jac_g, Index& nnz_h_lag,
                     IndexStyleEnum& index_style) override {
@@ -106,6 +114,7 @@ class DenseTnlp : public Ipopt::TNLP {
   }
 
   const NlpProblem& p_;
+  const std::function<void(int)>& on_iteration_;
   std::vector<double> values_x_, derivatives_x_, g_, grad_, jacobian_;
   double f_ = 0.0;
   bool values_ok_ = false, derivatives_ok_ = false;
@@ -114,7 +123,7 @@ class DenseTnlp : public Ipopt::TNLP {
 }  // namespace
 
 NlpResult solve_nlp(const NlpProblem& problem, const IpoptSettings& settings) {
-  Ipopt::SmartPtr<DenseTnlp> nlp = new DenseTnlp(problem);
+  Ipopt::SmartPtr<DenseTnlp> nlp = new DenseTnlp(problem, settings.on_iteration);
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   app->Options()->SetStringValue("hessian_approximation", "limited-memory");
   app->Options()->SetStringValue("sb", "yes");

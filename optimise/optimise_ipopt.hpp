@@ -25,6 +25,8 @@ struct IpoptSettings {
   int max_iterations = 100;
   double tolerance = 1e-8;  ///< Ipopt "tol"
   int print_level = 0;      ///< Ipopt output to stdout (0 = silent)
+  /// Called after each Ipopt iteration with its number (0: the starting point); may be empty.
+  std::function<void(int iteration)> on_iteration;
 };
 
 /// What Ipopt returned.

@@ -3,8 +3,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <sstream>
+#include <string>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
@@ -44,6 +46,24 @@ std::string choice_text(const std::vector<std::pair<std::string, std::string>>& 
   std::string text;
   for (const auto& [key, value] : choice) text += (text.empty() ? "" : ", ") + key + " = " + value;
   return text;
+}
+
+/// An Ipopt iteration callback reporting `stage`, the iteration against the limit (a bound) and
+/// the evaluator's FE solves so far; empty without a progress callback.
+std::function<void(int)> iteration_progress(const ProgressCallback& progress,
+                                            std::chrono::steady_clock::time_point start,
+                                            const std::string& stage, int max_iterations,
+                                            const OptimiseEvaluator& evaluator) {
+  if (!progress) return {};
+  return [=, &evaluator](int iteration) {
+    ProgressEvent e;
+    e.stage = stage + " (" + std::to_string(evaluator.fe_solves()) + " FE solves)";
+    e.done = iteration;
+    e.total = max_iterations;
+    e.total_is_bound = true;
+    e.elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    progress(e);
+  };
 }
 
 }  // namespace
@@ -101,6 +121,9 @@ OptimiseResult run_optimisation(const cases::Case& c, const OptimiseOptions& opt
       e = std::make_unique<OptimiseEvaluator>(cc, spec);
     }
     const int before = e->fe_solves();
+    settings.on_iteration = iteration_progress(
+        options.progress, start_time,
+        "optimising" + (choice.empty() ? "" : " " + choice_text(choice)), spec.max_iterations, *e);
     const ContinuousOptimum continuous =
         optimise_continuous(*e, spec, start, start_q, objective_scale, settings, history);
     CombinationResult combination;
@@ -128,6 +151,7 @@ OptimiseResult run_optimisation(const cases::Case& c, const OptimiseOptions& opt
       meshes_done += e->meshes();
     }
   }
+  settings.on_iteration = {};  // it refers to the last combination's evaluator
   if (evaluator) {  // the case as written, when only enumerated combinations were optimised
     solves_done += evaluator->fe_solves();
     meshes_done += evaluator->meshes();
@@ -165,6 +189,8 @@ OptimiseResult run_optimisation(const cases::Case& c, const OptimiseOptions& opt
   // The epsilon-constraint front of the chosen combination, each level a continuous optimum.
   if (spec.pareto) {
     OptimiseEvaluator& e = *best_evaluator;
+    settings.on_iteration =
+        iteration_progress(options.progress, start_time, "Pareto front", spec.max_iterations, e);
     const OptimiseFrom optimise = [&](const OptimiseSpec& level, const std::vector<double>& from,
                                       double scale) {
       return optimise_continuous(e, level, from, nullptr, scale, settings, history).report;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "case/case_file.hpp"
+#include "core/progress.hpp"
 #include "optimise/optimise_evaluate.hpp"
 #include "optimise/optimise_report.hpp"
 #include "optimise/optimise_spec.hpp"
@@ -22,6 +23,8 @@ namespace rheomag::optimise {
 struct OptimiseOptions {
   std::filesystem::path out_dir = ".";
   int print_level = 0;  ///< Ipopt's own output (0 = silent)
+  /// Reports each Ipopt iteration (out of the spec's iteration limit, a bound) and the FE solves.
+  ProgressCallback progress;
 };
 
 /// The optimum of one combination of the discrete choices.

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "optimise/optimise_ipopt.hpp"
 #include "optimise_fixture.hpp"
@@ -13,7 +14,8 @@ namespace {
 using rheomag::optimise::NlpProblem;
 using rheomag::optimise::solve_nlp;
 
-// Analytic magnetic-circuit valve (optimise_fixture.hpp): dp = gain N L, the envelope
+// Analytic magnetic-circuit valve (optimise_fixture.hpp), with its iterations reported as
+// progress: dp = gain N L, the envelope
 // 2 L + a N <= L_max (a = axial winding length per turn). Lagrange: the optimum shares the
 // length equally, 2 L* = a N* = L_max / 2, i.e. L* = L_max / 4, N* = L_max / (2 a).
 TEST(OptimiseIpopt, MagneticCircuitValveReachesTheAnalyticOptimum) {
@@ -41,8 +43,14 @@ TEST(OptimiseIpopt, MagneticCircuitValveReachesTheAnalyticOptimum) {
     jac[1] = a;
     return true;
   };
-  const auto r = solve_nlp(p);
+  // Progress: every iteration reported once, in order, from the starting point (0) to the last.
+  rheomag::optimise::IpoptSettings settings;
+  std::vector<int> reported;
+  settings.on_iteration = [&](int iteration) { reported.push_back(iteration); };
+  const auto r = solve_nlp(p, settings);
   ASSERT_TRUE(r.converged) << r.status;
+  ASSERT_EQ(reported.size(), static_cast<std::size_t>(r.iterations) + 1);
+  for (std::size_t k = 0; k < reported.size(); ++k) EXPECT_EQ(reported[k], static_cast<int>(k));
   // Tolerance: Ipopt tol 1e-8 on a well-scaled problem -> 1e-5 relative on the optimum.
   EXPECT_NEAR(r.x[0], l_star, 1e-5 * l_star);
   EXPECT_NEAR(r.x[1], n_star, 1e-5 * n_star);
