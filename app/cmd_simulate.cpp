@@ -1,11 +1,13 @@
 // rheomag simulate: run a lumped model spec (virtual rig) and write a recording (CSV + sidecar).
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
 #include "app/command.hpp"
 #include "core/error.hpp"
+#include "lumped/fit_model_json.hpp"
 #include "lumped/recording_io.hpp"
 #include "lumped/signals.hpp"
 #include "lumped/simulation_spec.hpp"
@@ -19,8 +21,32 @@ struct SimulateOptions {
   bool json = false;
 };
 
+void print_written(const SimulateOptions& o, const rheomag::lumped::Recording& rec);
+
+/// A model fitted by `fit` / `fit-family --json` run on a recording's drive columns: the recording
+/// with its output replaced by the model's.
+rheomag::lumped::Recording simulate_fitted_model(const SimulateOptions& o) {
+  using namespace rheomag::lumped;
+  if (o.input.empty() || !o.signals.empty())
+    throw rheomag::InputError(o.spec +
+                              ": a fitted model runs on a recording's drive columns: give --input "
+                              "REC.csv (with its sidecar), not --signal");
+  const FitModel model = read_fit_model_json(o.spec);
+  Recording rec = rheomag::app::load_recording(o.input);
+  rec.columns[rec.meta.output] = simulate_fit_model(rec, model);
+  rec.meta.description =
+      "simulated by the fitted " + model.model + " model " + o.spec + " on the drive of " + o.input;
+  return rec;
+}
+
 void run_simulate(const SimulateOptions& o) {
   using namespace rheomag::lumped;
+  if (std::filesystem::path(o.spec).extension() == ".json") {
+    const Recording rec = simulate_fitted_model(o);
+    write_recording(rec, o.out);
+    print_written(o, rec);
+    return;
+  }
   const SimulationSpec spec = read_simulation_spec(o.spec);
   Recording drive;
   if (!o.input.empty()) {
@@ -34,6 +60,12 @@ void run_simulate(const SimulateOptions& o) {
   }
   Recording rec = simulate_spec(spec, drive);
   write_recording(rec, o.out);
+  print_written(o, rec);
+}
+
+/// What was written: one JSON object (--json) or a line.
+void print_written(const SimulateOptions& o, const rheomag::lumped::Recording& rec) {
+  using rheomag::lumped::sidecar_path_for;
   if (o.json) {
     std::cout << "{\"out\": \"" << o.out << "\", \"sidecar\": \"" << sidecar_path_for(o.out)
               << "\", \"samples\": " << rec.t.size() << ", \"output\": \"" << rec.meta.output
@@ -57,8 +89,13 @@ bool registered = rheomag::app::register_command([](CLI::App& root) {
       "TOML sidecar) in the fixed format, ready for 'rheomag fit' or 'rheomag diagnose'.\n"
       "Example: rheomag simulate cases/rigs/bypass_cylinder.toml \\\n"
       "  --signal displacement=sine:amplitude=0.025,frequency=0.75 \\\n"
-      "  --signal current=steps:levels=0/0.5/1,period=2 --duration 6 --rate 1000 --out sim.csv");
-  cmd->add_option("spec", opts->spec, "model spec (TOML)")->required();
+      "  --signal current=steps:levels=0/0.5/1,period=2 --duration 6 --rate 1000 --out sim.csv\n"
+      "A fitted model (fit / fit-family --json > model.json) runs on a recording's drive:\n"
+      "  rheomag simulate model.json --input today.csv --out predicted.csv");
+  cmd->add_option("spec", opts->spec,
+                  "model spec (TOML), or a fitted model (JSON written by fit / fit-family --json: "
+                  "run on --input's drive, its output replaced by the model's)")
+      ->required();
   cmd->add_option("--input", opts->input, "recording CSV whose columns drive the model");
   cmd->add_option("--signal", opts->signals,
                   "generated drive COLUMN=KIND:key=value,... (repeatable). Kinds: "

@@ -181,6 +181,22 @@ TEST(FitFamilyCli, ReportRendersInHeadlessChromium) {
   const std::vector<double> y = simulate_fit_model(rc, back);
   EXPECT_NEAR(compute_metrics(rc.column("force"), y).fit_percent,
               j["prediction"][0]["fit_percent"].get<double>(), 1e-9);
+  // The same model file run by `rheomag simulate` on c.csv's drive writes that output.
+  std::ofstream(dir / "model.json") << r.out;
+  const CliRun sim =
+      rheomag::cli_test::run_rheomag("simulate " + (dir / "model.json").string() + " --input " + c +
+                                     " --out " + (dir / "sim.csv").string());
+  ASSERT_EQ(sim.code, 0) << sim.err;
+  const Recording simulated = read_recording((dir / "sim.csv").string());
+  ASSERT_EQ(simulated.column("force").size(), y.size());
+  for (std::size_t i = 0; i < y.size(); ++i) EXPECT_EQ(simulated.column("force")[i], y[i]) << i;
+  const CliRun no_input = rheomag::cli_test::run_rheomag(
+      "simulate " + (dir / "model.json").string() + " --signal velocity=constant:value=0.1 --out " +
+      (dir / "sim2.csv").string());
+  EXPECT_EQ(no_input.code, 2);
+  EXPECT_NE(no_input.err.find("a fitted model runs on a recording's drive columns"),
+            std::string::npos)
+      << no_input.err;
   std::ifstream in(dir / "out" / "report.html");
   const std::string html((std::istreambuf_iterator<char>(in)), {});
   std::size_t svgs = 0;
