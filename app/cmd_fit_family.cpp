@@ -34,6 +34,7 @@ struct FamilyOptions {
   double max_substep = 2e-3;
   bool json = false;
   bool quiet = false;
+  bool cross_validate = false;
   std::string report;
 };
 
@@ -68,6 +69,25 @@ void print_members(const char* title, const std::vector<FamilyMember>& members) 
   }
 }
 
+/// One line comparing the held-out FITs with the fitted ones: the median and the lowest of each.
+void print_held_out_summary(const FamilyFit& r) {
+  const auto fits = [](const std::vector<FamilyMember>& members) {
+    std::vector<double> v;
+    for (const auto& m : members) v.push_back(m.metrics.fit_percent);
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  const std::vector<double> held = fits(r.held_out), fitted = fits(r.training);
+  const auto median = [](const std::vector<double>& v) {
+    const std::size_t h = v.size() / 2;
+    return v.size() % 2 ? v[h] : 0.5 * (v[h - 1] + v[h]);
+  };
+  rheomag::app::print(
+      "held-out FIT: median %.1f %%, lowest %.1f %% (fitted on all: median %.1f %%, lowest "
+      "%.1f %%)\n",
+      median(held), held.front(), median(fitted), fitted.front());
+}
+
 void run_fit_family(const FamilyOptions& o) {
   if (!is_greybox_model(o.model))
     throw rheomag::InputError("--model: '" + o.model + "' is not a grey-box model (" +
@@ -82,6 +102,7 @@ void run_fit_family(const FamilyOptions& o) {
   options.decimation = o.decimation;
   options.greybox.starts = o.starts;
   options.greybox.max_substep = o.max_substep;
+  options.cross_validate = o.cross_validate;
   if (!o.quiet) options.greybox.progress = rheomag::app::progress_lines("fit-family", std::cerr);
   const FamilyFit r = fit_current_dependent(training, o.model, prediction, options);
   if (!o.report.empty()) write_family_report(o.report, r, training, prediction);
@@ -107,6 +128,11 @@ void run_fit_family(const FamilyOptions& o) {
     }
     print_members("training recordings:", r.training);
     if (!r.predicted.empty()) print_members("predicted recordings:", r.predicted);
+    if (!r.held_out.empty()) {
+      print_members("held out (each training recording predicted by the family fitted without it):",
+                    r.held_out);
+      print_held_out_summary(r);
+    }
     return;
   }
   // The fitted model itself (readable by read_fit_model_json), then each recording's metrics.
@@ -115,6 +141,10 @@ void run_fit_family(const FamilyOptions& o) {
   for (const auto& m : r.training) j["train"].push_back(member_json(m));
   j["prediction"] = nlohmann::json::array();
   for (const auto& m : r.predicted) j["prediction"].push_back(member_json(m));
+  if (o.cross_validate) {
+    j["held_out"] = nlohmann::json::array();
+    for (const auto& m : r.held_out) j["held_out"].push_back(member_json(m));
+  }
   j["decimation"] = o.decimation;
   j["mode"] = "simulation";
   rheomag::app::print_json(j);
@@ -142,11 +172,15 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
   cmd->add_option("--report", o->report,
                   "Write DIR/report.html: measured vs model loops of every recording, parameters "
                   "with standard errors and their field dependence, FIT per recording");
-  cmd->add_flag(
-      "--json", o->json,
-      "Print one JSON object: the fitted model (readable back as a model file, "
-      "docs/fit-model-json.md), params, train and prediction (arrays of {file, "
-      "field, fit_percent, rmse_percent, re, mean_removed, band_rms, band_percent}), mode");
+  cmd->add_flag("--json", o->json,
+                "Print one JSON object: the fitted model (readable back as a model file, "
+                "docs/fit-model-json.md), params, train and prediction (arrays of {file, "
+                "field, fit_percent, rmse_percent, re, mean_removed, band_rms, band_percent}), "
+                "held_out (the same, with --cross-validate), mode");
+  cmd->add_flag("--cross-validate", o->cross_validate,
+                "Also refit once without each training recording and predict it (leave one "
+                "recording out): the FIT to expect on a test the fit has not seen. Costs one more "
+                "fit per training recording; JSON key held_out, a report column");
   cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr");
   cmd->callback([o]() { run_fit_family(*o); });
 });

@@ -8,13 +8,12 @@
 #include <numeric>
 
 #include "core/error.hpp"
+#include "lumped/family_cross_validation.hpp"
 #include "lumped/output_smoothing.hpp"
 
 namespace rheomag::lumped {
 
-namespace {
-
-FamilyMember evaluate_member(const Recording& rec, const GreyboxFit& fit) {
+FamilyMember evaluate_family_member(const Recording& rec, const GreyboxFit& fit) {
   FamilyMember m;
   m.csv_path = rec.csv_path;
   if (!fit.setup.field_column.empty()) {
@@ -65,8 +64,6 @@ void check_family(const std::vector<Recording>& training, const std::vector<Reco
                      "more field levels");
 }
 
-}  // namespace
-
 Recording join_recordings(const std::vector<Recording>& recs, int decimation) {
   if (recs.empty()) throw InputError("join_recordings: no recordings given");
   if (decimation < 1)
@@ -100,13 +97,14 @@ FamilyFit fit_current_dependent(const std::vector<Recording>& training, const st
                                 const std::vector<Recording>& prediction,
                                 const FamilyFitOptions& options) {
   check_family(training, prediction, model);
+  if (options.cross_validate) check_cross_validation(training, model);  // before the long fits
   FamilyFit out;
   const auto start = std::chrono::steady_clock::now();
   out.fit = fit_greybox_family(training, model, options.greybox, options.decimation);
   // Each recording simulated at its full rate with the fitted parameters.
   const std::size_t members = training.size() + prediction.size();
   const auto evaluate = [&](const Recording& r, std::vector<FamilyMember>& into) {
-    into.push_back(evaluate_member(r, out.fit));
+    into.push_back(evaluate_family_member(r, out.fit));
     if (!options.greybox.progress) return;
     ProgressEvent e;
     e.stage = "simulating every recording with the fitted " + out.fit.model;
@@ -120,6 +118,7 @@ FamilyFit fit_current_dependent(const std::vector<Recording>& training, const st
     evaluate(r, out.predicted);
     out.predicted.back().band = prediction_band(r, out.fit);
   }
+  if (options.cross_validate) out.held_out = cross_validate_family(training, model, options);
   return out;
 }
 

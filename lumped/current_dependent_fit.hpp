@@ -18,6 +18,8 @@ namespace rheomag::lumped {
 struct FamilyFitOptions {
   GreyboxOptions greybox;  ///< `train` is ignored (every joined sample is fitted)
   int decimation = 4;      ///< keep every n-th sample of each recording in the joint fit
+  /// Also refit once without each training recording and predict it (leave-one-recording-out).
+  bool cross_validate = false;
 };
 
 /// Metrics of the fitted model on one recording of the family (free run, full rate).
@@ -38,6 +40,9 @@ struct FamilyFit {
   GreyboxFit fit;                       ///< the joint fit (its metrics are on the joined data)
   std::vector<FamilyMember> training;   ///< the fitted model on each training recording
   std::vector<FamilyMember> predicted;  ///< the fitted model on each prediction recording
+  /// Each training recording predicted by the family fitted without it, in training order
+  /// (leave-one-recording-out, FamilyFitOptions::cross_validate); empty otherwise.
+  std::vector<FamilyMember> held_out;
 };
 
 /// The recordings joined end to end, each decimated by `decimation` and shifted in time to
@@ -46,9 +51,21 @@ struct FamilyFit {
 /// drive or output columns.
 Recording join_recordings(const std::vector<Recording>& recs, int decimation);
 
+/// Checks that `training` and `prediction` make one family for `model`: InputError if empty, for
+/// recordings of another rig kind or other drive/output columns, or for a field-dependent model
+/// whose training recordings hold one field level only.
+void check_family(const std::vector<Recording>& training, const std::vector<Recording>& prediction,
+                  const std::string& model);
+
+/// The fitted model `fit` on one recording: its free run at the recording's full rate and the
+/// metrics against the recording's output (the band is left empty).
+FamilyMember evaluate_family_member(const Recording& rec, const GreyboxFit& fit);
+
 /// Fits `model` (a grey-box name) jointly on `training` (joined, see join_recordings) so that its
 /// field-scaled parameters are linear functions of the current, then simulates every training
-/// and `prediction` recording separately with the fitted parameters.
+/// and `prediction` recording separately with the fitted parameters; with
+/// options.cross_validate, also fills held_out (cross_validate_family). InputError for a family
+/// of mixed rigs or columns, or one field level for a field-dependent model.
 FamilyFit fit_current_dependent(const std::vector<Recording>& training, const std::string& model,
                                 const std::vector<Recording>& prediction,
                                 const FamilyFitOptions& options = {});

@@ -156,7 +156,11 @@ std::string family_report_html(const FamilyFit& r, const std::vector<Recording>&
        "</style></head><body>\n<h1>Family fit: model "
     << html_escape(r.fit.model) << "</h1>\n<p>Fitted jointly on " << r.training.size()
     << " recordings (each weighted by its own spread); " << r.predicted.size()
-    << " recordings predicted with the same parameters (free-run simulation).</p>\n";
+    << " recordings predicted with the same parameters (free-run simulation)."
+    << (r.held_out.empty() ? ""
+                           : " Rows &ldquo;held out&rdquo;: each training recording predicted by "
+                             "the family fitted without it.")
+    << "</p>\n";
   o << "<h2>FIT per recording</h2>\n<table><tr><th>recording</th><th>role</th><th>field</th>"
        "<th>FIT %</th><th>RMSE %</th><th>RE</th><th>band % (1&sigma;, parameters between "
        "recordings)</th></tr>\n";
@@ -170,6 +174,7 @@ std::string family_report_html(const FamilyFit& r, const std::vector<Recording>&
   };
   rows(r.training, "fit");
   rows(r.predicted, "predicted");
+  rows(r.held_out, "held out");
   o << "</table>\n<h2>Parameters (SI, &plusmn; one standard error)</h2>\n<table><tr><th>name</th>"
        "<th>value</th><th>standard error</th><th>between recordings</th><th>unit</th>"
        "<th>remark</th></tr>\n";
