@@ -52,17 +52,23 @@ nlohmann::json member_json(const FamilyMember& m) {
           {"re", m.metrics.re},
           {"mean_removed", m.mean_removed},
           {"band_rms", m.band ? nlohmann::json(m.band->rms) : nlohmann::json()},
-          {"band_percent", m.band ? nlohmann::json(m.band->percent) : nlohmann::json()}};
+          {"band_percent", m.band ? nlohmann::json(m.band->percent) : nlohmann::json()},
+          {"repeatability_percent",
+           m.repeatability ? nlohmann::json(*m.repeatability) : nlohmann::json()}};
 }
 
 void print_members(const char* title, const std::vector<FamilyMember>& members) {
   const bool banded = std::any_of(members.begin(), members.end(),
                                   [](const FamilyMember& m) { return m.band.has_value(); });
-  rheomag::app::print("%s\n  %-40s %8s %8s %8s%s\n", title, "recording", "field", "FIT%", "RE",
-                      banded ? "  band% (1 sigma, parameters between recordings)" : "");
+  rheomag::app::print("%s\n  %-40s %8s %8s %8s %6s%s\n", title, "recording", "field", "FIT%", "RE",
+                      "rep%", banded ? "  band% (1 sigma, parameters between recordings)" : "");
   for (const auto& m : members) {
     rheomag::app::print("  %-40s %8.3g %8.1f %8.3f", m.csv_path.c_str(), m.field,
                         m.metrics.fit_percent, m.metrics.re);
+    if (m.repeatability)
+      rheomag::app::print(" %6.1f", *m.repeatability);
+    else
+      rheomag::app::print(" %6s", "-");
     if (m.band) rheomag::app::print("  %5.1f", m.band->percent);
     rheomag::app::print(
         "%s\n", m.mean_removed ? "  (mean removed: compared without the model's mean)" : "");
@@ -133,6 +139,10 @@ void run_fit_family(const FamilyOptions& o) {
                     r.held_out);
       print_held_out_summary(r);
     }
+    rheomag::app::print(
+        "rep%%: FIT of each recording's own mean cycle on its steady cycles, the most a model "
+        "answering a periodic drive with a periodic output reaches there (- : drive not "
+        "periodic)\n");
     return;
   }
   // The fitted model itself (readable by read_fit_model_json), then each recording's metrics.
@@ -175,7 +185,8 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
   cmd->add_flag("--json", o->json,
                 "Print one JSON object: the fitted model (readable back as a model file, "
                 "docs/fit-model-json.md), params, train and prediction (arrays of {file, "
-                "field, fit_percent, rmse_percent, re, mean_removed, band_rms, band_percent}), "
+                "field, fit_percent, rmse_percent, re, mean_removed, band_rms, band_percent, "
+                "repeatability_percent}), "
                 "held_out (the same, with --cross-validate), mode");
   cmd->add_flag("--cross-validate", o->cross_validate,
                 "Also refit once without each training recording and predict it (leave one "

@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "lumped/family_cross_validation.hpp"
 #include "lumped/output_smoothing.hpp"
+#include "lumped/repeatability.hpp"
 
 namespace rheomag::lumped {
 
@@ -23,6 +24,8 @@ FamilyMember evaluate_family_member(const Recording& rec, const GreyboxFit& fit)
   m.simulated = simulate_greybox(rec, fit);
   m.mean_removed = output_mean_removed(rec.column(fit.setup.output_column));
   m.metrics = compute_metrics(rec.column(fit.setup.output_column), m.simulated);
+  m.repeatability = repeatability_percent(rec.t, rec.column(fit.setup.motion_column),
+                                          rec.column(fit.setup.output_column));
   return m;
 }
 

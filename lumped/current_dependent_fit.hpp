@@ -32,6 +32,10 @@ struct FamilyMember {
   /// Predicted recordings: the prediction's one-sigma band from the parameters' disagreement
   /// between the training recordings (prediction_band).
   std::optional<PredictionBand> band;
+  /// FIT % of the recording's own mean cycle on its steady cycles, the most a model answering its
+  /// periodic drive with a periodic output reaches there (repeatability_percent); empty if the
+  /// drive is not periodic.
+  std::optional<double> repeatability;
   std::vector<double> simulated;  ///< free-run model output at the recording's samples
 };
 

@@ -163,14 +163,16 @@ std::string family_report_html(const FamilyFit& r, const std::vector<Recording>&
     << "</p>\n";
   o << "<h2>FIT per recording</h2>\n<table><tr><th>recording</th><th>role</th><th>field</th>"
        "<th>FIT %</th><th>RMSE %</th><th>RE</th><th>band % (1&sigma;, parameters between "
-       "recordings)</th></tr>\n";
+       "recordings)</th><th>repeatability % (the recording's own mean cycle)</th></tr>\n";
   const auto rows = [&](const std::vector<FamilyMember>& members, const char* role) {
     for (const FamilyMember& m : members)
       o << "<tr><td>" << html_escape(m.csv_path) << "</td><td>" << role << "</td><td>"
         << html_number(m.field) << "</td><td>" << html_number(m.metrics.fit_percent, 3)
         << "</td><td>" << html_number(m.metrics.rmse_percent, 3) << "</td><td>"
         << html_number(m.metrics.re, 3) << "</td><td>"
-        << (m.band ? html_number(m.band->percent, 3) : std::string("&mdash;")) << "</td></tr>\n";
+        << (m.band ? html_number(m.band->percent, 3) : std::string("&mdash;")) << "</td><td>"
+        << (m.repeatability ? html_number(*m.repeatability, 3) : std::string("&mdash;"))
+        << "</td></tr>\n";
   };
   rows(r.training, "fit");
   rows(r.predicted, "predicted");

@@ -7,15 +7,15 @@
 
 namespace rheomag::lumped {
 
-double drive_period(const std::vector<double>& t, const std::vector<double>& v) {
+std::vector<double> upward_crossings(const std::vector<double>& t, const std::vector<double>& v) {
   const std::size_t n = std::min(t.size(), v.size());
-  if (n < 4) return 0.0;
+  if (n < 4) return {};
   const double mean = std::accumulate(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(n), 0.0) /
                       static_cast<double>(n);
   double ss = 0.0;
   for (std::size_t k = 0; k < n; ++k) ss += (v[k] - mean) * (v[k] - mean);
   const double band = 0.1 * std::sqrt(ss / static_cast<double>(n));
-  if (!(band > 0.0)) return 0.0;
+  if (!(band > 0.0)) return {};
   // An upward crossing counts once the signal has been below -band and then rises above +band;
   // its time is the last sign change of (v - mean) before that, linearly interpolated.
   std::vector<double> crossings;
@@ -30,6 +30,11 @@ double drive_period(const std::vector<double>& t, const std::vector<double>& v) 
       armed = false;
     }
   }
+  return crossings;
+}
+
+double drive_period(const std::vector<double>& t, const std::vector<double>& v) {
+  const std::vector<double> crossings = upward_crossings(t, v);
   if (crossings.size() < 3) return 0.0;
   const double period =
       (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);

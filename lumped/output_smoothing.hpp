@@ -15,9 +15,13 @@
 
 namespace rheomag::lumped {
 
-/// Period [s] of a periodic drive signal v(t) from its upward zero crossings (hysteresis of a
-/// tenth of its rms about its mean); 0 if it has fewer than two full cycles or if its cycles differ
-/// by more than 20 % (not periodic: no period-relative smoothing applies).
+/// Times [s] at which v(t) crosses its mean upwards, each counted once the signal has been a tenth
+/// of its rms below the mean and then as far above it (noise does not add crossings).
+std::vector<double> upward_crossings(const std::vector<double>& t, const std::vector<double>& v);
+
+/// Period [s] of a periodic drive signal v(t) from its upward zero crossings (upward_crossings);
+/// 0 if it has fewer than two full cycles or if its cycles differ by more than 20 % (not periodic:
+/// no period-relative smoothing applies).
 double drive_period(const std::vector<double>& t, const std::vector<double>& v);
 
 /// Replaces y[0..n) on the times t[0..n) by its centred moving average over `width` [s]: the
