@@ -772,6 +772,30 @@ std::vector<double> param_values(const GreyboxFit& fit) {
   return values;
 }
 
+/// Where every training series had its output's mean removed and is fitted whole, the model is
+/// compared without its mean, so the offset is not identified by the fit and its value is
+/// whatever the optimiser left. Sets it so that the model's output has zero mean over the
+/// training series, as the recordings do (a model saved and run elsewhere then keeps their level);
+/// nothing any comparison with these recordings sees changes.
+void centre_unidentified_offset(const FitData& data, GreyboxFit& fit, double max_substep) {
+  for (std::size_t r = 0; r < data.series.size(); ++r)
+    if (!data.series[r].mean_removed || data.ranges[r].begin != 0 ||
+        data.ranges[r].end != data.series[r].t.size())
+      return;
+  const int k = pheno_param_index(fit.setup.kind, "offset");
+  if (k < 0 || fit.params[static_cast<std::size_t>(k)].fixed) return;
+  double sum = 0.0, count = 0.0;
+  for (const DriveSeries& series : data.series) {
+    DriveSeries raw = series;
+    raw.mean_removed = false;  // the model's own mean, not removed
+    for (double y : simulate_for_report(raw, fit.setup, param_values(fit), max_substep)) sum += y;
+    count += static_cast<double>(series.t.size());
+  }
+  // The output is orientation x (model + offset): shifting the offset by -mean/orientation
+  // zeroes the mean.
+  fit.params[static_cast<std::size_t>(k)].value -= sum / count / fit.setup.orientation;
+}
+
 }  // namespace
 
 const std::vector<std::string>& greybox_model_names() {
@@ -841,6 +865,7 @@ GreyboxFit fit_greybox(const Recording& rec, const std::string& model,
     y_scale = std::max(y_scale, std::abs(d.y[i]));
   data.y_scales.push_back(y_scale);
   fit_data(data, options, rec.csv_path, fit);
+  centre_unidentified_offset(data, fit, options.max_substep);
   fit.simulated = simulate_for_report(d, fit.setup, param_values(fit), options.max_substep);
   fit.train = compute_metrics(d.y, fit.simulated, range);
   fit.residual_sigma = rms_residual(d.y, fit.simulated, range);
@@ -882,6 +907,7 @@ GreyboxFit fit_greybox_family(const std::vector<Recording>& recs, const std::str
     data.series.push_back(std::move(d));
   }
   fit_data(data, options, recs.front().csv_path, fit);
+  centre_unidentified_offset(data, fit, options.max_substep);
   fit.train_range = SampleRange{0, 0};
   return fit;
 }

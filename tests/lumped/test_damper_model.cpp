@@ -395,6 +395,38 @@ TEST(GreyboxProcessing, MeanRemovedRecordingsAreComparedWithoutTheirMeans) {
   EXPECT_GE(r.predicted.front().metrics.fit_percent, 99.5);
 }
 
+// A mean-removed recording does not identify the model's offset (the model is compared without
+// its mean), so the fit sets it to make the model's own output zero-mean over the recording, as
+// the recording is: the Bingham damper above over 2.6 periods at 1 A, fitted; its output run on
+// the same drive without the mean removal (the force column shifted by 1 kN, so it no longer
+// reads as mean-removed) has a mean of zero to 1e-9 of its rms (reference: the recording's mean,
+// 0 by construction). Before, the offset was left wherever the optimiser put it (a LuGre fit of
+// utfsm 10 mm / 0.5 A: -8.8 kN).
+TEST(GreyboxProcessing, MeanRemovedRecordingGivesAZeroMeanModel) {
+  const std::vector<double> truth = {200.0, 400.0, 1500.0, 500.0, 0.005, 20.0, 0.0};
+  Recording rec = recording(static_cast<std::size_t>(2.6 / 1.0 / 2e-3), 2e-3, sine_x(0.01, 1.0),
+                            sine_v(0.01, 1.0), [](double) { return 1.0; });
+  GreyboxSetup setup = greybox_setup_for(rec, PhenoKind::bingham);
+  setup.settings.eps = 1e-4;
+  setup.settings.motion_scale = 0.06;
+  std::vector<double> force = simulate_pheno(rec, setup, truth);
+  remove_mean(force.data(), force.size());
+  rec.columns["force"] = force;
+  const GreyboxFit fit = fit_greybox(rec, "bingham");
+  EXPECT_GE(fit.train.fit_percent, 99.5);
+  Recording shifted = rec;
+  for (double& f : shifted.columns["force"]) f += 1000.0;
+  ASSERT_FALSE(output_mean_removed(shifted.column("force")));
+  const std::vector<double> raw = simulate_greybox(shifted, fit);
+  double sum = 0.0, squares = 0.0;
+  for (double y : raw) {
+    sum += y;
+    squares += y * y;
+  }
+  const double n = static_cast<double>(raw.size());
+  EXPECT_NEAR(sum / n, 0.0, 1e-9 * std::sqrt(squares / n));
+}
+
 // What counts as a mean-removed output: zero mean to 1e-4 of the rms (a sine over 1.3 periods,
 // its mean removed, passes; the same sine raw, mean 0.18 of its rms, and a constant-free but
 // offset-by-1e-3-rms signal do not); remove_mean leaves a zero mean (1e-12).
