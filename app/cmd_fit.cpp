@@ -25,6 +25,7 @@
 #include "lumped/ident_stability.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording_io.hpp"
+#include "lumped/repeatability.hpp"
 #include "lumped/valve_chain_fit.hpp"
 
 namespace {
@@ -207,8 +208,31 @@ nlohmann::json metrics_json(const Metrics& m, const std::optional<StabilityVerdi
   return j;
 }
 
+std::vector<double> part(const std::vector<double>& v, const SampleRange& r) {
+  return {v.begin() + static_cast<std::ptrdiff_t>(r.begin),
+          v.begin() + static_cast<std::ptrdiff_t>(r.end)};
+}
+
+/// The repeatability (FIT of its own mean cycle, lumped/repeatability.hpp) of samples `r` of
+/// `rec`'s output under its motion drive (velocity or flow, else its first drive column).
+std::optional<double> repeatability_of(const Recording& rec, const SampleRange& r) {
+  std::string drive;
+  for (const char* c : {"velocity", "flow"})
+    if (drive.empty() && rec.columns.count(c)) drive = c;
+  if (drive.empty() && !rec.meta.drive.empty()) drive = rec.meta.drive.front();
+  if (drive.empty() || !rec.columns.count(drive)) return std::nullopt;
+  return repeatability_percent(part(rec.t, r), part(rec.column(drive), r),
+                               part(rec.column(rec.meta.output), r));
+}
+
+/// Where the recording repeats itself under a periodic drive: its repeatability, and the metrics
+/// JSON gains it.
+void add_repeatability(nlohmann::json& metrics, const std::optional<double>& repeatability) {
+  if (repeatability) metrics["repeatability_percent"] = *repeatability;
+}
+
 void print_text(const FitReport& r, const FitOptions& o, const SampleRange& train,
-                const Validation& val) {
+                const Validation& val, const Recording& rec) {
   auto line = [](const std::string& what, const Metrics& m,
                  const std::optional<StabilityVerdict>& s) {
     if (s && !s->stable) {
@@ -221,10 +245,19 @@ void print_text(const FitReport& r, const FitOptions& o, const SampleRange& trai
   };
   rheomag::app::print("model %s (%s mode)\n", r.model.c_str(),
                       o.mode == EvalMode::simulation ? "simulation" : "prediction");
+  const auto repeatability = [](const std::optional<double>& rep) {
+    if (rep)
+      rheomag::app::print("%-34s FIT %7.2f %%   (its own mean cycle: no periodic model beats it)\n",
+                          "  repeatability", *rep);
+  };
   line("train " + range_text(train), r.train, r.train_stability);
-  if (r.validation)
+  repeatability(repeatability_of(rec, train));
+  if (r.validation) {
     line("validation " + (val.range ? range_text(*val.range) : o.validate), *r.validation,
          r.validation_stability);
+    repeatability(val.other ? repeatability_of(*val.other, SampleRange{0, val.other->t.size()})
+                            : repeatability_of(rec, *val.range));
+  }
   rheomag::app::print("parameters:\n");
   for (const auto& [name, value] : r.params.items()) {
     rheomag::app::print("  %-28s %.6g", name.c_str(), value.get<double>());
@@ -233,11 +266,6 @@ void print_text(const FitReport& r, const FitOptions& o, const SampleRange& trai
       rheomag::app::print("  +- %.3g", r.standard_errors[name].get<double>());
     rheomag::app::print("\n");
   }
-}
-
-std::vector<double> part(const std::vector<double>& v, const SampleRange& r) {
-  return {v.begin() + static_cast<std::ptrdiff_t>(r.begin),
-          v.begin() + static_cast<std::ptrdiff_t>(r.end)};
 }
 
 void write_plot(const FitReport& r, const FitOptions& o, const Recording& rec,
@@ -293,7 +321,7 @@ void run_fit(const FitOptions& o) {
                                          : fit_grey_box_model(o, rec, train, val);
   if (!o.plot.empty()) write_plot(report, o, rec, train, val);
   if (!o.json) {
-    print_text(report, o, train, val);
+    print_text(report, o, train, val, rec);
     return;
   }
   // The fitted model itself (readable by read_fit_model_json), then how well it fits.
@@ -301,10 +329,15 @@ void run_fit(const FitOptions& o) {
   j["params"] = report.params;
   if (report.standard_errors.is_object()) j["standard_errors"] = report.standard_errors;
   j["train"] = metrics_json(report.train, report.train_stability);
+  add_repeatability(j["train"], repeatability_of(rec, train));
   j["train_range"] = {train.begin, train.end};
   j["validation"] = report.validation
                         ? metrics_json(*report.validation, report.validation_stability)
                         : nlohmann::json(nullptr);
+  if (report.validation)
+    add_repeatability(j["validation"],
+                      val.other ? repeatability_of(*val.other, SampleRange{0, val.other->t.size()})
+                                : repeatability_of(rec, *val.range));
   if (val.range) j["validation_range"] = {val.range->begin, val.range->end};
   if (val.other) j["validation_file"] = o.validate;
   j["mode"] = o.mode == EvalMode::simulation ? "simulation" : "prediction";

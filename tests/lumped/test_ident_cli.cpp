@@ -72,6 +72,39 @@ TEST_F(FitCli, JsonHasTheDocumentedKeys) {
               100.0 - j["train"]["fit_percent"].get<double>(), 1e-9);
 }
 
+// The repeatability (the recording's own mean cycle, lumped/repeatability.hpp) is reported where
+// the drive is periodic and absent where it is not: the random-level recording above has none; a
+// sine drive with force 400 tanh(v / 0.02) plus noise of sigma 20 N gets
+// 100 (1 - 20 / sqrt(var(force) + 20^2)) to 1 point (reference: the closed form of the noise).
+TEST_F(FitCli, RepeatabilityWhereTheDriveIsPeriodic) {
+  const CliRun random = run_cli(csv + " --model bingham --json --quiet");
+  ASSERT_EQ(random.code, 0) << random.err;
+  EXPECT_FALSE(nlohmann::json::parse(random.out)["train"].contains("repeatability_percent"));
+  const std::string sine = (dir / "sine.csv").string();
+  std::ofstream c(sine);
+  c << "t,velocity,force\n";
+  std::mt19937 rng(5);
+  std::normal_distribution<double> noise(0.0, 20.0);
+  double sum = 0.0, squares = 0.0;
+  const int n = 4000;  // 20 cycles of 200 samples
+  for (int k = 0; k < n; ++k) {
+    const double v = 0.05 * std::sin(2 * 3.14159265358979323846 * k / 200.0);
+    const double f = 400.0 * std::tanh(v / 0.02);
+    sum += f;
+    squares += f * f;
+    c << k * 0.005 << ',' << v << ',' << f + noise(rng) << '\n';
+  }
+  c.close();
+  fs::copy_file(dir / "rig.toml", dir / "sine.toml");
+  const double variance = squares / n - (sum / n) * (sum / n);
+  const CliRun periodic = run_cli(sine + " --model bingham --json --quiet");
+  ASSERT_EQ(periodic.code, 0) << periodic.err;
+  const auto j = nlohmann::json::parse(periodic.out);
+  ASSERT_TRUE(j["train"].contains("repeatability_percent")) << periodic.out;
+  EXPECT_NEAR(j["train"]["repeatability_percent"].get<double>(),
+              100.0 * (1.0 - 20.0 / std::sqrt(variance + 400.0)), 1.0);
+}
+
 // One-step prediction uses the measured past output: it must fit at least as well as free run
 // on this low-noise data.
 TEST_F(FitCli, PredictionModeIsReported) {
