@@ -80,6 +80,15 @@ std::optional<double> repeatability_percent(const std::vector<double>& t,
   std::vector<Cycle> steady;
   for (std::size_t k = 0; k < cycles.size(); ++k)
     if (swings[k] >= 0.98 * largest) steady.push_back(cycles[k]);
+  // Each sample is compared with every other cycle: a long test keeps kMaxCycles of its steady
+  // cycles, evenly spread, so the cost stays kMaxCycles x samples.
+  constexpr std::size_t kMaxCycles = 64;
+  if (steady.size() > kMaxCycles) {
+    std::vector<Cycle> spread;
+    for (std::size_t k = 0; k < kMaxCycles; ++k)
+      spread.push_back(steady[k * (steady.size() - 1) / (kMaxCycles - 1)]);
+    steady = spread;
+  }
   const std::optional<double> drive = mean_cycle_fit(t, v, steady);
   if (!drive || *drive < 95.0) return std::nullopt;  // the drive itself does not repeat
   return mean_cycle_fit(t, y, steady);

@@ -13,7 +13,8 @@ namespace rheomag::lumped {
 /// cycles of y(t) under the drive v(t): cycles between v's upward crossings (upward_crossings)
 /// whose drive swing is within 2 % of the largest; each sample is compared with the other steady
 /// cycles' mean at its phase (linear interpolation), the squared error scaled by (n-1)/(n-1+2/3)
-/// for the noise that mean carries over n cycles. Empty without at least 3 steady cycles, for a
+/// for the noise that mean carries over n cycles (at most 64 cycles, evenly spread, are used).
+/// Empty without at least 3 steady cycles, for a
 /// drive that is not periodic (drive_period) or repeats itself to less than 95 % by the same
 /// measure.
 std::optional<double> repeatability_percent(const std::vector<double>& t,
