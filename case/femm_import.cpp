@@ -95,6 +95,8 @@ struct FemSegment {
 class FemReader {
  public:
   FemReader(std::string_view text, std::string source) : source_(std::move(source)) {
+    // FEMM writes none, but a .fem saved by a Windows editor may start with a byte-order mark.
+    text = without_byte_order_mark(text);
     std::size_t start = 0;
     while (start <= text.size()) {
       std::size_t end = text.find_first_of("\r\n", start);

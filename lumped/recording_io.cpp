@@ -283,8 +283,7 @@ RecordingMeta read_sidecar(const std::string& toml_path) {
 Recording parse_csv_samples(std::string_view text, const std::string& csv_path) {
   std::vector<std::string> warnings;
   // A UTF-8 byte-order mark (what many Windows tools write first) is not part of the header.
-  constexpr std::string_view bom = "\xEF\xBB\xBF";
-  if (text.substr(0, bom.size()) == bom) text.remove_prefix(bom.size());
+  text = cases::without_byte_order_mark(text);
   std::istringstream in{std::string(text)};
   Recording rec;
   rec.csv_path = csv_path;

@@ -103,6 +103,19 @@ TEST(FemmImport, LengthUnitsAndLineEndings) {
               HasSubstr("bad.fem:7: [LengthUnits]: expected inches, millimeters"));
 }
 
+// A .fem saved by a Windows editor starts with a UTF-8 byte-order mark; it was refused as
+// "bad.fem:1: expected a [Key] = value line, got '\xEF\xBB\xBF[Format] = 4.0'".
+TEST(FemmImport, ByteOrderMarkIsSkipped) {
+  const Problem plain = parse_femm(pot_core_text(), "plain.fem");
+  for (const std::string& text :
+       {"\xEF\xBB\xBF" + pot_core_text(), "\xEF\xBB\xBF" + with("\n", "\r\n")}) {
+    const Problem marked = parse_femm(text, "bom.fem");
+    ASSERT_EQ(marked.geometry.points.size(), plain.geometry.points.size());
+    EXPECT_DOUBLE_EQ(marked.geometry.points[2].r, plain.geometry.points[2].r);
+    EXPECT_EQ(marked.regions.size(), plain.regions.size());
+  }
+}
+
 TEST(FemmImport, DepthIsIgnoredInAxisymmetricModels) {
   // FEMM's Lua idiom mi_probdef(0, "millimeters", "axi", 1e-8, 0, 30) writes [Depth] = 0; FEMM
   // ignores the depth of an axisymmetric problem, and so does the reader.
