@@ -216,6 +216,16 @@ RecordingMeta parse_sidecar(std::string_view text, const std::string& toml_path)
   meta.drive = rec->strings("drive");
   if (meta.drive.empty()) rec->fail("drive", "expected a non-empty list of column names");
   meta.output = rec->required_string("output");
+  // A drive column listed twice makes the regressors collinear; the output as a drive makes the
+  // model explain the signal with itself (an ARX fit of it went unstable, |pole| = 2e13).
+  for (auto d = meta.drive.begin(); d != meta.drive.end(); ++d) {
+    if (*d == meta.output)
+      rec->fail("drive", "column '" + *d +
+                             "' is also the output; expected the measured inputs that drive the "
+                             "model (e.g. velocity, current), not the signal it explains");
+    if (std::find(meta.drive.begin(), d, *d) != d)
+      rec->fail("drive", "column '" + *d + "' is listed twice; expected each drive column once");
+  }
 
   if (const std::optional<TomlSection> rig = top.table("rig")) {
     static const std::vector<std::string_view> declared{

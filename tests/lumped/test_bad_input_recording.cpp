@@ -133,6 +133,18 @@ TEST(BadInputSidecar, TextWhereANumberBelongs) {
 }
 
 // A CSV saved with a UTF-8 byte-order mark was refused with "no 't' column".
+// A sidecar listing its output among the drive columns (or a drive twice) was accepted: an ARX
+// fit then used the output as its own input and went unstable (|pole| 2.3e13), bingham ignored it.
+TEST(BadInputSidecar, DriveColumnsAreDistinctInputs) {
+  EXPECT_EQ(sidecar_error("[recording]\ndrive = [\"velocity\", \"force\"]\noutput = \"force\"\n"),
+            "rec.toml:2: recording.drive: column 'force' is also the output; expected the measured "
+            "inputs that drive the model (e.g. velocity, current), not the signal it explains");
+  EXPECT_EQ(
+      sidecar_error("[recording]\ndrive = [\"velocity\", \"velocity\"]\noutput = \"force\"\n"),
+      "rec.toml:2: recording.drive: column 'velocity' is listed twice; expected each drive column "
+      "once");
+}
+
 TEST(BadInputCsv, ByteOrderMarkAccepted) {
   const Recording rec = parse_csv_samples("\xEF\xBB\xBFt,force\n0,1\n0.1,2\n", "rec.csv");
   ASSERT_EQ(rec.t.size(), 2u);
