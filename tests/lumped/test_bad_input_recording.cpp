@@ -254,6 +254,18 @@ TEST(BadInputRecording, ConstantOutputNamed) {
   EXPECT_NO_THROW(rec.require_varying("velocity"));
 }
 
+// An output that varies only by rounding (5 +- 1e-13, a constant passed through a float export)
+// was fitted with exit 0 and printed FIT -103 %; it is as constant as diagnose's "flat" output.
+TEST(BadInputRecording, OutputConstantToRoundingNamed) {
+  Recording rec = parse_csv_samples(
+      "t,velocity,force\n0,1,5\n0.1,2,5.0000000000001\n0.2,3,5\n0.3,1,5.000001\n", "rec.csv");
+  EXPECT_THAT([&] { rec.require_varying("force", 0, 3); },
+              ::testing::ThrowsMessage<rheomag::InputError>(
+                  "rec.csv: column 'force' is constant (to 9 significant digits: 5, spread "
+                  "1e-13) on samples 0:3; there is nothing to identify"));
+  EXPECT_NO_THROW(rec.require_varying("force"));  // 2e-7 relative: a measured change
+}
+
 // narx on a constant output died with SIGSEGV inside the QR of an empty regressor matrix.
 TEST(BadInputRecording, NarxOnConstantOutputIsInputError) {
   IoData data;
