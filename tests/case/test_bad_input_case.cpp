@@ -107,6 +107,28 @@ points = [[0, 0], [1, 0], [1, 1], [0, 1], [0, 0]]
       << error_of(wound);
 }
 
+// One coordinate far from the rest (1e300, or 1e9 mm typed for 1e-9) makes the domain-relative
+// merge tolerance huge, and a region elsewhere was refused with "repeated point (0, -20) mm" and
+// no hint why; the message now gives the tolerance and what sets it.
+TEST(BadInputCase, FarCoordinateNamesTheMergeTolerance) {
+  const std::string text = R"([case]
+units = "mm"
+[[region]]
+name = "pot"
+material = "Air"
+points = [[0, -20], [30, -20], [30, 18], [0, 18], [0, -20]]
+[[region]]
+name = "lid"
+material = "Air"
+points = [[0, 20], [30, 20], [30, 1e300], [0, 20]]
+)";
+  EXPECT_NE(error_of(text).find("region 'pot': repeated point (0, -20) mm (point 1): the next "
+                                "point lies within 1e+288 m, the merge tolerance (1e-9 of the "
+                                "largest coordinate of the case;"),
+            std::string::npos)
+      << error_of(text);
+}
+
 // A steel fluid_material got the MR-fluid pressure drop of [case] fluid.
 TEST(BadInputCase, FluidMaterialMustBeAnMrFluid) {
   const std::string text =
