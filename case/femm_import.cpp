@@ -452,10 +452,15 @@ FemFile read_file(std::string_view text, FemReader& reader) {
         }
         label.x = c[0];
         label.y = c[1];
-        for (std::size_t k : {2, 4, 6, 7, 8})
+        for (const auto& [k, name] : {std::pair<std::size_t, const char*>{2, "block type"},
+                                      {4, "circuit"},
+                                      {6, "group"},
+                                      {7, "turns"},
+                                      {8, "isexternal"}})
           if (k < c.size() && (c[k] != std::floor(c[k]) || std::abs(c[k]) > 1e9))
-            reader.fail(label.line,
-                        "block label column " + std::to_string(k + 1) + " must be an integer");
+            reader.fail(label.line, "block label column " + std::to_string(k + 1) + " (" + name +
+                                        "): expected a whole number within +-1e9, got " +
+                                        format_number(c[k]));
         label.block = static_cast<int>(c[2]);
         label.size = c.size() > 3 ? c[3] : -1;
         label.circuit = c.size() > 4 ? static_cast<int>(c[4]) : 0;

@@ -103,6 +103,18 @@ TEST(FemmImport, LengthUnitsAndLineEndings) {
               HasSubstr("bad.fem:7: [LengthUnits]: expected inches, millimeters"));
 }
 
+// "block label column 8 must be an integer" for 1e12 turns did not say which field or what was
+// read.
+TEST(FemmImport, BlockLabelIntegerColumnsNamed) {
+  EXPECT_THAT(error_of(with("17\t0\t3\t0.7425152493\t1\t0\t0\t200",
+                            "17\t0\t3\t0.7425152493\t1\t0\t0\t1e12")),
+              HasSubstr("bad.fem:171: block label column 8 (turns): expected a whole number "
+                        "within +-1e9, got 1e+12"));
+  EXPECT_THAT(error_of(with("17\t0\t3\t0.7425152493\t1", "17\t0\t3.5\t0.7425152493\t1")),
+              HasSubstr("bad.fem:171: block label column 3 (block type): expected a whole number "
+                        "within +-1e9, got 3.5"));
+}
+
 // A .fem saved by a Windows editor starts with a UTF-8 byte-order mark; it was refused as
 // "bad.fem:1: expected a [Key] = value line, got '\xEF\xBB\xBF[Format] = 4.0'".
 TEST(FemmImport, ByteOrderMarkIsSkipped) {
