@@ -113,7 +113,8 @@ bool registered = rheomag::app::register_command([](CLI::App& root) {
                   "model spec (TOML), or a fitted model (JSON written by fit / fit-family --json: "
                   "run on --input's drive, its output replaced by the model's)")
       ->required();
-  cmd->add_option("--input", opts->input, "recording CSV whose columns drive the model");
+  cmd->add_option("--input", opts->input, "recording CSV whose columns drive the model")
+      ->check(rheomag::app::non_empty());
   cmd->add_option("--signal", opts->signals,
                   "generated drive COLUMN=KIND:key=value,... (repeatable). Kinds: "
                   "sine:amplitude,frequency[,offset] (displacement sine also writes velocity); "
