@@ -50,6 +50,13 @@ std::string error_of(const std::string& text) {
   return "no error";
 }
 
+/// A general case of one square winding region with `turns` (TOML text) turns.
+std::string winding_case(const std::string& turns) {
+  return "[[circuit]]\nname = \"coil\"\n[[region]]\nname = \"winding\"\nmaterial = \"Copper\"\n"
+         "coil = { circuit = \"coil\", turns = " +
+         turns + " }\npoints = [[0, 0], [1, 0], [1, 1], [0, 1], [0, 0]]\n";
+}
+
 }  // namespace
 
 TEST(BadInputCase, BundledCaseReads) {
@@ -65,14 +72,7 @@ TEST(BadInputCase, TemplateTurnsAreWhole) {
 }
 
 TEST(BadInputCase, RegionCoilTurnsAreWhole) {
-  const std::string text = R"([[circuit]]
-name = "coil"
-[[region]]
-name = "winding"
-material = "Copper"
-coil = { circuit = "coil", turns = 10.5 }
-points = [[0, 0], [1, 0], [1, 1], [0, 1], [0, 0]]
-)";
+  const std::string text = winding_case("10.5");
   EXPECT_NE(error_of(text).find(
                 "region[1].coil.turns: expected a whole number in [1, 1000000000], got 10.5"),
             std::string::npos)
@@ -87,14 +87,7 @@ TEST(BadInputCase, TurnsAreBounded) {
   EXPECT_EQ(error_of(text), "valve.toml:" + std::to_string(line_of(text, "turns = 1e15")) +
                                 ": geometry.turns: expected a whole number in [1, 1000000000], "
                                 "got 1e+15");
-  const std::string region = R"([[circuit]]
-name = "coil"
-[[region]]
-name = "winding"
-material = "Copper"
-coil = { circuit = "coil", turns = 9223372036854775807 }
-points = [[0, 0], [1, 0], [1, 1], [0, 1], [0, 0]]
-)";
+  const std::string region = winding_case("9223372036854775807");
   EXPECT_NE(error_of(region).find("region[1].coil.turns: expected a whole number in [1, "
                                   "1000000000], got 9.22337203685e+18"),
             std::string::npos)
