@@ -226,7 +226,9 @@ struct FemFile {
 
 int count_value(std::string_view value, FemReader& reader, const std::string& key) {
   const int n = reader.integer(value, "[" + key + "]");
-  if (n < 0 || n > 10000000) reader.fail(reader.line_number(), "[" + key + "]: bad count");
+  if (n < 0 || n > 10000000)
+    reader.fail(reader.line_number(),
+                "[" + key + "]: expected a count in [0, 10000000], got " + std::to_string(n));
   return n;
 }
 
@@ -502,6 +504,9 @@ Material femm_material(const FemBlock& block, const std::string& source, const F
   Material m;
   m.name = block.name;
   m.source = "FEMM file " + source + ", block '" + block.name + "'";
+  // A negative conductivity would make the transient solver's eddy currents grow without bound.
+  if (!(block.sigma >= 0.0))
+    fail("Sigma = " + format_number(block.sigma) + " MS/m; expected a conductivity >= 0");
   m.conductivity = block.sigma * 1e6;  // MS/m -> S/m (kept for eddy-current work)
   const double fill = block.lam_fill;
   if (!(fill > 0.0 && fill <= 1.0))

@@ -115,6 +115,15 @@ TEST(FemmImport, BlockLabelIntegerColumnsNamed) {
                         "within +-1e9, got 3.5"));
 }
 
+// A negative Sigma was kept as the block's conductivity (eddy currents that grow in a transient
+// run); a negative count said only "bad count".
+TEST(FemmImport, NegativeConductivityAndCountNamed) {
+  EXPECT_THAT(error_of(with("<Sigma> = 58", "<Sigma> = -58")),
+              HasSubstr("block 'Copper': Sigma = -58 MS/m; expected a conductivity >= 0"));
+  EXPECT_THAT(error_of(with("<BHPoints> = 38", "<BHPoints> = -1")),
+              HasSubstr("bad.fem:67: [BHPoints]: expected a count in [0, 10000000], got -1"));
+}
+
 // A .fem saved by a Windows editor starts with a UTF-8 byte-order mark; it was refused as
 // "bad.fem:1: expected a [Key] = value line, got '\xEF\xBB\xBF[Format] = 4.0'".
 TEST(FemmImport, ByteOrderMarkIsSkipped) {
