@@ -284,9 +284,11 @@ Solution MagnetostaticSolver::solve_with(const std::vector<double>& currents,
     double largest = 0.0;
     for (double current : currents) largest = std::max(largest, std::abs(current));
     std::ostringstream message;
-    message << "the source of the field equation is not a finite number: the largest circuit "
-               "current, "
-            << largest << " A, times the turns (or a magnet) is beyond double arithmetic";
+    message << "the source of the field equation is not a finite number: the circuit currents "
+               "(largest "
+            << largest
+            << " A) times the turns, a fixed current density or a magnet's coercivity is beyond "
+               "double arithmetic";
     throw ConvergenceError(message.str());
   }
   if (initial_guess) {

@@ -164,8 +164,9 @@ TEST(IronCircuit, OverflowingSourceIsNamedNotNan) {
     FAIL() << "no ConvergenceError";
   } catch (const ConvergenceError& e) {
     EXPECT_EQ(std::string(e.what()),
-              "the source of the field equation is not a finite number: the largest circuit "
-              "current, 1e+300 A, times the turns (or a magnet) is beyond double arithmetic");
+              "the source of the field equation is not a finite number: the circuit currents "
+              "(largest 1e+300 A) times the turns, a fixed current density or a magnet's "
+              "coercivity is beyond double arithmetic");
   }
 }
 
