@@ -104,6 +104,21 @@ TEST(TransientCli, ZeroStepAndAbsurdStepCountExitWithTwo) {
       << out;
 }
 
+// Two [[transient.region]] remedies for one region were accepted and one silently dropped.
+TEST(TransientCli, TwoRemediesForOneRegionExitWithTwo) {
+  std::string out;
+  const std::string twice =
+      case_with("annular_valve.toml",
+                "[[transient.region]]\nname = \"core\"\nmodel = \"solid\"\n"
+                "[[transient.region]]\nname = \"core\"\nmodel = \"laminated\"\nsize = 0.35\n",
+                "twice");
+  EXPECT_EQ(run_cli(twice + " --current 1 --duration 0.01 --quiet", out, true), 2) << out;
+  EXPECT_NE(out.find("transient.region[2].name: region 'core' already has a remedy; expected one "
+                     "[[transient.region]] per region"),
+            std::string::npos)
+      << out;
+}
+
 }  // namespace
 
 namespace {
