@@ -18,6 +18,7 @@
 #include "core/atomic_file.hpp"
 #include "core/closest_key.hpp"
 #include "core/error.hpp"
+#include "core/finite_output.hpp"
 #include "core/quantity_domain.hpp"
 
 namespace rheomag::lumped {
@@ -423,6 +424,7 @@ void write_recording(const Recording& rec, const std::string& csv_path) {
       throw InputError(csv_path + ": time is not finite and strictly increasing at sample " +
                        std::to_string(i));
   std::vector<const std::vector<double>*> cols;
+  std::vector<std::string> names;
   std::ostringstream csv;
   csv << "# written by rheomag";
   if (!rec.meta.description.empty()) csv << ": " << rec.meta.description;
@@ -433,14 +435,19 @@ void write_recording(const Recording& rec, const std::string& csv_path) {
     if (it == rec.columns.end()) continue;
     csv << "," << name;
     cols.push_back(&it->second);
+    names.push_back(name);
   }
   csv << "\n";
   for (std::size_t i = 0; i < rec.t.size(); ++i) {
     csv << format_number(rec.t[i]);
-    for (const auto* c : cols) {
-      if (!std::isfinite((*c)[i]))
-        throw InputError(csv_path + ": non-finite value at sample " + std::to_string(i));
-      csv << "," << format_number((*c)[i]);
+    for (std::size_t k = 0; k < cols.size(); ++k) {
+      // A simulated output that overflowed (a model with absurd parameters) is a result, not a
+      // bad input: exit 3 naming the column and time, as every other non-finite output.
+      if (!std::isfinite((*cols[k])[i]))
+        throw NonFiniteOutputError(csv_path + ": column '" + names[k] + "' at sample " +
+                                   std::to_string(i) + " (t = " + format_number(rec.t[i]) +
+                                   " s) is not a finite number; the recording was not written");
+      csv << "," << format_number((*cols[k])[i]);
     }
     csv << "\n";
   }

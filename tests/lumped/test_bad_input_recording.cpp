@@ -11,10 +11,12 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 
 #include "core/error.hpp"
+#include "core/finite_output.hpp"
 #include "lumped/ident_narx.hpp"
 #include "lumped/recording_io.hpp"
 
@@ -267,6 +269,24 @@ TEST(BadInputRecording, OutputConstantToRoundingNamed) {
 }
 
 // narx on a constant output died with SIGSEGV inside the QR of an empty regressor matrix.
+// `simulate model.json` with a parameter of 1e308 produced an infinite force; the writer said
+// "p.csv: non-finite value at sample 1" with exit 2, as if the input were wrong and without the
+// column. It is a non-finite result (exit 3) naming the column and time; nothing is written.
+TEST(BadInputRecording, NonFiniteSimulatedColumnIsANonFiniteResult) {
+  Recording rec = parse_csv_samples("t,velocity,force\n0,1,5\n0.1,2,6\n", "in.csv");
+  rec.meta.drive = {"velocity"};
+  rec.meta.output = "force";
+  rec.columns["force"][1] = std::numeric_limits<double>::infinity();
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "rheomag_nonfinite_written.csv").string();
+  std::filesystem::remove(path);
+  EXPECT_THAT([&] { write_recording(rec, path); },
+              ::testing::ThrowsMessage<rheomag::NonFiniteOutputError>(
+                  path + ": column 'force' at sample 1 (t = 0.1 s) is not a finite number; the "
+                         "recording was not written"));
+  EXPECT_FALSE(std::filesystem::exists(path));
+}
+
 TEST(BadInputRecording, NarxOnConstantOutputIsInputError) {
   IoData data;
   const int n = 400;
