@@ -393,7 +393,12 @@ Recording read_csv_samples(const std::string& csv_path) {
 
 Recording read_recording(const std::string& csv_path) {
   if (!fs::exists(csv_path)) throw InputError(csv_path + ": recording not found");
-  const std::string sidecar = sidecar_path_for(csv_path);
+  std::string sidecar = sidecar_path_for(csv_path);
+  // A recording exported on Windows may come as REC.CSV + REC.TOML: the same stem, the
+  // extension in capitals.
+  if (fs::path upper(csv_path);
+      !fs::exists(sidecar) && fs::exists(upper.replace_extension(".TOML")))
+    sidecar = upper.string();
   RecordingMeta meta = read_sidecar(sidecar);
   Recording rec = read_csv_samples(csv_path);
   rec.meta = std::move(meta);

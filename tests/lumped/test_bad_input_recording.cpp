@@ -287,6 +287,20 @@ TEST(BadInputRecording, NonFiniteSimulatedColumnIsANonFiniteResult) {
   EXPECT_FALSE(std::filesystem::exists(path));
 }
 
+// A recording exported on Windows as REC.CSV + REC.TOML was refused on Linux: "REC.toml: sidecar
+// not found", though the sidecar has the recording's stem.
+TEST(BadInputRecording, SidecarWithCapitalExtensionIsFound) {
+  const auto dir = std::filesystem::temp_directory_path() / "rheomag_capital_sidecar";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "REC.CSV") << "t,velocity,force\n0,1,5\n0.1,2,6\n0.2,3,4\n";
+  std::ofstream(dir / "REC.TOML") << "[recording]\ndrive = [\"velocity\"]\noutput = \"force\"\n";
+  const Recording rec = read_recording((dir / "REC.CSV").string());
+  EXPECT_EQ(rec.meta.output, "force");
+  EXPECT_EQ(rec.meta.sidecar_path, (dir / "REC.TOML").string());
+  std::filesystem::remove_all(dir);
+}
+
 TEST(BadInputRecording, NarxOnConstantOutputIsInputError) {
   IoData data;
   const int n = 400;
