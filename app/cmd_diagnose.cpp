@@ -111,16 +111,20 @@ const bool registered = app::register_command([](CLI::App& root) {
       "short/flat).");
   cmd->add_option("recording", o->recording, "Recording CSV (fixed format; sidecar beside it)")
       ->required();
-  cmd->add_option("--meta", o->meta, "Sidecar TOML to use instead of the one beside the CSV");
+  cmd->add_option("--meta", o->meta, "Sidecar TOML to use instead of the one beside the CSV")
+      ->check(rheomag::app::non_empty());
   cmd->add_option("--baseline", o->baseline,
                   "Fitted-model JSON ('rheomag fit --json' or 'fit-family --json', grey-box or "
                   "valve-chain) to use as the baseline instead of the sidecar's rig: its output "
                   "is the baseline, its parameters are held, its output scale and offset "
-                  "calibrated; candidates act on its inputs and output");
-  cmd->add_option("--out", o->out, "Folder for diagnosis.json, report.html and traces.csv");
+                  "calibrated; candidates act on its inputs and output")
+      ->check(rheomag::app::non_empty());
+  cmd->add_option("--out", o->out, "Folder for diagnosis.json, report.html and traces.csv")
+      ->check(rheomag::app::non_empty());
   cmd->add_option("--samples", o->samples,
                   "Diagnose only samples a:b (half-open indices; 'a:' to the end), e.g. an excerpt "
-                  "of a long recording");
+                  "of a long recording")
+      ->check(rheomag::app::non_empty());
   cmd->add_flag("--json", o->json, "Print the diagnosis as one JSON object on stdout");
   cmd->add_flag("--quiet", o->quiet,
                 "Do not report progress (each stage and candidate fit with its time) on stderr");

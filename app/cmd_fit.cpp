@@ -373,10 +373,12 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
   cmd->add_option("--model", o->model, "Model name (see above)")->required();
   cmd->add_option("--train", o->train,
                   "Training samples a:b, half-open sample indices [a, b) ('a:' to the end); "
-                  "default all");
+                  "default all")
+      ->check(rheomag::app::non_empty());
   cmd->add_option("--validate", o->validate,
                   "Validation samples c:d (half-open, must not overlap --train) or another "
-                  "recording CSV of the same device");
+                  "recording CSV of the same device")
+      ->check(rheomag::app::non_empty());
   cmd->add_option("--mode", o->mode,
                   "simulation (free run, default) or prediction (one step ahead)")
       ->transform(CLI::CheckedTransformer(
@@ -390,7 +392,8 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
                 "model file, docs/fit-model-json.md), params, train and validation "
                 "({fit_percent, rmse_percent, re}), mode");
   cmd->add_option("--plot", o->plot,
-                  "Write a PNG figure (measured vs model, residual) with gnuplot");
+                  "Write a PNG figure (measured vs model, residual) with gnuplot")
+      ->check(rheomag::app::output_file());
   cmd->callback([o]() { run_fit(*o); });
 });
 

@@ -171,7 +171,8 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
   cmd->add_option("recordings", o->recordings, "Training recordings (CSV with .toml sidecars)")
       ->required();
   cmd->add_option("--model", o->model, model_list())->required();
-  cmd->add_option("--predict", o->predict, "Recordings to predict with the fitted model");
+  cmd->add_option("--predict", o->predict, "Recordings to predict with the fitted model")
+      ->check(rheomag::app::non_empty());
   cmd->add_option("--decimation", o->decimation,
                   "Keep every n-th sample of each training recording in the joint fit")
       ->check(CLI::Range(1, 100));
@@ -181,7 +182,8 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
       ->check(CLI::Range(1e-6, 1.0));
   cmd->add_option("--report", o->report,
                   "Write DIR/report.html: measured vs model loops of every recording, parameters "
-                  "with standard errors and their field dependence, FIT per recording");
+                  "with standard errors and their field dependence, FIT per recording")
+      ->check(rheomag::app::non_empty());
   cmd->add_flag("--json", o->json,
                 "Print one JSON object: the fitted model (readable back as a model file, "
                 "docs/fit-model-json.md), params, train and prediction (arrays of {file, "

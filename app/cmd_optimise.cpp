@@ -126,7 +126,8 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
   cmd->add_option("case", o->case_file, "Case file (.toml) with an [optimise] table")
       ->required()
       ->check(CLI::ExistingFile);
-  cmd->add_option("--out", o->out_dir, "Output directory (default: current directory)");
+  cmd->add_option("--out", o->out_dir, "Output directory (default: current directory)")
+      ->check(rheomag::app::non_empty());
   cmd->add_flag("--json", o->json, "Print one JSON object to stdout");
   cmd->add_flag("--verbose", o->verbose, "Show Ipopt's iteration log");
   cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr");

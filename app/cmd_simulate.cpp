@@ -1,7 +1,9 @@
 // rheomag simulate: run a lumped model spec (virtual rig) and write a recording (CSV + sidecar).
 
 #include <CLI/CLI.hpp>
+#include <cctype>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -39,9 +41,24 @@ rheomag::lumped::Recording simulate_fitted_model(const SimulateOptions& o) {
   return rec;
 }
 
+/// True if `path` names a fitted model: a .json file (any case), or a JSON object under any
+/// other name (`fit --json > model.out`: its first character after white space and a byte-order
+/// mark is '{', which no TOML document starts with).
+bool is_fitted_model_file(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension == ".json") return true;
+  std::ifstream in(path, std::ios::binary);
+  char c = 0;
+  while (in.get(c))
+    if (!std::isspace(static_cast<unsigned char>(c)) && c != '\xEF' && c != '\xBB' && c != '\xBF')
+      return c == '{';
+  return false;
+}
+
 void run_simulate(const SimulateOptions& o) {
   using namespace rheomag::lumped;
-  if (std::filesystem::path(o.spec).extension() == ".json") {
+  if (is_fitted_model_file(o.spec)) {
     const Recording rec = simulate_fitted_model(o);
     write_recording(rec, o.out);
     print_written(o, rec);
@@ -96,7 +113,8 @@ bool registered = rheomag::app::register_command([](CLI::App& root) {
                   "model spec (TOML), or a fitted model (JSON written by fit / fit-family --json: "
                   "run on --input's drive, its output replaced by the model's)")
       ->required();
-  cmd->add_option("--input", opts->input, "recording CSV whose columns drive the model");
+  cmd->add_option("--input", opts->input, "recording CSV whose columns drive the model")
+      ->check(rheomag::app::non_empty());
   cmd->add_option("--signal", opts->signals,
                   "generated drive COLUMN=KIND:key=value,... (repeatable). Kinds: "
                   "sine:amplitude,frequency[,offset] (displacement sine also writes velocity); "

@@ -187,7 +187,8 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
   cmd->add_option("--mesher", o->mesher,
                   "With --3d: \"tetgen\" (isotropic tetrahedra, default) or \"swept\" (the "
                   "meridian mesh swept through angles graded towards the features: much faster "
-                  "for half and full models)");
+                  "for half and full models)")
+      ->check(rheomag::app::non_empty());
   cmd->callback([o] { run(*o); });
 });
 

@@ -184,10 +184,12 @@ const bool registered = app::register_command([](CLI::App& root) {
                   "Newton iterations per time step before it is repeated smaller (adaptive) or the "
                   "run stops with exit 3 (default 50)")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--scheme", o->scheme, "midpoint (default, 2nd order) or backward_euler");
+  cmd->add_option("--scheme", o->scheme, "midpoint (default, 2nd order) or backward_euler")
+      ->check(rheomag::app::non_empty());
   cmd->add_option("--resistance", o->resistance, "Coil resistance [Ohm] (overrides the case)");
   cmd->add_option("--vtk-series", o->vtk_series,
-                  "Write every state as DIR/state_NNNNN.vtu and DIR/series.pvd (ParaView)");
+                  "Write every state as DIR/state_NNNNN.vtu and DIR/series.pvd (ParaView)")
+      ->check(rheomag::app::non_empty());
   cmd->add_flag("--json", o->json, "Print one JSON object (SI units) instead of the summary");
   cmd->add_flag("--quiet", o->quiet, "No progress on stderr");
   cmd->callback([o] { run(*o); });

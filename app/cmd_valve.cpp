@@ -159,7 +159,8 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
                   "Flow rates [m^3/s], comma-separated "
                   "(default: [valve] flow)")
       ->delimiter(',');
-  cmd->add_option("--wire", o->wire, "Wire, e.g. \"AWG 24\" or \"0.5 mm\" (default: [valve] wire)");
+  cmd->add_option("--wire", o->wire, "Wire, e.g. \"AWG 24\" or \"0.5 mm\" (default: [valve] wire)")
+      ->check(rheomag::app::non_empty());
   cmd->add_option("--temperature", o->temperature, "Coil temperature [C] (default 20)");
   cmd->add_flag("--json", o->json, "Print one JSON object to stdout");
   cmd->callback([o] { run_valve(*o); });

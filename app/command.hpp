@@ -39,4 +39,18 @@ inline CLI::Validator output_file() {
       "FILE");
 }
 
+/// Validator of an option whose value names a file, folder, range or choice: an empty value (a
+/// script's unset variable, `--out "$DIR"`) would read as the option's absence and be ignored
+/// without a word (nothing written, exit 0).
+inline CLI::Validator non_empty() {
+  return CLI::Validator(
+      [](std::string& value) {
+        return value.empty() ? std::string(
+                                   "expected a value, got \"\" (an empty value is not "
+                                   "the option's absence)")
+                             : std::string();
+      },
+      "");
+}
+
 }  // namespace rheomag::app

@@ -18,6 +18,11 @@
 namespace rheomag::cases {
 namespace {
 
+/// Coil turns: a whole number from 1 to 10^9 (FEMM stores turns as an integer; 10^9 turns of the
+/// finest wire fill square metres of winding window). 1e15 turns were solved and exported as
+/// -9223372036854775808.
+constexpr Domain kTurns = Domain::between(1.0, 1e9).whole();
+
 constexpr const char* background_name = "air";
 
 /// The length units a case file may use.
@@ -53,7 +58,7 @@ RegionOutline read_region(const TomlSection& section, double unit, double max_ar
   if (auto coil = section.table("coil")) {
     coil->allow_only({"circuit", "turns", "reversed"});
     region.circuit = coil->required_string("circuit");
-    region.turns = coil->quantity("turns", Domain::count());
+    region.turns = coil->quantity("turns", kTurns);
     if (coil->boolean_or("reversed", false)) region.turns = -region.turns;
   }
 
@@ -179,7 +184,7 @@ TemplateValues read_template(const TomlSection& geometry, const ValveTemplate& v
         values.numbers[p.key] = geometry.positive(p.key) * unit;
         break;
       case ParameterKind::count:
-        values.numbers[p.key] = geometry.quantity(p.key, Domain::count());
+        values.numbers[p.key] = geometry.quantity(p.key, kTurns);
         break;
       case ParameterKind::material:
       case ParameterKind::name:

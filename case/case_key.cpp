@@ -20,6 +20,17 @@ bool is_index(const std::string& s) {
          std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c); });
 }
 
+/// The value of an all-digit path component; beyond 10^9 (more items than any list holds) it
+/// stops growing, so a 20-digit index is out of range instead of overflowing.
+std::size_t index_of(const std::string& s) {
+  std::size_t value = 0;
+  for (char c : s) {
+    if (value > 1'000'000'000) break;
+    value = value * 10 + static_cast<std::size_t>(c - '0');
+  }
+  return value;
+}
+
 /// Splits "a.b[2].c" into {"a", "b", "2", "c"}.
 std::vector<std::string> split_key(const std::string& key) {
   std::vector<std::string> parts(1);
@@ -74,7 +85,7 @@ const toml::node* node_at(const toml::table& table, const std::vector<std::strin
     if (const toml::table* t = node->as_table())
       node = t->get(part);
     else if (const toml::array* a = node->as_array(); a && is_index(part))
-      node = a->get(std::stoul(part));
+      node = a->get(index_of(part));
     else
       return nullptr;
   }
@@ -90,7 +101,7 @@ toml::table& parent_table(toml::table& root, const std::vector<std::string>& pat
       if (!next) next = &t->insert_or_assign(path[i], toml::table{}).first->second;
       node = next;
     } else {
-      node = node->as_array()->get(std::stoul(path[i]));
+      node = node->as_array()->get(index_of(path[i]));
     }
   }
   return *node->as_table();
@@ -140,7 +151,7 @@ std::vector<std::string> value_keys(const Case& c) {
         continue;
       }
       node = node && node->as_table() ? node->as_table()->get(p)
-             : (a && is_index(p))     ? a->get(std::stoul(p))
+             : (a && is_index(p))     ? a->get(index_of(p))
                                       : nullptr;
       if (!shortened.empty()) shortened += '.';
       shortened += p;
@@ -201,8 +212,12 @@ CaseKey resolve_case_key(const Case& base, const std::string& key, const std::st
       if (!a->is_array_of_tables() || a->empty())
         unknown_key(base, key, where, label,
                     "goes into a list of values, which is edited as one value");
+      if (parts[i].front() == '-' && is_index(parts[i].substr(1)))
+        unknown_key(base, key, where, label,
+                    "has the negative index " + parts[i] + "; expected an index from 0 to " +
+                        std::to_string(a->size() - 1));
       if (is_index(parts[i])) {
-        const std::size_t index = std::stoul(parts[i]);
+        const std::size_t index = index_of(parts[i]);
         if (index >= a->size())
           unknown_key(base, key, where, label,
                       "indexes item " + parts[i] + " of a list of " + std::to_string(a->size()));

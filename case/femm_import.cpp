@@ -95,6 +95,8 @@ struct FemSegment {
 class FemReader {
  public:
   FemReader(std::string_view text, std::string source) : source_(std::move(source)) {
+    // FEMM writes none, but a .fem saved by a Windows editor may start with a byte-order mark.
+    text = without_byte_order_mark(text);
     std::size_t start = 0;
     while (start <= text.size()) {
       std::size_t end = text.find_first_of("\r\n", start);
@@ -224,7 +226,9 @@ struct FemFile {
 
 int count_value(std::string_view value, FemReader& reader, const std::string& key) {
   const int n = reader.integer(value, "[" + key + "]");
-  if (n < 0 || n > 10000000) reader.fail(reader.line_number(), "[" + key + "]: bad count");
+  if (n < 0 || n > 10000000)
+    reader.fail(reader.line_number(),
+                "[" + key + "]: expected a count in [0, 10000000], got " + std::to_string(n));
   return n;
 }
 
@@ -450,10 +454,15 @@ FemFile read_file(std::string_view text, FemReader& reader) {
         }
         label.x = c[0];
         label.y = c[1];
-        for (std::size_t k : {2, 4, 6, 7, 8})
+        for (const auto& [k, name] : {std::pair<std::size_t, const char*>{2, "block type"},
+                                      {4, "circuit"},
+                                      {6, "group"},
+                                      {7, "turns"},
+                                      {8, "isexternal"}})
           if (k < c.size() && (c[k] != std::floor(c[k]) || std::abs(c[k]) > 1e9))
-            reader.fail(label.line,
-                        "block label column " + std::to_string(k + 1) + " must be an integer");
+            reader.fail(label.line, "block label column " + std::to_string(k + 1) + " (" + name +
+                                        "): expected a whole number within +-1e9, got " +
+                                        format_number(c[k]));
         label.block = static_cast<int>(c[2]);
         label.size = c.size() > 3 ? c[3] : -1;
         label.circuit = c.size() > 4 ? static_cast<int>(c[4]) : 0;
@@ -495,6 +504,9 @@ Material femm_material(const FemBlock& block, const std::string& source, const F
   Material m;
   m.name = block.name;
   m.source = "FEMM file " + source + ", block '" + block.name + "'";
+  // A negative conductivity would make the transient solver's eddy currents grow without bound.
+  if (!(block.sigma >= 0.0))
+    fail("Sigma = " + format_number(block.sigma) + " MS/m; expected a conductivity >= 0");
   m.conductivity = block.sigma * 1e6;  // MS/m -> S/m (kept for eddy-current work)
   const double fill = block.lam_fill;
   if (!(fill > 0.0 && fill <= 1.0))

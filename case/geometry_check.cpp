@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "case/toml_section.hpp"
 #include "core/error.hpp"
 
 namespace rheomag::cases {
@@ -137,7 +138,10 @@ void check_simple_polygon(const RegionOutline& region, double tolerance) {
   for (std::size_t i = 0; i < n; ++i) {
     if (distance(poly[i], poly[(i + 1) % n]) <= tolerance)
       throw InputError(region.where + ": region '" + region.name + "': repeated point " +
-                       text(poly[i]) + " (point " + std::to_string(i + 1) + ")");
+                       text(poly[i]) + " (point " + std::to_string(i + 1) +
+                       "): the next point lies within " + format_number(tolerance) +
+                       " m, the merge tolerance (1e-9 of the largest coordinate of the case; a "
+                       "coordinate far from the rest makes it large)");
   }
   for (std::size_t i = 0; i < n; ++i) {
     const Point& a = poly[i];

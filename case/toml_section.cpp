@@ -282,6 +282,12 @@ std::string read_input_file(const std::string& path) {
   return text.str();
 }
 
+std::string_view without_byte_order_mark(std::string_view text) {
+  constexpr std::string_view bom = "\xEF\xBB\xBF";
+  if (text.substr(0, bom.size()) == bom) text.remove_prefix(bom.size());
+  return text;
+}
+
 toml::table parse_toml_file(const std::string& path) {
   return parse_toml(read_input_file(path), path);
 }

@@ -109,6 +109,9 @@ toml::table parse_toml_file(const std::string& path);
 /// The whole content of a text file; InputError if it cannot be read.
 std::string read_input_file(const std::string& path);
 
+/// `text` without a leading UTF-8 byte-order mark (what many Windows tools write first).
+std::string_view without_byte_order_mark(std::string_view text);
+
 /// Finite-number formatting for messages (shortest round-trip form).
 std::string format_number(double value);
 

@@ -90,6 +90,11 @@ double winding_turns(double window_area, double wire_diameter, double fill) {
   // The tiny relative allowance keeps an exact fit (e.g. fill chosen from a known turn count)
   // from rounding down one turn.
   const double turns = std::floor(fill * window_area / wire_area * (1.0 + 1e-12));
+  if (turns > 1e9)
+    throw InputError("coil: " + std::to_string(wire_diameter * 1e3) + " mm wire at fill factor " +
+                     std::to_string(fill) +
+                     " gives more than 10^9 turns in the winding window; expected a wire "
+                     "diameter of a real winding (is the unit right?)");
   if (turns < 1.0)
     throw InputError("coil: not one turn of " + std::to_string(wire_diameter * 1e3) +
                      " mm wire fits the winding window at fill factor " + std::to_string(fill));

@@ -100,6 +100,11 @@ void write_file_atomically_with(const std::filesystem::path& path,
                                 const std::function<bool(const std::filesystem::path&)>& produce) {
   check_output_path(path, "output");
   const std::filesystem::path temporary = temporary_beside(path);
+  // A writer that takes a file name (VTK) says only that it failed: create the temporary first
+  // so that a missing or read-only directory is reported with the system's reason.
+  const int probe = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (probe < 0) throw InputError(path.string() + ": cannot write: " + reason(errno));
+  ::close(probe);
   bool ok = false;
   try {
     ok = produce(temporary);

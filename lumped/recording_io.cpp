@@ -18,6 +18,7 @@
 #include "core/atomic_file.hpp"
 #include "core/closest_key.hpp"
 #include "core/error.hpp"
+#include "core/finite_output.hpp"
 #include "core/quantity_domain.hpp"
 
 namespace rheomag::lumped {
@@ -216,6 +217,16 @@ RecordingMeta parse_sidecar(std::string_view text, const std::string& toml_path)
   meta.drive = rec->strings("drive");
   if (meta.drive.empty()) rec->fail("drive", "expected a non-empty list of column names");
   meta.output = rec->required_string("output");
+  // A drive column listed twice makes the regressors collinear; the output as a drive makes the
+  // model explain the signal with itself (an ARX fit of it went unstable, |pole| = 2e13).
+  for (auto d = meta.drive.begin(); d != meta.drive.end(); ++d) {
+    if (*d == meta.output)
+      rec->fail("drive", "column '" + *d +
+                             "' is also the output; expected the measured inputs that drive the "
+                             "model (e.g. velocity, current), not the signal it explains");
+    if (std::find(meta.drive.begin(), d, *d) != d)
+      rec->fail("drive", "column '" + *d + "' is listed twice; expected each drive column once");
+  }
 
   if (const std::optional<TomlSection> rig = top.table("rig")) {
     static const std::vector<std::string_view> declared{
@@ -283,8 +294,7 @@ RecordingMeta read_sidecar(const std::string& toml_path) {
 Recording parse_csv_samples(std::string_view text, const std::string& csv_path) {
   std::vector<std::string> warnings;
   // A UTF-8 byte-order mark (what many Windows tools write first) is not part of the header.
-  constexpr std::string_view bom = "\xEF\xBB\xBF";
-  if (text.substr(0, bom.size()) == bom) text.remove_prefix(bom.size());
+  text = cases::without_byte_order_mark(text);
   std::istringstream in{std::string(text)};
   Recording rec;
   rec.csv_path = csv_path;
@@ -383,7 +393,12 @@ Recording read_csv_samples(const std::string& csv_path) {
 
 Recording read_recording(const std::string& csv_path) {
   if (!fs::exists(csv_path)) throw InputError(csv_path + ": recording not found");
-  const std::string sidecar = sidecar_path_for(csv_path);
+  std::string sidecar = sidecar_path_for(csv_path);
+  // A recording exported on Windows may come as REC.CSV + REC.TOML: the same stem, the
+  // extension in capitals.
+  if (fs::path upper(csv_path);
+      !fs::exists(sidecar) && fs::exists(upper.replace_extension(".TOML")))
+    sidecar = upper.string();
   RecordingMeta meta = read_sidecar(sidecar);
   Recording rec = read_csv_samples(csv_path);
   rec.meta = std::move(meta);
@@ -414,6 +429,7 @@ void write_recording(const Recording& rec, const std::string& csv_path) {
       throw InputError(csv_path + ": time is not finite and strictly increasing at sample " +
                        std::to_string(i));
   std::vector<const std::vector<double>*> cols;
+  std::vector<std::string> names;
   std::ostringstream csv;
   csv << "# written by rheomag";
   if (!rec.meta.description.empty()) csv << ": " << rec.meta.description;
@@ -424,14 +440,19 @@ void write_recording(const Recording& rec, const std::string& csv_path) {
     if (it == rec.columns.end()) continue;
     csv << "," << name;
     cols.push_back(&it->second);
+    names.push_back(name);
   }
   csv << "\n";
   for (std::size_t i = 0; i < rec.t.size(); ++i) {
     csv << format_number(rec.t[i]);
-    for (const auto* c : cols) {
-      if (!std::isfinite((*c)[i]))
-        throw InputError(csv_path + ": non-finite value at sample " + std::to_string(i));
-      csv << "," << format_number((*c)[i]);
+    for (std::size_t k = 0; k < cols.size(); ++k) {
+      // A simulated output that overflowed (a model with absurd parameters) is a result, not a
+      // bad input: exit 3 naming the column and time, as every other non-finite output.
+      if (!std::isfinite((*cols[k])[i]))
+        throw NonFiniteOutputError(csv_path + ": column '" + names[k] + "' at sample " +
+                                   std::to_string(i) + " (t = " + format_number(rec.t[i]) +
+                                   " s) is not a finite number; the recording was not written");
+      csv << "," << format_number((*cols[k])[i]);
     }
     csv << "\n";
   }

@@ -278,6 +278,19 @@ Solution MagnetostaticSolver::solve_with(const std::vector<double>& currents,
   System system(*this, reduced_source(nodal));
   Eigen::VectorXd x = Eigen::VectorXd::Zero(n), r;
   const double scale = system.residual(x, r);
+  // Finite currents whose load overflows (1e300 A through the turns): Newton reported "the
+  // residual diverged ... reached -nan", which does not say why.
+  if (!std::isfinite(scale)) {
+    double largest = 0.0;
+    for (double current : currents) largest = std::max(largest, std::abs(current));
+    std::ostringstream message;
+    message << "the source of the field equation is not a finite number: the circuit currents "
+               "(largest "
+            << largest
+            << " A) times the turns, a fixed current density or a magnet's coercivity is beyond "
+               "double arithmetic";
+    throw ConvergenceError(message.str());
+  }
   if (initial_guess) {
     x = nodes_to_reduced(*initial_guess);
   } else {

@@ -134,11 +134,14 @@ void check_mesh_size(const Pslg& pslg, const MeshOptions& options,
   if (estimate > static_cast<double>(options.max_elements)) {
     // The sizes are in metres here whatever the input's units: say the smallest one so a unit
     // mistake shows (a case in mm converts its mesh_size to metres before it reaches the mesher).
-    std::ostringstream smallest_size;
+    std::ostringstream smallest_size, count;
     smallest_size << size[smallest] << " m in region '" << pslg.regions[smallest].name << "'";
-    throw InputError(pslg_name(pslg) + ": the requested mesh sizes give about " +
-                     std::to_string(static_cast<long>(estimate)) + " elements, more than the " +
-                     std::to_string(options.max_elements) +
+    // Three digits of a double: a size off by many orders of magnitude gives more elements than
+    // any integer type holds (a cast printed -9223372036854775808).
+    count.precision(3);
+    count << estimate;
+    throw InputError(pslg_name(pslg) + ": the requested mesh sizes give about " + count.str() +
+                     " elements, more than the " + std::to_string(options.max_elements) +
                      " allowed; expected larger mesh sizes (the smallest is " +
                      smallest_size.str() + ")");
   }

@@ -96,7 +96,9 @@ void check_distinct_points(const Pslg& pslg, const std::vector<int>& by_r, doubl
       if (std::hypot(q.r - p.r, q.z - p.z) <= tolerance) {
         const int i = std::min(by_r[k], by_r[m]), j = std::max(by_r[k], by_r[m]);
         fail(pslg, "points " + std::to_string(i) + " and " + std::to_string(j) + " coincide at " +
-                       format_point(pts[i]) + "; expected distinct points (merge them)");
+                       format_point(pts[i]) + " (within " + format_number(tolerance) +
+                       " m, the merge tolerance: 1e-9 of the geometry's extent; a coordinate far "
+                       "from the rest makes it large); expected distinct points (merge them)");
       }
     }
   }

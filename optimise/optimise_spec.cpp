@@ -164,7 +164,11 @@ OptimiseSpec read_optimise_spec(const cases::Case& c) {
   OptimiseSpec spec;
   read_objective(*section, spec);
   spec.maximise = read_sense(*section);
-  spec.current = section->number_or("current", 1.0);
+  spec.current = section->quantity_or("current", Domain::finite("A"), 1.0);
+  // At 0 A there is no on state and no secant inductance: the coil model failed later with
+  // "coil current must be finite and inductance finite", naming no file or key.
+  if (spec.current == 0.0)
+    section->fail("current", "expected a non-zero on-state coil current (A), got 0");
   spec.flow = section->positive_or("flow", 0.0);
   spec.velocity = section->number_or("velocity", 0.0);
   spec.speed = section->number_or("speed", 0.0);

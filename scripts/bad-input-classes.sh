@@ -24,6 +24,8 @@ rec('flat', s(), lambda k: 5.0)
 rec('zero', s('0.0'), sine); rec('neg', s('-1e-3'), sine); rec('absurd', s('1.0e300'), sine)
 rec('negvol', s(v='-2e-5'), sine); rec('negvr', s(r='-1.3e8'), sine); rec('ok', s(), sine)
 rec('big', s(), lambda k: 1e200*math.sin(0.1*k))
+rec('selfdrive', s().replace('drive = [\"velocity\"]', 'drive = [\"velocity\", \"force\"]'), sine)
+rec('nearflat', s(), lambda k: 5.0 + 1e-13*(k%2))
 open('bom.csv','w',encoding='utf-8-sig').write(open('ok.csv').read()); open('bom.toml','w').write(s())
 open('semi.csv','w').write(open('ok.csv').read().replace(',',';')); open('semi.toml','w').write(s())
 open('typo.csv','w').write(open('ok.csv').read()); open('typo.toml','w').write(s().replace('piston_area','piston_aera'))
@@ -40,8 +42,8 @@ run "negative chamber volume"                 2 $B diagnose negvol.csv --quiet
 run "negative viscous resistance"             2 $B diagnose negvr.csv --quiet
 run "piston area 1e300"                       2 $B diagnose absurd.csv --quiet
 echo "   stderr lines of the 1e300 run: $(wc -l < err.txt)"
-run "force 1e200 (overflow) fit bingham"      3 $B fit big.csv --model bingham
-run "force 1e200 fit arx --json"              3 $B fit big.csv --model arx:2,2,1 --json
+run "force 1e200 refused at its line (bingham)" 2 $B fit big.csv --model bingham
+run "force 1e200 refused at its line (arx)"     2 $B fit big.csv --model arx:2,2,1 --json
 echo "   stdout bytes of that run: $(wc -c < out.txt)"
 run "flow --length 1e300 (dp = inf)"          3 $B flow --kind annular --gap 1e-3 --length 1e300 --radius 0.01 --tau-y 1e5 --viscosity 1 --flow 1e-5
 run "turns = 600.5"                           2 $B solve turns.toml
@@ -59,6 +61,19 @@ run "--vtk /dev/null"                         2 $B mesh $C --vtk /dev/null
 run "simulate --out into a missing folder"    2 $B simulate $S/cases/rigs/bypass_cylinder.toml --signal displacement=sine:amplitude=0.025,frequency=0.75 --signal current=constant:value=1 --duration 1 --out nowhere/rec.csv
 run "diagnose --out onto a file"              2 $B diagnose ok.csv --quiet --out ok.csv
 echo "   temporaries left: $(ls -a | grep -c '\.tmp')"
+printf '\xEF\xBB\xBF' | cat - $S/tests/data/pot_core.fem > bom.fem
+run ".fem with a UTF-8 BOM (valid)"           0 $B mesh bom.fem
+sed 's/^turns = .*/turns = 1e15/' $C > manyturns.toml
+run "turns = 1e15"                            2 $B solve manyturns.toml
+printf '[sweep]\nbase = "%s"\n[[axis]]\nkey = "circuit.99999999999999999999.current"\nvalues = [1.0]\n' "$C" > idx.toml
+run "sweep key index of 20 digits"            2 $B sweep idx.toml -q -o sweep_out
+run "output among the drives"                 2 $B fit selfdrive.csv --model arx:2,2,1
+run "output constant but for 1e-13"           2 $B fit nearflat.csv --model arx:2,2,1
+run "empty option value (valve --wire '')"    2 $B valve $C --wire ''
+run "empty option value (diagnose --out '')"  2 $B diagnose ok.csv --quiet --out ''
+run "--vtk into a missing folder"             2 $B mesh $C --vtk nowhere/field.vtu
+run "solve --current 1e300 (source overflow)" 3 $B solve $S/tests/data/pot_core_equivalent.toml --current 1e300
+run "transient step to the same current"      2 $B transient $S/tests/data/pot_core_equivalent.toml --current 1 --from 1 --duration 0.01 --quiet
 mkdir -p full
 if mount -t tmpfs -o size=16k tmpfs full 2>/dev/null; then
   head -c 12000 /dev/zero > full/fill; echo old > full/field.vtu

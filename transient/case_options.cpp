@@ -16,6 +16,12 @@ TransientCaseOptions read_transient_case(const cases::Case& c) {
     entry.allow_only({"name", "model", "factor", "size"});
     RegionEddy remedy;
     remedy.region = entry.required_string("name");
+    // Two remedies for one region: one of them was silently dropped.
+    for (const RegionEddy& earlier : out.remedies)
+      if (earlier.region == remedy.region)
+        entry.fail("name", "region '" + remedy.region +
+                               "' already has a remedy; expected one [[transient.region]] per "
+                               "region");
     remedy.model = kEddyModelNames.parse(entry.required_string("model"), entry.where("model"));
     const bool sized = remedy.model == EddyModel::laminated || remedy.model == EddyModel::sintered;
     if (remedy.model == EddyModel::slotted) {

@@ -19,6 +19,9 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+/// The most equal time steps a run takes (adaptive runs need a few hundred).
+constexpr int kMaxEqualSteps = 1'000'000;
+
 void check_options(const TransientOptions& o, const std::string& where) {
   auto fail = [&](const std::string& what) { throw InputError(where + ": " + what); };
   if (!(o.duration > 0.0) || !std::isfinite(o.duration))
@@ -28,7 +31,15 @@ void check_options(const TransientOptions& o, const std::string& where) {
   if (o.drive == Drive::voltage && !(o.resistance > 0.0 && std::isfinite(o.resistance)))
     fail("a voltage step needs the coil resistance > 0 Ohm (a wire in the case, or a resistance)");
   if (!(o.resistance >= 0.0) || !std::isfinite(o.resistance)) fail("resistance must be >= 0 Ohm");
-  if (o.steps < 0) fail("steps must be >= 0 (0: adaptive)");
+  // Each step is a nonlinear solve and a stored state: 2e9 equal steps ran for hours.
+  if (o.steps < 0 || o.steps > kMaxEqualSteps)
+    fail("steps must be in [0, " + std::to_string(kMaxEqualSteps) + "] (0: adaptive), got " +
+         std::to_string(o.steps));
+  // A current step to the current it starts from has no response to follow: the run divided by
+  // the zero change and reported a residual of -nan (exit 3).
+  if (o.drive == Drive::current && o.value == o.from_current)
+    fail("the current step goes from " + std::to_string(o.from_current) + " A to the same " +
+         "current; expected a different --current or --from");
   if (!(o.tolerance > 0.0) || !std::isfinite(o.tolerance)) fail("tolerance must be > 0");
   if (!(o.max_step >= 0.0) || !(o.first_step >= 0.0)) fail("step limits must be >= 0 s");
 }

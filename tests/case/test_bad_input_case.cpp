@@ -50,6 +50,13 @@ std::string error_of(const std::string& text) {
   return "no error";
 }
 
+/// A general case of one square winding region with `turns` (TOML text) turns.
+std::string winding_case(const std::string& turns) {
+  return "[[circuit]]\nname = \"coil\"\n[[region]]\nname = \"winding\"\nmaterial = \"Copper\"\n"
+         "coil = { circuit = \"coil\", turns = " +
+         turns + " }\npoints = [[0, 0], [1, 0], [1, 1], [0, 1], [0, 0]]\n";
+}
+
 }  // namespace
 
 TEST(BadInputCase, BundledCaseReads) {
@@ -59,20 +66,58 @@ TEST(BadInputCase, BundledCaseReads) {
 // turns = 600.5 was used as 600.5 turns while the summary printed 600.
 TEST(BadInputCase, TemplateTurnsAreWhole) {
   const std::string text = replaced(annular_valve(), "turns = 600 ", "turns = 600.5 ");
-  EXPECT_EQ(error_of(text), "valve.toml:" + std::to_string(line_of(text, "turns = 600.5")) +
-                                ": geometry.turns: expected a whole number >= 1, got 600.5");
+  EXPECT_EQ(error_of(text),
+            "valve.toml:" + std::to_string(line_of(text, "turns = 600.5")) +
+                ": geometry.turns: expected a whole number in [1, 1000000000], got 600.5");
 }
 
 TEST(BadInputCase, RegionCoilTurnsAreWhole) {
-  const std::string text = R"([[circuit]]
-name = "coil"
+  const std::string text = winding_case("10.5");
+  EXPECT_NE(error_of(text).find(
+                "region[1].coil.turns: expected a whole number in [1, 1000000000], got 10.5"),
+            std::string::npos)
+      << error_of(text);
+}
+
+// 1e15 turns were solved (lambda 1.7e26 Wb) and `export` wrote 9223372036854775807 turns as
+// -9223372036854775808 (a double->long overflow); a wire of 10 nm wound the same count from the
+// fill factor. Turns are bounded by 10^9, FEMM's integer column.
+TEST(BadInputCase, TurnsAreBounded) {
+  const std::string text = replaced(annular_valve(), "turns = 600 ", "turns = 1e15 ");
+  EXPECT_EQ(error_of(text), "valve.toml:" + std::to_string(line_of(text, "turns = 1e15")) +
+                                ": geometry.turns: expected a whole number in [1, 1000000000], "
+                                "got 1e+15");
+  const std::string region = winding_case("9223372036854775807");
+  EXPECT_NE(error_of(region).find("region[1].coil.turns: expected a whole number in [1, "
+                                  "1000000000], got 9.22337203685e+18"),
+            std::string::npos)
+      << error_of(region);
+  const std::string wound =
+      replaced(annular_valve(), "turns = 600 ", "wire = \"0.00001 mm\"\nfill_factor = 0.5 ");
+  EXPECT_NE(error_of(wound).find("geometry.fill_factor: coil: 0.000010 mm wire at fill factor "
+                                 "0.500000 gives more than 10^9 turns"),
+            std::string::npos)
+      << error_of(wound);
+}
+
+// One coordinate far from the rest (1e300, or 1e9 mm typed for 1e-9) makes the domain-relative
+// merge tolerance huge, and a region elsewhere was refused with "repeated point (0, -20) mm" and
+// no hint why; the message now gives the tolerance and what sets it.
+TEST(BadInputCase, FarCoordinateNamesTheMergeTolerance) {
+  const std::string text = R"([case]
+units = "mm"
 [[region]]
-name = "winding"
-material = "Copper"
-coil = { circuit = "coil", turns = 10.5 }
-points = [[0, 0], [1, 0], [1, 1], [0, 1], [0, 0]]
+name = "pot"
+material = "Air"
+points = [[0, -20], [30, -20], [30, 18], [0, 18], [0, -20]]
+[[region]]
+name = "lid"
+material = "Air"
+points = [[0, 20], [30, 20], [30, 1e300], [0, 20]]
 )";
-  EXPECT_NE(error_of(text).find("region[1].coil.turns: expected a whole number >= 1, got 10.5"),
+  EXPECT_NE(error_of(text).find("region 'pot': repeated point (0, -20) mm (point 1): the next "
+                                "point lies within 1e+288 m, the merge tolerance (1e-9 of the "
+                                "largest coordinate of the case;"),
             std::string::npos)
       << error_of(text);
 }

@@ -107,9 +107,10 @@ TEST(CaseErrors, OverlappingRegions) {
 
 TEST(CaseErrors, ZeroOrNegativeTurns) {
   EXPECT_THAT(error_of(with("turns = 100", "turns = 0")),
-              HasSubstr("region[2].coil.turns: expected a whole number >= 1, got 0"));
-  EXPECT_THAT(error_of(with("turns = 100", "turns = -5")),
-              HasSubstr("region[2].coil.turns: expected a whole number >= 1, got -5"));
+              HasSubstr("region[2].coil.turns: expected a whole number in [1, 1000000000], got 0"));
+  EXPECT_THAT(
+      error_of(with("turns = 100", "turns = -5")),
+      HasSubstr("region[2].coil.turns: expected a whole number in [1, 1000000000], got -5"));
 }
 
 TEST(CaseErrors, ZeroOrNegativeDimensionsAndGaps) {

@@ -159,6 +159,20 @@ TEST(CaseKey, UnknownKeysSuggestTheClosest) {
   EXPECT_THAT(error_of(base, "geometry..gap"), HasSubstr("has an empty component"));
 }
 
+// A user's sweep or optimise file with an index beyond any list (20 digits) or a negative one:
+// before, std::stoul's out_of_range escaped as "internal error: stoul" (exit 1).
+TEST(CaseKey, HugeAndNegativeIndicesAreInputErrors) {
+  const Case base = base_case();
+  EXPECT_THAT(error_of(base, "circuit.99999999999999999999.current"),
+              HasSubstr("sweep.toml:4: sweep key 'circuit.99999999999999999999.current' indexes "
+                        "item 99999999999999999999 of a list of 1"));
+  EXPECT_THAT(error_of(base, "circuit[99999999999999999999].current"),
+              HasSubstr("indexes item 99999999999999999999 of a list of 1"));
+  EXPECT_THAT(error_of(base, "circuit[-1].current"),
+              HasSubstr("sweep key 'circuit[-1].current' has the negative index -1; expected an "
+                        "index from 0 to 0"));
+}
+
 TEST(CaseKey, TemplatesDeclareTheirWalls) {
   EXPECT_EQ(find_template("annular_valve")->walls(),
             (std::vector<std::string>{"pole_length", "disk_thickness"}));

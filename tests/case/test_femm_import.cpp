@@ -103,6 +103,40 @@ TEST(FemmImport, LengthUnitsAndLineEndings) {
               HasSubstr("bad.fem:7: [LengthUnits]: expected inches, millimeters"));
 }
 
+// "block label column 8 must be an integer" for 1e12 turns did not say which field or what was
+// read.
+TEST(FemmImport, BlockLabelIntegerColumnsNamed) {
+  EXPECT_THAT(error_of(with("17\t0\t3\t0.7425152493\t1\t0\t0\t200",
+                            "17\t0\t3\t0.7425152493\t1\t0\t0\t1e12")),
+              HasSubstr("bad.fem:171: block label column 8 (turns): expected a whole number "
+                        "within +-1e9, got 1e+12"));
+  EXPECT_THAT(error_of(with("17\t0\t3\t0.7425152493\t1", "17\t0\t3.5\t0.7425152493\t1")),
+              HasSubstr("bad.fem:171: block label column 3 (block type): expected a whole number "
+                        "within +-1e9, got 3.5"));
+}
+
+// A negative Sigma was kept as the block's conductivity (eddy currents that grow in a transient
+// run); a negative count said only "bad count".
+TEST(FemmImport, NegativeConductivityAndCountNamed) {
+  EXPECT_THAT(error_of(with("<Sigma> = 58", "<Sigma> = -58")),
+              HasSubstr("block 'Copper': Sigma = -58 MS/m; expected a conductivity >= 0"));
+  EXPECT_THAT(error_of(with("<BHPoints> = 38", "<BHPoints> = -1")),
+              HasSubstr("bad.fem:67: [BHPoints]: expected a count in [0, 10000000], got -1"));
+}
+
+// A .fem saved by a Windows editor starts with a UTF-8 byte-order mark; it was refused as
+// "bad.fem:1: expected a [Key] = value line, got '\xEF\xBB\xBF[Format] = 4.0'".
+TEST(FemmImport, ByteOrderMarkIsSkipped) {
+  const Problem plain = parse_femm(pot_core_text(), "plain.fem");
+  for (const std::string& text :
+       {"\xEF\xBB\xBF" + pot_core_text(), "\xEF\xBB\xBF" + with("\n", "\r\n")}) {
+    const Problem marked = parse_femm(text, "bom.fem");
+    ASSERT_EQ(marked.geometry.points.size(), plain.geometry.points.size());
+    EXPECT_DOUBLE_EQ(marked.geometry.points[2].r, plain.geometry.points[2].r);
+    EXPECT_EQ(marked.regions.size(), plain.regions.size());
+  }
+}
+
 TEST(FemmImport, DepthIsIgnoredInAxisymmetricModels) {
   // FEMM's Lua idiom mi_probdef(0, "millimeters", "axi", 1e-8, 0, 30) writes [Depth] = 0; FEMM
   // ignores the depth of an axisymmetric problem, and so does the reader.

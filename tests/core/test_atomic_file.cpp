@@ -57,6 +57,21 @@ TEST(AtomicFile, MissingDirectoryIsAnInputErrorNamingThePath) {
   }
 }
 
+// `solve --vtk nodir/field.vtu`: VTK's writer only reports failure, and the message said "cannot
+// write: the writer failed"; the system's reason names the missing directory.
+TEST(AtomicFile, WriterIntoMissingDirectorySaysWhy) {
+  const fs::path dir = scratch("missing_with");
+  try {
+    rheomag::write_file_atomically_with(dir / "no" / "field.vtu",
+                                        [](const fs::path&) { return false; });
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              (dir / "no" / "field.vtu").string() + ": cannot write: No such file or directory");
+  }
+  EXPECT_FALSE(fs::exists(dir / "no"));
+}
+
 TEST(AtomicFile, RefusesDirectoriesAndDeviceNodes) {
   const fs::path dir = scratch("special");
   EXPECT_THROW(rheomag::write_file_atomically(dir, "x"), InputError);

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "tests/cli_run.hpp"
 
@@ -136,6 +137,29 @@ TEST_F(BadInputCli, EmptyVtkPathIsExit2) {
   const CliRun r = run_in(dir, "mesh '" + c + "' --vtk ''");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("--vtk"), std::string::npos) << r.err;
+}
+
+// An empty option value (a script's unset variable: `--out "$DIR"`) read as the option's absence:
+// `diagnose --out ''` wrote nothing, `fit --plot ''` drew nothing, `valve --wire ''` used the
+// case's wire, each with exit 0. Refused when the command line is parsed, naming the option.
+TEST_F(BadInputCli, EmptyOptionValuesAreExit2) {
+  const std::string c = "'" + std::string(RHEOMAG_SOURCE_DIR) + "/cases/annular_valve.toml'";
+  for (const std::string& args : std::vector<std::string>{
+           "diagnose rec.csv --out ''", "diagnose rec.csv --meta ''",
+           "diagnose rec.csv --samples ''", "diagnose rec.csv --baseline ''",
+           "fit rec.csv --model arx:2,2,1 --plot ''", "fit rec.csv --model arx:2,2,1 --train ''",
+           "fit rec.csv --model arx:2,2,1 --validate ''",
+           "fit-family rec.csv --model bingham --report ''",
+           "fit-family rec.csv --model bingham --predict ''", "optimise " + c + " --out ''",
+           "simulate spec.toml --input '' --out x.csv", "valve " + c + " --wire ''",
+           "transient " + c + " --current 1 --duration 1 --vtk-series ''",
+           "transient " + c + " --current 1 --duration 1 --scheme ''",
+           "solve " + c + " --3d --mesher ''"}) {
+    const CliRun r = run_in(dir, args);
+    EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find("got \"\""), std::string::npos) << args << "\n" << r.err;
+    EXPECT_EQ(r.out, "") << args;
+  }
 }
 
 // `--vtk` onto a device node replaced the node by a regular file; a FIFO stands in for the node

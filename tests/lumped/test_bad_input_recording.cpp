@@ -11,10 +11,12 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 
 #include "core/error.hpp"
+#include "core/finite_output.hpp"
 #include "lumped/ident_narx.hpp"
 #include "lumped/recording_io.hpp"
 
@@ -133,6 +135,18 @@ TEST(BadInputSidecar, TextWhereANumberBelongs) {
 }
 
 // A CSV saved with a UTF-8 byte-order mark was refused with "no 't' column".
+// A sidecar listing its output among the drive columns (or a drive twice) was accepted: an ARX
+// fit then used the output as its own input and went unstable (|pole| 2.3e13), bingham ignored it.
+TEST(BadInputSidecar, DriveColumnsAreDistinctInputs) {
+  EXPECT_EQ(sidecar_error("[recording]\ndrive = [\"velocity\", \"force\"]\noutput = \"force\"\n"),
+            "rec.toml:2: recording.drive: column 'force' is also the output; expected the measured "
+            "inputs that drive the model (e.g. velocity, current), not the signal it explains");
+  EXPECT_EQ(
+      sidecar_error("[recording]\ndrive = [\"velocity\", \"velocity\"]\noutput = \"force\"\n"),
+      "rec.toml:2: recording.drive: column 'velocity' is listed twice; expected each drive column "
+      "once");
+}
+
 TEST(BadInputCsv, ByteOrderMarkAccepted) {
   const Recording rec = parse_csv_samples("\xEF\xBB\xBFt,force\n0,1\n0.1,2\n", "rec.csv");
   ASSERT_EQ(rec.t.size(), 2u);
@@ -242,7 +256,51 @@ TEST(BadInputRecording, ConstantOutputNamed) {
   EXPECT_NO_THROW(rec.require_varying("velocity"));
 }
 
+// An output that varies only by rounding (5 +- 1e-13, a constant passed through a float export)
+// was fitted with exit 0 and printed FIT -103 %; it is as constant as diagnose's "flat" output.
+TEST(BadInputRecording, OutputConstantToRoundingNamed) {
+  Recording rec = parse_csv_samples(
+      "t,velocity,force\n0,1,5\n0.1,2,5.0000000000001\n0.2,3,5\n0.3,1,5.000001\n", "rec.csv");
+  EXPECT_THAT([&] { rec.require_varying("force", 0, 3); },
+              ::testing::ThrowsMessage<rheomag::InputError>(
+                  "rec.csv: column 'force' is constant (to 9 significant digits: 5, spread "
+                  "1e-13) on samples 0:3; there is nothing to identify"));
+  EXPECT_NO_THROW(rec.require_varying("force"));  // 2e-7 relative: a measured change
+}
+
 // narx on a constant output died with SIGSEGV inside the QR of an empty regressor matrix.
+// `simulate model.json` with a parameter of 1e308 produced an infinite force; the writer said
+// "p.csv: non-finite value at sample 1" with exit 2, as if the input were wrong and without the
+// column. It is a non-finite result (exit 3) naming the column and time; nothing is written.
+TEST(BadInputRecording, NonFiniteSimulatedColumnIsANonFiniteResult) {
+  Recording rec = parse_csv_samples("t,velocity,force\n0,1,5\n0.1,2,6\n", "in.csv");
+  rec.meta.drive = {"velocity"};
+  rec.meta.output = "force";
+  rec.columns["force"][1] = std::numeric_limits<double>::infinity();
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "rheomag_nonfinite_written.csv").string();
+  std::filesystem::remove(path);
+  EXPECT_THAT([&] { write_recording(rec, path); },
+              ::testing::ThrowsMessage<rheomag::NonFiniteOutputError>(
+                  path + ": column 'force' at sample 1 (t = 0.1 s) is not a finite number; the "
+                         "recording was not written"));
+  EXPECT_FALSE(std::filesystem::exists(path));
+}
+
+// A recording exported on Windows as REC.CSV + REC.TOML was refused on Linux: "REC.toml: sidecar
+// not found", though the sidecar has the recording's stem.
+TEST(BadInputRecording, SidecarWithCapitalExtensionIsFound) {
+  const auto dir = std::filesystem::temp_directory_path() / "rheomag_capital_sidecar";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "REC.CSV") << "t,velocity,force\n0,1,5\n0.1,2,6\n0.2,3,4\n";
+  std::ofstream(dir / "REC.TOML") << "[recording]\ndrive = [\"velocity\"]\noutput = \"force\"\n";
+  const Recording rec = read_recording((dir / "REC.CSV").string());
+  EXPECT_EQ(rec.meta.output, "force");
+  EXPECT_EQ(rec.meta.sidecar_path, (dir / "REC.TOML").string());
+  std::filesystem::remove_all(dir);
+}
+
 TEST(BadInputRecording, NarxOnConstantOutputIsInputError) {
   IoData data;
   const int n = 400;

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <memory>
 #include <span>
 #include <string>
@@ -77,6 +78,20 @@ Recording valve_recording() {
   }
   rec.columns = {{"flow", q}, {"current", i}, {"pressure", p}};
   return rec;
+}
+
+/// A fresh directory `dir` holding `rec` as rec.csv with its sidecar rec.toml (a damper).
+void write_recording_files(const Recording& rec, const fs::path& dir) {
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream csv(dir / "rec.csv");
+  csv.precision(17);
+  csv << "t,velocity,current,force\n";
+  for (std::size_t k = 0; k < rec.t.size(); ++k)
+    csv << rec.t[k] << ',' << rec.columns.at("velocity")[k] << ',' << rec.columns.at("current")[k]
+        << ',' << rec.columns.at("force")[k] << '\n';
+  std::ofstream(dir / "rec.toml") << "[recording]\ndrive = [\"velocity\", \"current\"]\n"
+                                     "output = \"force\"\n[rig]\nkind = \"damper\"\n";
 }
 
 /// The message of the InputError `parse_fit_model_json(text)` throws ("(none)" if it passes).
@@ -280,19 +295,8 @@ TEST(FitModelJson, OtherOutputColumnRefused) {
 // equals the FIT the command printed (same model, same simulation; 1e-9 %).
 TEST(FitModelJson, CliOutputReadsBackAndReproducesItsFit) {
   const fs::path dir = fs::temp_directory_path() / "rheomag_fit_model_json";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
   const Recording rec = damper_recording(0.05);
-  {
-    std::ofstream csv(dir / "rec.csv");
-    csv.precision(17);
-    csv << "t,velocity,current,force\n";
-    for (std::size_t k = 0; k < rec.t.size(); ++k)
-      csv << rec.t[k] << ',' << rec.columns.at("velocity")[k] << ',' << rec.columns.at("current")[k]
-          << ',' << rec.columns.at("force")[k] << '\n';
-    std::ofstream(dir / "rec.toml") << "[recording]\ndrive = [\"velocity\", \"current\"]\n"
-                                       "output = \"force\"\n[rig]\nkind = \"damper\"\n";
-  }
+  write_recording_files(rec, dir);
   const std::string command = "cd '" + dir.string() + "' && '" + RHEOMAG_BINARY +
                               "' fit rec.csv --model bingham --json > model.json";
   ASSERT_EQ(std::system(command.c_str()), 0);
@@ -305,5 +309,25 @@ TEST(FitModelJson, CliOutputReadsBackAndReproducesItsFit) {
   const Metrics m = compute_metrics(std::span<const double>(rec.columns.at("force")),
                                     std::span<const double>(y), SampleRange{0, y.size()});
   EXPECT_NEAR(m.fit_percent, printed["train"]["fit_percent"].get<double>(), 1e-9);
+  fs::remove_all(dir);
+}
+
+// `rheomag fit --json > model.out` (or model.JSON, or no extension): simulate chose its reader by
+// the exact extension ".json" and read such a model as a TOML rig spec, refusing it with "Error
+// while parsing root table: expected keys, ... saw '{'". A JSON object is recognised by its '{'.
+TEST(FitModelJson, SimulateReadsAModelSavedUnderAnyName) {
+  const fs::path dir = fs::temp_directory_path() / "rheomag_fit_model_any_name";
+  write_recording_files(damper_recording(0.05), dir);
+  const std::string cd = "cd '" + dir.string() + "' && '" + RHEOMAG_BINARY + "' ";
+  ASSERT_EQ(std::system((cd + "fit rec.csv --model bingham --json > model.out").c_str()), 0);
+  fs::copy_file(dir / "model.out", dir / "model.JSON");
+  fs::copy_file(dir / "model.out", dir / "model");
+  for (const std::string name : {"model.out", "model.JSON", "model"}) {
+    const std::string run =
+        cd + "simulate " + name + " --input rec.csv --out pred.csv > /dev/null 2> err.txt";
+    EXPECT_EQ(std::system(run.c_str()), 0) << name;
+    std::ifstream err(dir / "err.txt");
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(err), {}), "") << name;
+  }
   fs::remove_all(dir);
 }

@@ -153,6 +153,23 @@ TEST(IronCircuit, NewtonFailureThrowsConvergenceErrorWithTheResidual) {
   }
 }
 
+// A finite current whose load overflows (1e300 A x 400 turns): the message said "the residual
+// diverged after 0 iteration(s); relative residual reached -nan"; it now says what overflowed.
+TEST(IronCircuit, OverflowingSourceIsNamedNotNan) {
+  const test::PotCore core;
+  MagnetostaticSolver solver(test::pot_core_problem(test::aisi1010(), 400, 1e300, 1),
+                             test::pot_core_mesh(core, 1.0, 1));
+  try {
+    solver.solve();
+    FAIL() << "no ConvergenceError";
+  } catch (const ConvergenceError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "the source of the field equation is not a finite number: the circuit currents "
+              "(largest 1e+300 A) times the turns, a fixed current density or a magnet's "
+              "coercivity is beyond double arithmetic");
+  }
+}
+
 TEST(IronCircuit, DiscardedFactorisationSolvesLikeAFreshSolver) {
   // Reference: a newly constructed solver. After a solve at 0.05 A (which leaves a factorisation
   // behind), discard_factorisation() must make the 0.06 A solve bitwise the same as on a fresh

@@ -62,6 +62,16 @@ TEST(BadGeometry, DuplicatePoints) {
   EXPECT_ERROR(b.pslg, "points 2 and 4 coincide", "(1, 1)");
 }
 
+// A .fem point far from the rest (1e300, a unit typed wrong) makes the extent-relative merge
+// tolerance huge: distinct points of the model were said to "coincide" with no hint why.
+TEST(BadGeometry, FarPointNamesTheMergeTolerance) {
+  PslgBuilder b = square();
+  b.pslg.points.push_back({0.5, 1e300});
+  EXPECT_ERROR(b.pslg,
+               "coincide at (0, 0) (within 1e+291 m, the merge tolerance: 1e-9 of the "
+               "geometry's extent; a coordinate far from the rest makes it large)");
+}
+
 TEST(BadGeometry, ZeroLengthSegment) {
   PslgBuilder b = square();
   b.pslg.segments.push_back({3, 3, -1, 0.0});

@@ -13,23 +13,40 @@
 namespace rheomag::mesh {
 namespace {
 
-TEST(BadInput, MeshTooFineNamesTheSmallestSize) {
+/// The InputError message of meshing a 30 mm square region 'pot' of mesh size `size` [m], from
+/// "tiny.toml"; "no error" if it meshes.
+std::string too_fine_message(double size) {
   fixtures::PslgBuilder b;
   b.rectangle(0.0, 0.0, 0.03, 0.03);
-  b.region(0.015, 0.015, "pot", 1e-7);  // "mesh_size = 0.0001" in a case written in mm
+  b.region(0.015, 0.015, "pot", size);
   b.pslg.source = "tiny.toml";
   try {
     generate_mesh(b.pslg);
-    FAIL() << "no error";
   } catch (const InputError& e) {
-    const std::string message = e.what();
-    EXPECT_EQ(message.rfind("tiny.toml: the requested mesh sizes give about ", 0), 0u) << message;
-    EXPECT_NE(message.find("; expected larger mesh sizes (the smallest is 1e-07 m in region "
-                           "'pot')"),
-              std::string::npos)
-        << message;
-    EXPECT_EQ(message.find("metres"), std::string::npos) << message;
+    return e.what();
   }
+  return "no error";
+}
+
+TEST(BadInput, MeshTooFineNamesTheSmallestSize) {
+  const std::string message = too_fine_message(1e-7);  // "mesh_size = 0.0001" in a case in mm
+  EXPECT_EQ(message.rfind("tiny.toml: the requested mesh sizes give about ", 0), 0u) << message;
+  EXPECT_NE(message.find("; expected larger mesh sizes (the smallest is 1e-07 m in region "
+                         "'pot')"),
+            std::string::npos)
+      << message;
+  EXPECT_EQ(message.find("metres"), std::string::npos) << message;
+}
+
+// A size off by many orders of magnitude (1e-12 m: "mesh_size = 1e-9" in a case in mm) gives
+// more elements than a long holds: the message said "about -9223372036854775808 elements".
+// Estimate: 2 x area / (sqrt(3)/4 h^2) = 2 x 9e-4 / (0.4330 x 1e-24) = 4.16e21.
+TEST(BadInput, AbsurdlyFineMeshCountIsPrintedAsANumber) {
+  const std::string message = too_fine_message(1e-12);
+  EXPECT_NE(message.find("tiny.toml: the requested mesh sizes give about 4.16e+21 elements, more "
+                         "than the"),
+            std::string::npos)
+      << message;
 }
 
 }  // namespace

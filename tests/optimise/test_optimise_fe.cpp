@@ -178,6 +178,12 @@ TEST(OptimiseFe, BadInputIsAnInputErrorNamingTheKey) {
                                "lower = -1.0\nupper = 8.0\n")
                 .find("> 0"),
             std::string::npos);
+  // No on state: the coil model's message named no file or key.
+  EXPECT_NE(input_error("[optimise]\nflow = 1e-6\ncurrent = 0.0\n[[optimise.variable]]\n"
+                        "key = \"geometry.neck_radius\"\nlower = 8.0\nupper = 12.0\n")
+                .find("coarse_annular.toml:23: optimise.current: expected a non-zero on-state "
+                      "coil current (A), got 0"),
+            std::string::npos);
   // Unknown constraint quantity.
   EXPECT_NE(input_error(head + "[[optimise.variable]]\nkey = \"geometry.neck_radius\"\n"
                                "lower = 8.0\nupper = 12.0\n[[optimise.constraint]]\n"

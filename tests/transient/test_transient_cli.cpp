@@ -87,6 +87,38 @@ TEST(TransientCli, BadInputExitsWithTwo) {
   EXPECT_NE(out.find("conductivity"), std::string::npos) << out;
 }
 
+// A current step to the current it starts from ended with exit 3 and "relative residual reached
+// -nan"; 2e9 equal steps ran for hours (timeout). Both are refused before any solve.
+TEST(TransientCli, ZeroStepAndAbsurdStepCountExitWithTwo) {
+  std::string out;
+  const std::string pot = std::string(RHEOMAG_TEST_DATA) + "/pot_core_equivalent.toml";
+  EXPECT_EQ(run_cli(pot + " --current 1 --from 1 --duration 0.01 --quiet", out, true), 2) << out;
+  EXPECT_NE(out.find("pot_core_equivalent.toml: the current step goes from 1.000000 A to the "
+                     "same current; expected a different --current or --from"),
+            std::string::npos)
+      << out;
+  EXPECT_EQ(run_cli(pot + " --current 1 --duration 0.01 --steps 2000000000 --quiet", out, true), 2)
+      << out;
+  EXPECT_NE(out.find("steps must be in [0, 1000000] (0: adaptive), got 2000000000"),
+            std::string::npos)
+      << out;
+}
+
+// Two [[transient.region]] remedies for one region were accepted and one silently dropped.
+TEST(TransientCli, TwoRemediesForOneRegionExitWithTwo) {
+  std::string out;
+  const std::string twice =
+      case_with("annular_valve.toml",
+                "[[transient.region]]\nname = \"core\"\nmodel = \"solid\"\n"
+                "[[transient.region]]\nname = \"core\"\nmodel = \"laminated\"\nsize = 0.35\n",
+                "twice");
+  EXPECT_EQ(run_cli(twice + " --current 1 --duration 0.01 --quiet", out, true), 2) << out;
+  EXPECT_NE(out.find("transient.region[2].name: region 'core' already has a remedy; expected one "
+                     "[[transient.region]] per region"),
+            std::string::npos)
+      << out;
+}
+
 }  // namespace
 
 namespace {
