@@ -1,12 +1,15 @@
 #!/bin/bash
 # Installs the Debian 12 packages rheomag builds against (idempotent; needs root or sudo).
+# With --tests, also what only the test suite uses.
 set -euo pipefail
 pkgs=(build-essential cmake pkg-config git ca-certificates clang-format
   libeigen3-dev libsuitesparse-dev libcgal-dev libvtk9-dev
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
   libboost-dev libtet1.5-dev libmuparser-dev libopenblas0-pthread coinor-libipopt-dev libceres-dev libsvm-dev gnuplot-nox)
 pkgs+=(libopenmpi-dev openmpi-bin)  # rheomag sweep under mpirun (optional at build time)
-pkgs+=(chromium)  # headless screenshot test of the diagnosis report (skipped when absent)
+if [ "${1:-}" = --tests ]; then
+  pkgs+=(chromium)  # headless screenshot test of the diagnosis report (skipped when absent)
+fi
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

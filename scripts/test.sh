@@ -1,7 +1,9 @@
 #!/bin/bash
-# Builds rheomag and runs the whole test suite (CTest).
+# Builds everything (the executable, the tests, the benchmarks) and runs the whole test suite
+# (CTest).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+scripts/install-deps.sh --tests
 scripts/build.sh
 scripts/check-format.sh
 # Tests run two at a time on the two cores: keep BLAS/OpenMP single-threaded in each, or the
