@@ -1,6 +1,6 @@
 // rheomag optimise CASE: design optimisation of a case's valve with the FE in the loop (Ipopt,
 // central-difference gradients on a morphed fixed-topology mesh). Logic in
-// optimise/optimise_run.hpp; format of the [optimise] table in docs/optimisation.md.
+// optimise/run.hpp; format of the [optimise] table in docs/optimisation.md.
 
 #include <CLI/CLI.hpp>
 #include <cmath>
@@ -13,7 +13,7 @@
 #include "app/command.hpp"
 #include "app/progress_lines.hpp"
 #include "case/case_file.hpp"
-#include "optimise/optimise_run.hpp"
+#include "optimise/run.hpp"
 
 namespace {
 
@@ -30,12 +30,12 @@ nlohmann::json design_json(const rheomag::optimise::DesignReport& d,
   nlohmann::json variables = nlohmann::json::object();
   for (std::size_t i = 0; i < spec.variables.size(); ++i) variables[spec.variables[i].key] = d.x[i];
   nlohmann::json quantities = nlohmann::json::object();
-  for (rheomag::optimise::Quantity q : rheomag::optimise::all_quantities())
+  for (rheomag::design::Quantity q : rheomag::design::all_quantities())
     if (!std::isnan(d.quantities[q]))
-      quantities[rheomag::optimise::quantity_name(q)] = d.quantities[q];
+      quantities[rheomag::design::quantity_name(q)] = d.quantities[q];
   nlohmann::json constraints = nlohmann::json::array();
   for (const auto& s : d.constraints) {
-    nlohmann::json c = {{"quantity", rheomag::optimise::quantity_name(s.constraint.quantity)},
+    nlohmann::json c = {{"quantity", rheomag::design::quantity_name(s.constraint.quantity)},
                         {"value", s.value},
                         {"satisfied", s.satisfied},
                         {"active", s.active}};
@@ -94,7 +94,7 @@ int run_optimise(const OptimiseCli& o) {
                           {"design", design_json(p.design, r.spec)}});
       nlohmann::json files = nlohmann::json::array();
       for (const auto& f : r.pareto_files) files.push_back(f.string());
-      out["pareto"] = {{"quantity", rheomag::optimise::quantity_name(r.pareto->pareto.quantity)},
+      out["pareto"] = {{"quantity", rheomag::design::quantity_name(r.pareto->pareto.quantity)},
                        {"sense", r.pareto->pareto.maximise ? "maximise" : "minimise"},
                        {"points", points},
                        {"second_alone", design_json(r.pareto->second_alone, r.spec)},

@@ -9,14 +9,14 @@
 #include <string>
 
 #include "app/command.hpp"
-#include "optimise/sweep_mpi.hpp"
-#include "optimise/sweep_run.hpp"
-#include "optimise/sweep_spec.hpp"
-#include "optimise/sweep_valve_columns.hpp"
+#include "sweep/mpi.hpp"
+#include "sweep/run.hpp"
+#include "sweep/spec.hpp"
+#include "sweep/valve_columns.hpp"
 
 namespace {
 
-using namespace rheomag::optimise;
+using namespace rheomag::sweep;
 
 struct SweepCommandOptions {
   std::string sweep_path;

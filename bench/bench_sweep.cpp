@@ -14,13 +14,13 @@
 #include <filesystem>
 #include <string>
 
-#include "optimise/sweep_run.hpp"
-#include "optimise/sweep_spec.hpp"
-#include "optimise/sweep_valve_columns.hpp"
+#include "sweep/run.hpp"
+#include "sweep/spec.hpp"
+#include "sweep/valve_columns.hpp"
 
 namespace {
 
-using namespace rheomag::optimise;
+using namespace rheomag::sweep;
 
 std::string sweep_text(bool geometry) {
   const std::string base = std::string(RHEOMAG_SOURCE_DIR) + "/cases/annular_valve.toml";

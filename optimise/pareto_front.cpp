@@ -7,15 +7,15 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "optimise/optimise_problem.hpp"
+#include "optimise/problem.hpp"
 
 namespace rheomag::optimise {
 
 namespace {
 // SI unit of the quantity named `name` ("-" for a weighted sum).
 std::string unit_of(const std::string& name) {
-  const auto q = kQuantityNames.find(name);
-  return q ? std::string(quantity_unit(*q)) : "-";
+  const auto q = design::kQuantityNames.find(name);
+  return q ? std::string(design::quantity_unit(*q)) : "-";
 }
 
 // A CSV cell: empty for a quantity the design does not give.
@@ -26,7 +26,7 @@ std::string cell(double v) {
 
 OptimiseSpec second_objective_spec(const OptimiseSpec& spec) {
   OptimiseSpec second = spec;
-  second.objective = quantity_name(spec.pareto->quantity);
+  second.objective = design::quantity_name(spec.pareto->quantity);
   second.terms = {ObjectiveTerm{spec.pareto->quantity, 1.0, 1.0}};
   second.maximise = spec.pareto->maximise;
   second.pareto.reset();
@@ -38,7 +38,7 @@ ParetoFront pareto_front(const OptimiseSpec& spec, const DesignReport& objective
   ParetoFront front;
   front.pareto = *spec.pareto;
   front.objective_alone = objective_alone;
-  const Quantity name = front.pareto.quantity;
+  const design::Quantity name = front.pareto.quantity;
   const double first_level = quantity_value(objective_alone.quantities, name);
   const double scale = std::abs(first_level) > 0.0 ? std::abs(first_level) : 1.0;
   front.second_alone = optimise(second_objective_spec(spec), objective_alone.x, scale);
@@ -74,12 +74,12 @@ ParetoFront pareto_front(const OptimiseSpec& spec, const DesignReport& objective
 
 std::string pareto_csv(const OptimiseSpec& spec, const ParetoFront& front) {
   std::ostringstream out;
-  const std::string second = quantity_name(front.pareto.quantity);
+  const std::string second = design::quantity_name(front.pareto.quantity);
   out << "epsilon " << second << ",objective " << spec.objective << "," << second
       << ",feasible,fe_solves";
   for (const auto& v : spec.variables) out << "," << v.key;
-  for (Quantity q : all_quantities())
-    out << "," << quantity_name(q) << " [" << quantity_unit(q) << "]";
+  for (design::Quantity q : design::all_quantities())
+    out << "," << design::quantity_name(q) << " [" << design::quantity_unit(q) << "]";
   out << "\n";
   for (const auto& p : front.points) {
     const auto& q = p.design.quantities;
@@ -87,7 +87,7 @@ std::string pareto_csv(const OptimiseSpec& spec, const ParetoFront& front) {
         << cell(q[front.pareto.quantity]) << "," << (p.design.feasible ? 1 : 0) << ","
         << p.fe_solves;
     for (double x : p.design.x) out << "," << number_text(x);
-    for (Quantity k : all_quantities()) out << "," << cell(q[k]);
+    for (design::Quantity k : design::all_quantities()) out << "," << cell(q[k]);
     out << "\n";
   }
   return out.str();
@@ -104,7 +104,7 @@ std::vector<std::filesystem::path> write_pareto(const std::filesystem::path& dir
   // gnuplot writes the picture to the atomic writer's temporary file.
   const auto png = dir / "pareto.png";
   const auto script = dir / ("pareto.gp.tmp-" + std::to_string(::getpid()));
-  const std::string second = quantity_name(front.pareto.quantity);
+  const std::string second = design::quantity_name(front.pareto.quantity);
   try {
     write_file_atomically_with(png, [&](const std::filesystem::path& png_tmp) {
       std::ostringstream gp;

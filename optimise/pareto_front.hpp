@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "optimise/optimise_report.hpp"
-#include "optimise/optimise_spec.hpp"
+#include "optimise/report.hpp"
+#include "optimise/spec.hpp"
 
 namespace rheomag::optimise {
 

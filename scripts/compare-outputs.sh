@@ -25,6 +25,7 @@ mask() {
     -e '/"([a-z_]*seconds|elapsed[a-z_]*|time_s|solve_time[a-z_]*)"/d' \
     -e 's/, [0-9.]+ s$//' \
     -e 's/[0-9.]+ ?(s|ms) (wall|cpu|elapsed)//g' -e 's/(in|took) [0-9.]+ ?s\b//g' \
+    -e 's/[0-9.]+ s, [0-9.]+ designs\/min/TIME/' \
     -e '/(left|ETA|elapsed)/d' "$1"
 }
 

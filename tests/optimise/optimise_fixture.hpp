@@ -12,9 +12,9 @@
 
 #include "case/case_file.hpp"
 #include "core/error.hpp"
-#include "optimise/optimise_evaluate.hpp"
-#include "optimise/optimise_run.hpp"
-#include "optimise/optimise_spec.hpp"
+#include "optimise/evaluate.hpp"
+#include "optimise/run.hpp"
+#include "optimise/spec.hpp"
 
 namespace optimise_fixture {
 
@@ -122,11 +122,11 @@ struct MagneticCircuitValve {
   double l_max = 0.044, a = 5e-5, b = 1e-4;  // 44 mm envelope; 0.05 mm per turn; 0.1 ms/turn
   double gain() const { return 2.0 * c * k * mu0 * current / (h * h); }
   /// Quantities of design x = (pole length L [m], turns N).
-  optimise::Quantities quantities(const std::vector<double>& x) const {
-    optimise::Quantities q;
-    q[optimise::Quantity::dp_on] = gain() * x[0] * x[1];
-    q[optimise::Quantity::length] = 2.0 * x[0] + a * x[1];
-    q[optimise::Quantity::time_constant] = b * x[1];
+  design::Quantities quantities(const std::vector<double>& x) const {
+    design::Quantities q;
+    q[design::Quantity::dp_on] = gain() * x[0] * x[1];
+    q[design::Quantity::length] = 2.0 * x[0] + a * x[1];
+    q[design::Quantity::time_constant] = b * x[1];
     return q;
   }
   /// Spec: maximise dp_on over L in [1, 20] mm, N in [50, 800], length <= l_max.
@@ -134,10 +134,10 @@ struct MagneticCircuitValve {
     optimise::OptimiseSpec s;
     s.variables = {{"pole_length", {}, 1e-3, 20e-3, 5e-3}, {"turns", {}, 50.0, 800.0, 200.0}};
     optimise::Constraint envelope;
-    envelope.quantity = optimise::Quantity::length;
+    envelope.quantity = design::Quantity::length;
     envelope.upper = l_max;
     s.constraints = {envelope};
-    s.terms = {{optimise::Quantity::dp_on, 1.0, 1.0}};
+    s.terms = {{design::Quantity::dp_on, 1.0, 1.0}};
     s.tolerance = 1e-9;
     s.max_iterations = 200;
     return s;

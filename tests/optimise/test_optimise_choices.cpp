@@ -11,9 +11,9 @@
 
 #include "case/case_file.hpp"
 #include "core/error.hpp"
-#include "optimise/optimise_evaluate.hpp"
-#include "optimise/optimise_run.hpp"
-#include "optimise/optimise_spec.hpp"
+#include "optimise/evaluate.hpp"
+#include "optimise/run.hpp"
+#include "optimise/spec.hpp"
 #include "optimise_fixture.hpp"
 
 namespace {
@@ -65,7 +65,7 @@ TEST(OptimiseChoices, EnumerationPicksTheBestFeasibleCombination) {
   auto spec = optimise::read_optimise_spec(reloaded);
   spec.choices.clear();
   optimise::OptimiseEvaluator check(reloaded, spec);
-  const double dp = check.evaluate(r.optimal.x)[optimise::Quantity::dp_on];
+  const double dp = check.evaluate(r.optimal.x)[design::Quantity::dp_on];
   EXPECT_NEAR(dp, r.optimal.objective, 1e-9 * dp);
 }
 
@@ -83,7 +83,7 @@ TEST(OptimiseChoices, WeightedSumAndParetoAreReadAndChecked) {
                 "lower = 8.0\nupper = 12.0\n"));
   ASSERT_EQ(spec.terms.size(), 2u);
   EXPECT_EQ(spec.objective, "weighted_sum");
-  EXPECT_EQ(spec.terms[1].quantity, optimise::Quantity::power);
+  EXPECT_EQ(spec.terms[1].quantity, design::Quantity::power);
   EXPECT_EQ(spec.terms[1].weight, -0.5);
   ASSERT_TRUE(spec.pareto);
   EXPECT_EQ(spec.pareto->points, 4);
@@ -144,13 +144,13 @@ upper = 12.5
   const auto& points = r.pareto->points;
   ASSERT_EQ(points.size(), 3u);
   for (std::size_t k = 0; k < points.size(); ++k) {
-    const double tau = points[k].design.quantities[optimise::Quantity::time_constant];
+    const double tau = points[k].design.quantities[design::Quantity::time_constant];
     EXPECT_LE(tau, points[k].epsilon * (1.0 + optimise::kFeasibilityTolerance)) << k;
     if (k > 0) {
       EXPECT_LE(points[k].design.objective, points[k - 1].design.objective) << k;
     }
   }
-  const double tau_min = r.pareto->second_alone.quantities[optimise::Quantity::time_constant];
+  const double tau_min = r.pareto->second_alone.quantities[design::Quantity::time_constant];
   EXPECT_NEAR(points.back().epsilon, tau_min, 1e-12);
   ASSERT_FALSE(r.pareto_files.empty());
   std::ifstream csv(r.pareto_files[0]);

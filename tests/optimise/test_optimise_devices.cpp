@@ -13,14 +13,14 @@
 #include "case/case_file.hpp"
 #include "case/toml_section.hpp"
 #include "core/error.hpp"
-#include "optimise/optimise_evaluate.hpp"
-#include "optimise/optimise_spec.hpp"
+#include "optimise/evaluate.hpp"
+#include "optimise/spec.hpp"
 #include "optimise_fixture.hpp"
 #include "valve/brake.hpp"
 #include "valve/damper.hpp"
 
 using namespace rheomag;
-using optimise::Quantity;
+using design::Quantity;
 
 namespace {
 
@@ -43,7 +43,7 @@ cases::Case coarse_example(const std::string& name, int iterations, const std::s
   return cases::parse_case(text + extra, path);
 }
 
-optimise::Quantities start_quantities(const cases::Case& c) {
+design::Quantities start_quantities(const cases::Case& c) {
   optimise::OptimiseEvaluator evaluator(c, optimise::read_optimise_spec(c));
   std::vector<double> x;
   for (const auto& v : evaluator.spec().variables) x.push_back(v.initial);
@@ -62,12 +62,12 @@ TEST(OptimiseDevices, DamperQuantitiesAreTheDamperChains) {
   const auto points = chain.evaluate({1.0, 0.0}, {0.1});
   const auto& on = points[0];
   const auto& off = points[1];
-  EXPECT_NEAR(q[Quantity::force_on], on.force, 1e-6 * on.force);
-  EXPECT_NEAR(q[Quantity::force_off], off.force, 1e-9 * off.force);
+  EXPECT_NEAR(q[design::Quantity::force_on], on.force, 1e-6 * on.force);
+  EXPECT_NEAR(q[design::Quantity::force_off], off.force, 1e-9 * off.force);
   const double range = (on.force - on.force_gas) / (off.force - off.force_gas);
-  EXPECT_NEAR(q[Quantity::force_range], range, 1e-6 * range);
-  EXPECT_GT(q[Quantity::force_range], 5.0);
-  EXPECT_FALSE(q.has(Quantity::dp_on));  // no [optimise] flow: no valve quantities
+  EXPECT_NEAR(q[design::Quantity::force_range], range, 1e-6 * range);
+  EXPECT_GT(q[design::Quantity::force_range], 5.0);
+  EXPECT_FALSE(q.has(design::Quantity::dp_on));  // no [optimise] flow: no valve quantities
 }
 
 // Reference: valve::BrakeChain (what `rheomag brake` prints) at 1 A, 50 rad/s (1e-6); at zero
@@ -80,13 +80,13 @@ TEST(OptimiseDevices, BrakeQuantitiesAreTheBrakeChainsAndClosedForms) {
   const auto q = start_quantities(c);
   valve::BrakeChain chain(c, valve::read_brake_options(c));
   const auto on = chain.evaluate({1.0}, {50.0}).front();
-  EXPECT_NEAR(q[Quantity::torque_on], on.torque.torque, 1e-6 * on.torque.torque);
+  EXPECT_NEAR(q[design::Quantity::torque_on], on.torque.torque, 1e-6 * on.torque.torque);
   const double tau = chain.fluid().yield_stress(0.0), mu = chain.fluid().viscosity;
   const double ri = 0.008, ro = 0.040, h = 0.001, w = 50.0;
   const double off = 2.0 * 2.0 * kPi *
                      (tau * (std::pow(ro, 3) - std::pow(ri, 3)) / 3.0 +
                       mu * w * (std::pow(ro, 4) - std::pow(ri, 4)) / (4.0 * h));
-  EXPECT_NEAR(q[Quantity::torque_off], off, 1e-9 * off);
+  EXPECT_NEAR(q[design::Quantity::torque_off], off, 1e-9 * off);
 
   // disc_brake of cases/optimise_brake.toml: shaft 8, disc 40 x 3, gaps 1, rim clearance 2,
   // coil depth 12, plates 5.5, ring 6 (mm).
@@ -99,8 +99,9 @@ TEST(OptimiseDevices, BrakeQuantitiesAreTheBrakeChainsAndClosedForms) {
                       fluid * 2.0 * ring(rs, rd, zg - t2) + fluid * ring(rd, rci, 2 * zg) +
                       copper * ring(rci, rco, 2 * zg) + steel * 2.0 * ring(rs, rco, zp - zg) +
                       steel * ring(rco, rr, 2 * zp);
-  EXPECT_NEAR(q[Quantity::mass], mass, 1e-9 * mass);
-  EXPECT_NEAR(q[Quantity::torque_per_mass], q[Quantity::torque_on] / mass, 1e-9 * on.torque.torque);
+  EXPECT_NEAR(q[design::Quantity::mass], mass, 1e-9 * mass);
+  EXPECT_NEAR(q[design::Quantity::torque_per_mass], q[design::Quantity::torque_on] / mass,
+              1e-9 * on.torque.torque);
 }
 
 // A short run (6 Ipopt iterations, coarse mesh) of each bundled example: the optimum is feasible

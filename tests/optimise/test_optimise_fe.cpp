@@ -16,9 +16,9 @@
 
 #include "case/case_file.hpp"
 #include "core/error.hpp"
-#include "optimise/optimise_evaluate.hpp"
-#include "optimise/optimise_run.hpp"
-#include "optimise/optimise_spec.hpp"
+#include "optimise/evaluate.hpp"
+#include "optimise/run.hpp"
+#include "optimise/spec.hpp"
 #include "optimise_fixture.hpp"
 
 namespace {
@@ -40,8 +40,8 @@ TEST(OptimiseFe, GradientIsConsistentAcrossStepSizesOnTheMorphedMesh) {
   const double r0 = 10.5, p0 = 5.0;
   std::vector<double> slopes;
   for (double h : {0.2, 0.05, 0.0125}) {
-    const double up = evaluator.evaluate({r0 + h, p0})[optimise::Quantity::dp_on];
-    const double down = evaluator.evaluate({r0 - h, p0})[optimise::Quantity::dp_on];
+    const double up = evaluator.evaluate({r0 + h, p0})[design::Quantity::dp_on];
+    const double down = evaluator.evaluate({r0 - h, p0})[design::Quantity::dp_on];
     slopes.push_back((up - down) / (2.0 * h));
   }
   EXPECT_EQ(evaluator.meshes(), 1);
@@ -74,11 +74,11 @@ TEST(OptimiseFe, WrittenOptimumRespectsEveryConstraint) {
     const double value = q[k.quantity];
     if (std::isfinite(k.upper)) {
       EXPECT_LE(value, k.upper * (1.0 + optimise::kFeasibilityTolerance))
-          << optimise::quantity_name(k.quantity);
+          << design::quantity_name(k.quantity);
     }
     if (std::isfinite(k.lower)) {
       EXPECT_GE(value, k.lower * (1.0 - optimise::kFeasibilityTolerance))
-          << optimise::quantity_name(k.quantity);
+          << design::quantity_name(k.quantity);
     }
   }
 }
@@ -107,7 +107,7 @@ TEST(OptimiseFe, OptimumBeatsTheBestOfADenseGridAtFewerSolves) {
       grid.remesh_next();
       const auto q = grid.evaluate({x0, x1});
       if (optimise::report_design(s, {x0, x1}, q).feasible)
-        best = std::max(best, q[optimise::Quantity::dp_on]);
+        best = std::max(best, q[design::Quantity::dp_on]);
     }
   ASSERT_TRUE(std::isfinite(best));
   EXPECT_GE(r.optimal.objective, best * (1.0 - 0.005)) << r.optimal.objective << " vs " << best;
@@ -133,7 +133,7 @@ upper = 700
   EXPECT_EQ(turns, std::round(turns));
   const auto reloaded = cases::load_case(r.case_file);
   EXPECT_EQ(reloaded.table["geometry"]["turns"].value<double>().value_or(-1.0), turns);
-  EXPECT_LE(r.optimal.quantities[optimise::Quantity::time_constant],
+  EXPECT_LE(r.optimal.quantities[design::Quantity::time_constant],
             0.05 * (1.0 + optimise::kFeasibilityTolerance));
 }
 

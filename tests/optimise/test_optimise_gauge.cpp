@@ -9,7 +9,7 @@
 #include "case/case_file.hpp"
 #include "case/case_key.hpp"
 #include "case/wire_gauge.hpp"
-#include "optimise/optimise_evaluate.hpp"
+#include "optimise/evaluate.hpp"
 #include "optimise_fixture.hpp"
 
 namespace {
@@ -67,12 +67,12 @@ max = 2.0
   auto spec = optimise::read_optimise_spec(reloaded);
   optimise::OptimiseEvaluator check(reloaded, spec);
   check.exact_winding(true);
-  EXPECT_LE(check.evaluate({n})[optimise::Quantity::power],
+  EXPECT_LE(check.evaluate({n})[design::Quantity::power],
             2.0 * (1.0 + optimise::kFeasibilityTolerance));
-  EXPECT_GT(check.evaluate({n + 1.0})[optimise::Quantity::power],
+  EXPECT_GT(check.evaluate({n + 1.0})[design::Quantity::power],
             2.0 * (1.0 + optimise::kFeasibilityTolerance));
   std::printf("gauge optimum AWG %g: dp_on %.6g Pa, power %.4g W, %d FE solves\n", n,
-              r.optimal.objective, r.optimal.quantities[optimise::Quantity::power], r.fe_solves);
+              r.optimal.objective, r.optimal.quantities[design::Quantity::power], r.fe_solves);
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <vector>
 
-#include "optimise/optimise_ipopt.hpp"
+#include "optimise/ipopt.hpp"
 #include "optimise_fixture.hpp"
 
 namespace {

@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "optimise/optimise_problem.hpp"
-#include "optimise/optimise_report.hpp"
 #include "optimise/pareto_front.hpp"
+#include "optimise/problem.hpp"
+#include "optimise/report.hpp"
 #include "optimise_fixture.hpp"
 
 namespace {
@@ -46,8 +46,8 @@ TEST(OptimisePareto, WeightedSumReachesTheAnalyticOptimum) {
   const std::vector<double> x0 = {5e-3, 200.0};
   const auto q0 = m.quantities(x0);
   const double w = 1.0;
-  spec.terms = {{optimise::Quantity::dp_on, 1.0, q0[optimise::Quantity::dp_on]},
-                {optimise::Quantity::time_constant, -w, q0[optimise::Quantity::time_constant]}};
+  spec.terms = {{design::Quantity::dp_on, 1.0, q0[design::Quantity::dp_on]},
+                {design::Quantity::time_constant, -w, q0[design::Quantity::time_constant]}};
   spec.objective = "weighted_sum";
   const auto r = optimiser(spec, x0, 1.0);
   const double n_star = (m.l_max - 2.0 * w * x0[0]) / (2.0 * m.a);
@@ -55,7 +55,7 @@ TEST(OptimisePareto, WeightedSumReachesTheAnalyticOptimum) {
   EXPECT_NEAR(r.x[1], n_star, 1e-4 * n_star);
   EXPECT_NEAR(r.x[0], l_star, 1e-4 * l_star);
   const double f_star =
-      m.gain() * l_star * n_star / q0[optimise::Quantity::dp_on] - w * n_star / x0[1];
+      m.gain() * l_star * n_star / q0[design::Quantity::dp_on] - w * n_star / x0[1];
   EXPECT_NEAR(r.objective, f_star, 1e-6 * std::abs(f_star));
 }
 
@@ -69,9 +69,9 @@ TEST(OptimisePareto, EpsilonConstraintFrontMatchesTheAnalyticFront) {
   const auto& m = optimiser.model;
   auto spec = m.spec();
   spec.variables[0].upper = 30e-3;
-  spec.pareto = optimise::ParetoSpec{optimise::Quantity::time_constant, false, 6};
+  spec.pareto = optimise::ParetoSpec{design::Quantity::time_constant, false, 6};
   const std::vector<double> x0 = {5e-3, 200.0};
-  const auto alone = optimiser(spec, x0, std::abs(m.quantities(x0)[optimise::Quantity::dp_on]));
+  const auto alone = optimiser(spec, x0, std::abs(m.quantities(x0)[design::Quantity::dp_on]));
   const double n_star = m.l_max / (2.0 * m.a);
   ASSERT_NEAR(alone.x[1], n_star, 1e-4 * n_star);
 
@@ -86,7 +86,7 @@ TEST(OptimisePareto, EpsilonConstraintFrontMatchesTheAnalyticFront) {
   const auto front = optimise::pareto_front(spec, alone, from, [&] { return solves; });
   ASSERT_EQ(front.points.size(), 6u);
   const double tau_min = m.b * spec.variables[1].lower;
-  EXPECT_NEAR(front.second_alone.quantities[optimise::Quantity::time_constant], tau_min,
+  EXPECT_NEAR(front.second_alone.quantities[design::Quantity::time_constant], tau_min,
               1e-4 * tau_min);
   EXPECT_NEAR(front.points.front().epsilon, m.b * n_star, 1e-4 * m.b * n_star);
   EXPECT_NEAR(front.points.back().epsilon, tau_min, 1e-4 * tau_min);
@@ -96,8 +96,7 @@ TEST(OptimisePareto, EpsilonConstraintFrontMatchesTheAnalyticFront) {
     const double dp = m.gain() * n * (m.l_max - m.a * n) / 2.0;
     EXPECT_TRUE(p.design.feasible) << k;
     EXPECT_NEAR(p.design.objective, dp, 1e-4 * dp) << "level " << k;
-    EXPECT_LE(p.design.quantities[optimise::Quantity::time_constant], p.epsilon * (1.0 + 1e-6))
-        << k;
+    EXPECT_LE(p.design.quantities[design::Quantity::time_constant], p.epsilon * (1.0 + 1e-6)) << k;
     if (k > 0) {
       EXPECT_LT(p.design.objective, front.points[k - 1].design.objective) << k;
       EXPECT_GT(p.fe_solves, 0) << k;

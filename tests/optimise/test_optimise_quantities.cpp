@@ -10,8 +10,8 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "optimise/optimise_evaluate.hpp"
-#include "optimise/optimise_spec.hpp"
+#include "optimise/evaluate.hpp"
+#include "optimise/spec.hpp"
 #include "optimise_fixture.hpp"
 
 namespace {
@@ -29,8 +29,8 @@ std::string optimise_table(const std::string& extra) {
 TEST(OptimiseQuantities, MinimumWallIsTheThinnestSteelWall) {
   const auto c = make_case(optimise_table(""));
   optimise::OptimiseEvaluator e(c, optimise::read_optimise_spec(c));
-  EXPECT_DOUBLE_EQ(e.evaluate({3.0})[optimise::Quantity::min_wall], 3e-3);
-  EXPECT_DOUBLE_EQ(e.evaluate({7.0})[optimise::Quantity::min_wall], 5e-3);
+  EXPECT_DOUBLE_EQ(e.evaluate({3.0})[design::Quantity::min_wall], 3e-3);
+  EXPECT_DOUBLE_EQ(e.evaluate({7.0})[design::Quantity::min_wall], 5e-3);
 }
 
 // temperature_rise = P / (h A), A = 2 pi r_c l_c the coil's outer cylinder: r_c = gap_radius -
@@ -42,12 +42,12 @@ TEST(OptimiseQuantities, TemperatureRiseIsPowerOverSurfaceConductance) {
   optimise::OptimiseEvaluator e(c, optimise::read_optimise_spec(c));
   const auto q = e.evaluate({5.0});
   const double area = 2.0 * std::numbers::pi * 18.5e-3 * 32e-3;
-  EXPECT_NEAR(q[optimise::Quantity::temperature_rise], q[optimise::Quantity::power] / (10.0 * area),
-              1e-9 * q[optimise::Quantity::temperature_rise]);
+  EXPECT_NEAR(q[design::Quantity::temperature_rise], q[design::Quantity::power] / (10.0 * area),
+              1e-9 * q[design::Quantity::temperature_rise]);
   const auto c2 = make_case(optimise_table("thermal_resistance = 4.0\n"));
   optimise::OptimiseEvaluator e2(c2, optimise::read_optimise_spec(c2));
   const auto q2 = e2.evaluate({5.0});
-  EXPECT_NEAR(q2[optimise::Quantity::temperature_rise], 4.0 * q2[optimise::Quantity::power], 1e-12);
+  EXPECT_NEAR(q2[design::Quantity::temperature_rise], 4.0 * q2[design::Quantity::power], 1e-12);
 }
 
 // 90 % rise time after a voltage step V on R and lambda(i). Reference: for a linear inductor
@@ -59,7 +59,7 @@ TEST(OptimiseQuantities, RiseTimeMatchesTheLinearRlLimitAndShortensWithSaturatio
   const auto probe = make_case(optimise_table("current = 0.05\n"));
   optimise::OptimiseEvaluator p(probe, optimise::read_optimise_spec(probe));
   const auto q0 = p.evaluate({5.0});
-  const double r = q0[optimise::Quantity::resistance], l = q0[optimise::Quantity::inductance];
+  const double r = q0[design::Quantity::resistance], l = q0[design::Quantity::inductance];
   auto rise = [&](double final_current) {
     const auto c = make_case(
         optimise_table("current = 0.05\nsupply_voltage = " + std::to_string(final_current * r) +
@@ -67,7 +67,7 @@ TEST(OptimiseQuantities, RiseTimeMatchesTheLinearRlLimitAndShortensWithSaturatio
     optimise::OptimiseEvaluator e(c, optimise::read_optimise_spec(c));
     const auto q = e.evaluate({5.0});
     EXPECT_EQ(e.fe_solves(), 5);  // the operating point + 4 lambda(i) samples
-    return q[optimise::Quantity::rise_time];
+    return q[design::Quantity::rise_time];
   };
   const double linear = std::log(10.0) * l / r;
   const double small = rise(0.05), saturated = rise(3.0);

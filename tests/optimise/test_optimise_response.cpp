@@ -8,14 +8,14 @@
 #include <cstdio>
 #include <string>
 
-#include "optimise/optimise_evaluate.hpp"
-#include "optimise/optimise_spec.hpp"
+#include "optimise/evaluate.hpp"
+#include "optimise/spec.hpp"
 #include "optimise_fixture.hpp"
 
 namespace {
 
 using namespace rheomag;
-using optimise::Quantity;
+using design::Quantity;
 using optimise_fixture::make_case;
 
 std::string optimise_table(const std::string& extra) {
@@ -43,7 +43,7 @@ TEST(OptimiseResponseTime, IsTheRlRiseWithoutEddyCurrentsAndSlowerWithThem) {
   const auto probe = make_case(optimise_table("current = 0.05\n"));
   optimise::OptimiseEvaluator p(probe, optimise::read_optimise_spec(probe));
   const auto q0 = p.evaluate({5.0});
-  const double r = q0[Quantity::resistance], l = q0[Quantity::inductance];
+  const double r = q0[design::Quantity::resistance], l = q0[design::Quantity::inductance];
   const double linear = std::log(10.0) * l / r;
   auto response = [&](const std::string& transient) {
     const auto c =
@@ -52,7 +52,7 @@ TEST(OptimiseResponseTime, IsTheRlRiseWithoutEddyCurrentsAndSlowerWithThem) {
                                  "\"response_time\"\nmax = 10.0\n") +
                   transient);
     optimise::OptimiseEvaluator e(c, optimise::read_optimise_spec(c));
-    return e.evaluate({5.0})[Quantity::response_time];
+    return e.evaluate({5.0})[design::Quantity::response_time];
   };
   const double without = response(kNoEddyCurrents), with = response("");
   std::printf("response time: ln(10) L/R %.5g s; no eddy currents %.5g s; as drawn %.5g s\n",
@@ -73,7 +73,7 @@ TEST(OptimiseResponseTime, ShortRunRespectsTheConstraint) {
                                "[[optimise.constraint]]\nquantity = \"response_time\"\n"
                                "max = 10.0\n");
   optimise::OptimiseEvaluator p(probe, optimise::read_optimise_spec(probe));
-  const double initial = p.evaluate({5.0})[Quantity::response_time];
+  const double initial = p.evaluate({5.0})[design::Quantity::response_time];
   const double limit = 0.9 * initial;
   const auto c = make_case(base + "[[optimise.constraint]]\nquantity = \"response_time\"\nmax = " +
                            std::to_string(limit) + "\n");
@@ -82,13 +82,13 @@ TEST(OptimiseResponseTime, ShortRunRespectsTheConstraint) {
   std::printf(
       "response time: initial %.5g s, limit %.5g s, optimum %.5g s at pole length %.4g mm "
       "(%d FE solves)\n",
-      initial, limit, result.optimal.quantities[Quantity::response_time], result.optimal.x[0],
-      result.fe_solves);
+      initial, limit, result.optimal.quantities[design::Quantity::response_time],
+      result.optimal.x[0], result.fe_solves);
   ASSERT_TRUE(result.optimal.feasible) << optimise::format_summary(result);
   const auto reloaded = cases::load_case(result.case_file);
   const auto spec = optimise::read_optimise_spec(reloaded);
   optimise::OptimiseEvaluator check(reloaded, spec);
-  const double value = check.evaluate({spec.variables[0].initial})[Quantity::response_time];
+  const double value = check.evaluate({spec.variables[0].initial})[design::Quantity::response_time];
   EXPECT_LE(value, limit * (1.0 + optimise::kFeasibilityTolerance));
 }
 

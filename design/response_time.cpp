@@ -1,0 +1,54 @@
+#include "design/response_time.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+#include "transient/case_options.hpp"
+#include "transient/transient_solver.hpp"
+
+namespace rheomag::design {
+
+ResponseTime response_time(magnetostatics::MagnetostaticSolver& statics, const cases::Case& c,
+                           const ResponseTimeOptions& options) {
+  const std::string where = c.source.string();
+  if (!(options.supply_voltage > 0.0) || !(options.resistance > 0.0) ||
+      !(options.time_constant > 0.0) || options.steps < 1 || !(options.span_factor > 0.0))
+    throw InputError(where + ": response_time needs supply_voltage > 0, a coil resistance and L/R");
+  transient::TransientSolver solver(
+      statics,
+      transient::eddy_coefficients(statics.problem(), transient::read_transient_case(c).remedies));
+  ResponseTime out;
+  auto slowest_gap_t90 = [&](double from_current, double voltage) {
+    double span = options.span_factor * options.time_constant;
+    for (int attempt = 0; attempt < 4; ++attempt, span *= 2.0) {
+      transient::TransientOptions o;
+      o.drive = transient::Drive::voltage;
+      o.from_current = from_current;
+      o.value = voltage;
+      o.resistance = options.resistance;
+      o.duration = span;
+      o.steps = options.steps;
+      const transient::TransientResult r = solver.run(o);
+      ++out.transient_runs;
+      double slowest = 0.0;
+      bool reached = !r.gaps.empty();
+      for (const transient::GapSeries& g : r.gaps) {
+        if (!g.t90)
+          reached = false;
+        else
+          slowest = std::max(slowest, *g.t90);
+      }
+      if (reached) return slowest;
+    }
+    throw ConvergenceError(where + ": response_time: the gaps' mean |B| did not reach 90 % of " +
+                           "its change within " + std::to_string(span / 2.0) + " s");
+  };
+  const double final_current = options.supply_voltage / options.resistance;
+  out.on = slowest_gap_t90(0.0, options.supply_voltage);
+  out.off = slowest_gap_t90(final_current, 0.0);
+  return out;
+}
+
+}  // namespace rheomag::design

@@ -1,0 +1,41 @@
+#pragma once
+// One evaluated design judged against an [optimise] spec: objective, constraint status and
+// activity, variables at their bounds.
+
+#include <string>
+#include <vector>
+
+#include "optimise/spec.hpp"
+
+namespace rheomag::optimise {
+
+/// One constraint at one design.
+struct ConstraintStatus {
+  Constraint constraint;
+  double value = 0.0;
+  bool satisfied = true;  ///< within the bounds up to the feasibility tolerance
+  bool active = false;    ///< within 1 % of a bound (the bound limits the design)
+};
+
+/// One design with its quantities.
+struct DesignReport {
+  std::vector<double> x;  ///< design values (file units), in spec.variables order
+  design::Quantities quantities;
+  double objective = 0.0;  ///< the objective (SI; a weighted sum is dimensionless)
+  bool feasible = true;
+  std::vector<ConstraintStatus> constraints;
+  std::vector<std::string> variables_at_bounds;  ///< keys at a bound (within 0.1 % of the range)
+};
+
+/// Feasibility tolerance: a constraint may be exceeded by this fraction of its bound.
+inline constexpr double kFeasibilityTolerance = 1e-3;
+
+/// Reports one design's constraints against the spec.
+DesignReport report_design(const OptimiseSpec& spec, const std::vector<double>& x,
+                           const design::Quantities& quantities);
+
+/// True if `a` is a better design than `b`: feasible before infeasible, then by the objective
+/// in the spec's sense.
+bool better_design(const DesignReport& a, const DesignReport& b, bool maximise);
+
+}  // namespace rheomag::optimise
