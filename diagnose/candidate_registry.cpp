@@ -51,7 +51,8 @@ std::vector<const Candidate*> ordered(bool fitted) {
     return fitted ? a.fitted_rank < b.fitted_rank : a.sidecar_rank < b.sidecar_rank;
   });
   std::vector<const Candidate*> out;
-  for (const auto& x : r) out.push_back(x.candidate);
+  for (const auto& x : r)
+    if (!fitted || x.fitted_rank > 0) out.push_back(x.candidate);
   return out;
 }
 

@@ -12,9 +12,9 @@ namespace rheomag::diagnose {
 /// Every registered candidate, in registration order.
 const std::vector<const Candidate*>& registered_candidates();
 
-/// Every registered candidate in the order it is tried on a sidecar baseline (`fitted` false) or
-/// on a fitted-model baseline (`fitted` true); forward selection keeps this order among equally
-/// good fits, so it decides ties.
+/// The registered candidates in the order they are tried on a sidecar baseline (`fitted` false:
+/// all of them) or on a fitted-model baseline (`fitted` true: those ranked there); forward
+/// selection keeps this order among equally good fits, so it decides ties.
 const std::vector<const Candidate*>& candidates_in_trial_order(bool fitted);
 
 /// The registered candidates that apply to `model` (Candidate::applies), in trial order.

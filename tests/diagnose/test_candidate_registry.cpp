@@ -44,9 +44,7 @@ TEST(CandidateRegistry, TrialOrderOfEachBaseline) {
                                       "mr_response_time", "eddy_currents", "magnetic_hysteresis",
                                       "coil_inductance", "coil_heating", "friction"}));
   // On a fitted model: the blocks on its inputs, then those on its output.
-  auto fitted = names(candidates_in_trial_order(true));
-  fitted.resize(6);
-  EXPECT_EQ(fitted,
+  EXPECT_EQ(names(candidates_in_trial_order(true)),
             (std::vector<std::string>{"mr_response_time", "eddy_currents", "magnetic_hysteresis",
                                       "coil_inductance", "fluid_inertia", "friction"}));
 }
