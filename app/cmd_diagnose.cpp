@@ -63,7 +63,7 @@ void print_summary(const diagnose::Diagnosis& d) {
               << " % of residual (" << w.regime << ")\n";
   if (d.findings.empty()) std::cout << "missing physics: none\n";
   for (const auto& f : d.findings) {
-    std::cout << "missing physics: " << diagnose::effect_name(f.effect);
+    std::cout << "missing physics: " << f.effect->name();
     for (std::size_t j = 0; j < f.params.size(); ++j) {
       std::cout << "  " << f.param_names[j] << " = " << f.params[j];
       // A standard error is infinite (or unknown) where the parameter is not identified.
@@ -75,7 +75,7 @@ void print_summary(const diagnose::Diagnosis& d) {
     std::cout << "  (FIT " << f.fit_percent << " %)\n    " << f.evidence << "\n";
     if (!f.ambiguous_with.empty()) {
       std::cout << "    equally well explained by:";
-      for (auto a : f.ambiguous_with) std::cout << ' ' << diagnose::effect_name(a);
+      for (auto a : f.ambiguous_with) std::cout << ' ' << a->name();
       std::cout << "\n    to separate them: " << f.separating_measurement << "\n";
     }
   }

@@ -56,7 +56,7 @@ void BM_Diagnose(benchmark::State& state) {
     cpu += cpu_seconds() - c0;
     fit = d.final_fit_percent;
     named.clear();
-    for (const auto& f : d.findings) named += diagnose::effect_name(f.effect) + " ";
+    for (const auto& f : d.findings) named += f.effect->name() + " ";
   }
   state.counters["cpu_s"] = cpu / static_cast<double>(state.iterations());
   state.counters["final_fit"] = fit;

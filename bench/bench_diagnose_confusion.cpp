@@ -39,6 +39,7 @@
 
 #include <Eigen/Dense>
 
+#include "diagnose/candidates/magnetic_hysteresis.hpp"
 #include "diagnose/diagnose_run.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording.hpp"
@@ -48,7 +49,6 @@
 namespace {
 
 using namespace rheomag;
-using diagnose::Effect;
 using lumped::DriverMode;
 using lumped::RigKind;
 
@@ -595,8 +595,8 @@ Outcome run(const Draw& drawn, unsigned seed, bool visible,
       std::ostringstream notes;
       notes << "  notes " << draw.truth << " #" << draw.index << ":";
       for (const auto& c : d.candidates)
-        notes << " [" << c.step + 1 << " " << diagnose::effect_name(c.effect) << " dBIC "
-              << fmt(c.delta_bic) << (c.screened ? " screened" : "") << "]";
+        notes << " [" << c.step + 1 << " " << c.effect->name() << " dBIC " << fmt(c.delta_bic)
+              << (c.screened ? " screened" : "") << "]";
       for (const auto& n : d.notes) notes << "\n    " << n;
       o.notes = notes.str();
     }
@@ -608,19 +608,18 @@ Outcome run(const Draw& drawn, unsigned seed, bool visible,
       o.named = "none";
     } else {
       const auto& f = d.findings.front();
-      o.named = diagnose::effect_name(f.effect);
+      o.named = f.effect->name();
       o.ambiguous = !f.ambiguous_with.empty();
       o.truth_in_ambiguous =
           std::find(draw.effects.begin(), draw.effects.end(), o.named) != draw.effects.end();
-      for (Effect a : f.ambiguous_with)
-        if (std::find(draw.effects.begin(), draw.effects.end(), diagnose::effect_name(a)) !=
-            draw.effects.end())
+      for (const diagnose::Candidate* a : f.ambiguous_with)
+        if (std::find(draw.effects.begin(), draw.effects.end(), a->name()) != draw.effects.end())
           o.truth_in_ambiguous = true;
       for (const auto& g : d.findings) {
-        o.all_named += (o.all_named.empty() ? "" : "+") + diagnose::effect_name(g.effect) + "(" +
+        o.all_named += (o.all_named.empty() ? "" : "+") + g.effect->name() + "(" +
                        fmt(g.params.front()) +
                        (g.params.size() > 1 ? "," + fmt(g.params[1]) : std::string()) + ")";
-        named_classes.push_back(effect_class(diagnose::effect_name(g.effect)));
+        named_classes.push_back(effect_class(g.effect->name()));
       }
     }
     o.right = true;

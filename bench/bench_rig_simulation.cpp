@@ -13,6 +13,7 @@
 #include <cmath>
 #include <string>
 
+#include "diagnose/candidate_registry.hpp"
 #include "diagnose/diagnose_model.hpp"
 #include "lumped/recording_excerpt.hpp"
 #include "lumped/recording_io.hpp"
@@ -38,9 +39,12 @@ void BM_DykeSimulation(benchmark::State& state) {
   const int effect = static_cast<int>(state.range(1));
   const auto rec = lumped::excerpt(dyke_recording(), {0, samples});
   const diagnose::DiagnosisModel model(rec);
-  std::vector<diagnose::Effect> effects;
-  if (effect >= 0) effects.push_back(static_cast<diagnose::Effect>(effect));
-  if (effect == -2) effects = {diagnose::Effect::compressibility, diagnose::Effect::fluid_inertia};
+  std::vector<const diagnose::Candidate*> effects;
+  if (effect >= 0)
+    effects.push_back(diagnose::registered_candidates().at(static_cast<std::size_t>(effect)));
+  if (effect == -2)
+    effects = {&diagnose::candidate_named("compressibility"),
+               &diagnose::candidate_named("fluid_inertia")};
   std::vector<double> values;
   for (const auto& p : model.layout(effects)) values.push_back(p.nominal);
   auto spec = model.spec(effects, values);
@@ -59,7 +63,7 @@ void BM_DykeSimulation(benchmark::State& state) {
   state.counters["rms_diff_rel"] = std::sqrt(rms_diff / rms);
   state.counters["max_diff_rel"] = diff / std::sqrt(rms / static_cast<double>(y.size()));
   std::string label = effects.empty() ? "baseline" : "";
-  for (auto e : effects) label += (label.empty() ? "" : "+") + diagnose::effect_name(e);
+  for (auto e : effects) label += (label.empty() ? "" : "+") + e->name();
   state.SetLabel(label);
 }
 BENCHMARK(BM_DykeSimulation)

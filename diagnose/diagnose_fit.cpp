@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "core/error.hpp"
+#include "diagnose/candidate.hpp"
 
 namespace rheomag::diagnose {
 
@@ -28,7 +29,7 @@ double to_value(const ParamDef& d, double z) {
 /// parameter block holds the free parameters (internal units); held ones keep their start value.
 class SimulationCost : public ceres::CostFunction {
  public:
-  SimulationCost(const DiagnosisModel& model, const std::vector<Effect>& effects,
+  SimulationCost(const DiagnosisModel& model, const std::vector<const Candidate*>& effects,
                  const std::vector<ParamDef>& layout, const std::vector<bool>& mask, double scale,
                  int threads, std::vector<std::size_t> free, std::vector<double> start)
       : model_(model),
@@ -106,7 +107,7 @@ class SimulationCost : public ceres::CostFunction {
 
  private:
   const DiagnosisModel& model_;
-  std::vector<Effect> effects_;
+  std::vector<const Candidate*> effects_;
   std::vector<ParamDef> layout_;
   std::vector<std::size_t> free_;  ///< layout indices of the free parameters
   std::vector<double> start_;      ///< internal values of all parameters (held ones used)
@@ -134,7 +135,7 @@ double masked_sse(const std::vector<double>& measured, const std::vector<double>
   return s;
 }
 
-ModelFit fit_model(const DiagnosisModel& model, const std::vector<Effect>& effects,
+ModelFit fit_model(const DiagnosisModel& model, const std::vector<const Candidate*>& effects,
                    const std::vector<double>& start, const FitSettings& settings) {
   ModelFit fit;
   fit.effects = effects;
@@ -248,7 +249,8 @@ ModelFit fit_model(const DiagnosisModel& model, const std::vector<Effect>& effec
   return fit;
 }
 
-std::vector<double> grid_search(const DiagnosisModel& model, const std::vector<Effect>& effects,
+std::vector<double> grid_search(const DiagnosisModel& model,
+                                const std::vector<const Candidate*>& effects,
                                 std::vector<double> start, std::size_t j,
                                 const std::vector<double>& grid, double* best_sse, int threads,
                                 bool scan_delay) {
@@ -286,11 +288,12 @@ std::vector<double> grid_search(const DiagnosisModel& model, const std::vector<E
   return start;
 }
 
-std::vector<double> grid_start(const DiagnosisModel& model, const std::vector<Effect>& effects,
+std::vector<double> grid_start(const DiagnosisModel& model,
+                               const std::vector<const Candidate*>& effects,
                                std::vector<double> start, double* best_sse, int threads,
                                bool scan_delay, const std::vector<double>& extra) {
   const auto layout = model.layout(effects);
-  const std::size_t j = layout.size() - model.effect_params(effects.back()).size();
+  const std::size_t j = layout.size() - effects.back()->params(model).size();
   const auto& d = layout[j];
   std::vector<double> grid;
   for (double v = d.lower * 3.0; v <= d.upper; v *= 10.0) grid.push_back(v);

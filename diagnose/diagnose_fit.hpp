@@ -10,7 +10,7 @@ namespace rheomag::diagnose {
 
 /// A fitted model: the effects, the parameter values in SI and their standard errors.
 struct ModelFit {
-  std::vector<Effect> effects;
+  std::vector<const Candidate*> effects;
   std::vector<ParamDef> layout;
   std::vector<double> values;           ///< SI, in the order of layout
   std::vector<double> standard_errors;  ///< SI; NaN where the Jacobian does not identify it
@@ -38,7 +38,7 @@ struct FitSettings {
 /// Fits `effects` on top of the baseline, starting from `start` (SI values in the order of
 /// model.layout(effects); clamped into the bounds). Throws ConvergenceError if the model cannot
 /// be simulated even at the start.
-ModelFit fit_model(const DiagnosisModel& model, const std::vector<Effect>& effects,
+ModelFit fit_model(const DiagnosisModel& model, const std::vector<const Candidate*>& effects,
                    const std::vector<double>& start, const FitSettings& settings = {});
 
 /// Sum of squared residuals of `prediction` on the samples of `mask` (all when empty).
@@ -49,7 +49,8 @@ double masked_sse(const std::vector<double>& measured, const std::vector<double>
 /// (returned in `best_sse` when given; models that cannot be simulated are skipped). The grid
 /// points share `threads` threads. With `scan_delay` each grid point gets its own best output
 /// delay (DiagnosisModel::best_delay: no extra simulation), returned with the best point.
-std::vector<double> grid_search(const DiagnosisModel& model, const std::vector<Effect>& effects,
+std::vector<double> grid_search(const DiagnosisModel& model,
+                                const std::vector<const Candidate*>& effects,
                                 std::vector<double> start, std::size_t j,
                                 const std::vector<double>& grid, double* best_sse = nullptr,
                                 int threads = 1, bool scan_delay = false);
@@ -59,7 +60,8 @@ std::vector<double> grid_search(const DiagnosisModel& model, const std::vector<E
 /// `best_sse` when given, the squared error there. The grid points share `threads` threads;
 /// `scan_delay` as in grid_search. `extra` values of that parameter (e.g. starts measured on the
 /// recording) are scored beside the grid's.
-std::vector<double> grid_start(const DiagnosisModel& model, const std::vector<Effect>& effects,
+std::vector<double> grid_start(const DiagnosisModel& model,
+                               const std::vector<const Candidate*>& effects,
                                std::vector<double> start, double* best_sse = nullptr,
                                int threads = 1, bool scan_delay = false,
                                const std::vector<double>& extra = {});

@@ -1,12 +1,13 @@
 // A fitted model (`rheomag fit --json`) as the diagnosis baseline: its simulated output is the
 // baseline prediction, its parameters are held, its output's scale and offset (and the delay
-// nuisance) are calibrated, and candidate effects are blocks on its inputs (field lags, the coil's
-// L/R, magnetic hysteresis) or added to its output (fluid inertia, friction).
+// nuisance) are calibrated, and candidate effects are blocks on its inputs or added to its output
+// (Candidate::compose_with_model).
 
 #include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
+#include "diagnose/candidate.hpp"
 #include "diagnose/diagnose_model.hpp"
 
 namespace rheomag::diagnose {
@@ -22,44 +23,6 @@ std::string listed(std::vector<std::string> columns) {
 std::vector<std::string> sorted(std::vector<std::string> v) {
   std::sort(v.begin(), v.end());
   return v;
-}
-
-/// First-order lag tau y' = u - y of the samples `u` at times `t`, exact for an input linear
-/// between samples; starts at rest (y = u).
-std::vector<double> first_order_lag(const std::vector<double>& t, const std::vector<double>& u,
-                                    double tau) {
-  std::vector<double> y(u.size());
-  if (u.empty()) return y;
-  y[0] = u[0];
-  for (std::size_t k = 0; k + 1 < u.size(); ++k) {
-    const double h = t[k + 1] - t[k];
-    const double e = std::exp(-h / tau);
-    const double slope_tau = h > 0.0 ? (u[k + 1] - u[k]) / h * tau : 0.0;
-    y[k + 1] = u[k + 1] - slope_tau + (y[k] - u[k] + slope_tau) * e;
-  }
-  return y;
-}
-
-/// The field-equivalent current of the magnetic_hysteresis candidate (duhem_field(a, d)) along
-/// the current path `i`: along a distance x travelled in direction s, dh/dx = a (f - h) + s d with
-/// f(i) = i (kDuhemFieldB2 small), integrated exactly on each sample interval.
-std::vector<double> duhem_path(const std::vector<double>& i, double a, double d) {
-  const lumped::DuhemBlock block = duhem_field(a, d);
-  std::vector<double> h(i.size());
-  if (i.empty()) return h;
-  h[0] = block.b1 * std::tanh(block.b2 * i[0]);
-  for (std::size_t k = 0; k + 1 < i.size(); ++k) {
-    const double di = i[k + 1] - i[k];
-    if (di == 0.0) {
-      h[k + 1] = h[k];
-      continue;
-    }
-    const double s = di > 0.0 ? 1.0 : -1.0, x = std::abs(di);
-    // Particular solution h_p(x) = f(x) - s (1 - d) / a, f(x) = i_k + s x.
-    const double start = i[k] - s * (1.0 - d) / a;
-    h[k + 1] = i[k + 1] - s * (1.0 - d) / a + (h[k] - start) * std::exp(-a * x);
-  }
-  return h;
 }
 
 }  // namespace
@@ -155,52 +118,16 @@ void DiagnosisModel::from_fitted_model(const ModelBaseline& fitted) {
   }
 }
 
-std::vector<double> DiagnosisModel::predict_fitted(const std::vector<Effect>& effects,
+std::vector<double> DiagnosisModel::predict_fitted(const std::vector<const Candidate*>& effects,
                                                    const std::vector<double>& values) const {
-  const std::size_t n = rec_.t.size();
-  std::size_t k = static_params().size();
   lumped::Recording r = rec_;
-  std::vector<double> added(n, 0.0);
-  for (Effect e : effects) {
-    switch (e) {
-      case Effect::mr_response_time:
-      case Effect::eddy_currents:
-        r.columns[field_column_] = first_order_lag(r.t, r.column(field_column_), values.at(k++));
-        break;
-      case Effect::coil_inductance:
-        r.columns[field_column_] = first_order_lag(r.t, r.column(field_column_),
-                                                   values.at(k++) / base_.coil.resistance_20c);
-        break;
-      case Effect::magnetic_hysteresis:
-        r.columns[field_column_] =
-            duhem_path(r.column(field_column_), values.at(k), values.at(k + 1));
-        k += 2;
-        break;
-      case Effect::fluid_inertia: {
-        // L dQ/dt on the pressure; on a damper's force, A L dQ/dt (Q = A v).
-        const double area = base_.piston_area;
-        const double gain = model_sign_ * values.at(k++) * area *
-                            (base_.kind == lumped::RigKind::damper ? area : 1.0);
-        const auto& v = rec_.column("velocity");
-        for (std::size_t j = 1; j + 1 < n; ++j)
-          added[j] += gain * (v[j + 1] - v[j - 1]) / (rec_.t[j + 1] - rec_.t[j - 1]);
-        break;
-      }
-      case Effect::friction: {
-        const double force = model_sign_ * values.at(k++);
-        const auto& v = rec_.column("velocity");
-        for (std::size_t j = 0; j < n; ++j)
-          added[j] += force * std::tanh(v[j] / base_.friction_velocity);
-        break;
-      }
-      default:
-        throw InputError("diagnose: " + effect_name(e) +
-                         " cannot be composed with a fitted-model baseline");
-    }
-  }
+  std::vector<double> added(rec_.t.size(), 0.0);
+  FittedModelBlocks blocks{r, added, field_column_, model_sign_};
+  ParamReader reader(values, static_params().size());
+  for (const Candidate* e : effects) e->compose_with_model(blocks, reader, *this);
   auto y = lumped::simulate_fit_model(r, *fitted_);
   const double scale = values.at(0), offset = values.at(1);
-  for (std::size_t j = 0; j < n; ++j) y[j] = scale * y[j] + offset + added[j];
+  for (std::size_t j = 0; j < y.size(); ++j) y[j] = scale * y[j] + offset + added[j];
   return y;
 }
 

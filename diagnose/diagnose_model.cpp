@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "diagnose/candidate.hpp"
 #include "diagnose/diagnose_noise.hpp"
 
 namespace rheomag::diagnose {
@@ -16,37 +17,7 @@ using lumped::DriverMode;
 using lumped::RigKind;
 using lumped::RigSpec;
 
-std::string effect_name(Effect effect) {
-  switch (effect) {
-    case Effect::compressibility:
-      return "compressibility";
-    case Effect::fluid_inertia:
-      return "fluid_inertia";
-    case Effect::magnetic_hysteresis:
-      return "magnetic_hysteresis";
-    case Effect::eddy_currents:
-      return "eddy_currents";
-    case Effect::coil_inductance:
-      return "coil_inductance";
-    case Effect::coil_heating:
-      return "coil_heating";
-    case Effect::mr_response_time:
-      return "mr_response_time";
-    case Effect::friction:
-      return "friction";
-    case Effect::pre_yield:
-      return "pre_yield";
-  }
-  return "";
-}
-
 namespace {
-
-double rms(const std::vector<double>& v) {
-  double s = 0.0;
-  for (double x : v) s += x * x;
-  return v.empty() ? 0.0 : std::sqrt(s / static_cast<double>(v.size()));
-}
 
 bool has(const std::vector<std::string>& list, const std::string& name) {
   return std::find(list.begin(), list.end(), name) != list.end();
@@ -355,90 +326,32 @@ DiagnosisModel DiagnosisModel::with_oil_compliance(double fit_gain) const {
   return m;
 }
 
-lumped::DuhemBlock duhem_field(double a, double d) {
-  lumped::DuhemBlock h;
-  h.a = a;
-  h.d = d;
-  h.b2 = kDuhemFieldB2;
-  h.b1 = 1.0 / kDuhemFieldB2;  // f(i) = b1 tanh(b2 i) = i within 0.01 % up to 1 A
-  h.flux_per_ampere = 1.0;     // lambda is the field-equivalent current
-  return h;
-}
-
-std::vector<Effect> DiagnosisModel::applicable_effects() const {
-  std::vector<Effect> out;
-  if (fitted_) {
-    // Blocks on the model's inputs (field lags, hysteresis, the coil's L/R) and on its output
-    // (inertia, friction); chamber compliances and coil heating sit inside the rig's hydraulic or
-    // electric loop and cannot be composed with a model that is not a rig (docs/diagnosis.md).
-    if (!field_column_.empty() && !constant_field_) {
-      out.push_back(Effect::mr_response_time);
-      out.push_back(Effect::eddy_currents);
-      if (field_column_ == "current" || field_column_ == "current_cmd")
-        out.push_back(Effect::magnetic_hysteresis);
-      else if (rec_.meta.coil.resistance && !(base_.coil.inductance > 0.0))
-        out.push_back(Effect::coil_inductance);
-    }
-    if (base_.kind != RigKind::coil_bench && base_.piston_area > 0.0 &&
-        rec_.columns.count("velocity")) {
-      const auto& v = rec_.column("velocity");
-      const auto [vmin, vmax] = std::minmax_element(v.begin(), v.end());
-      const double noise = drive_noise_.count("velocity") ? drive_noise_.at("velocity") : 0.0;
-      if (*vmax - *vmin > 10.0 * noise) out.push_back(Effect::fluid_inertia);
-    }
-    if (base_.kind == RigKind::damper && rec_.columns.count("velocity"))
-      out.push_back(Effect::friction);
-    return out;
-  }
-  if (base_.kind != RigKind::coil_bench) {
-    out.push_back(Effect::compressibility);
-    // The pre-yield branch shows where the flow reverses and the plug re-forms.
-    if (smoothing_nuisance_) out.push_back(Effect::pre_yield);
-    // Inertia needs acceleration: not on a constant-velocity drive (a velocity that moves only
-    // by its noise is constant).
-    const auto& v = rec_.column("velocity");
-    const auto [vmin, vmax] = std::minmax_element(v.begin(), v.end());
-    const double noise = drive_noise_.count("velocity") ? drive_noise_.at("velocity") : 0.0;
-    if (*vmax - *vmin > std::max(10.0 * noise, 1e-6 * std::max(std::abs(*vmax), std::abs(*vmin))))
-      out.push_back(Effect::fluid_inertia);
-    out.push_back(Effect::mr_response_time);
-    out.push_back(Effect::eddy_currents);
-    // Duhem between an imposed (or ideally tracked) current and the field; a voltage-driven coil
-    // would need the hysteresis inside the inductor instead (not a candidate).
-    if (base_.driver_mode == DriverMode::current_source && !constant_field_)
-      out.push_back(Effect::magnetic_hysteresis);
-  }
-  if (base_.driver_mode == DriverMode::voltage) {
-    // A stated inductance is in the baseline already.
-    if (!(base_.coil.inductance > 0.0)) out.push_back(Effect::coil_inductance);
-    out.push_back(Effect::coil_heating);
-  }
-  if (base_.kind == RigKind::damper) out.push_back(Effect::friction);
-  return out;
-}
-
 std::vector<ParamDef> DiagnosisModel::static_params() const {
   std::vector<ParamDef> p;
   if (fitted_) {
     // The model's own parameters are held; its output's level is calibrated (a drift of the
     // fluid, temperature or sensor gain between the two test days is not missing physics).
-    p.push_back({"output_scale", 1.0, 0.5, 2.0, false, 1.0});
+    p.push_back({"output_scale", 1.0, 0.5, 2.0, false, 1.0, "1"});
+    const std::string unit = output_ == "force"      ? "N"
+                             : output_ == "pressure" ? "Pa"
+                             : output_ == "current"  ? "A"
+                                                     : "";
     p.push_back(
-        {"output_offset", 0.0, -10.0 * output_rms_, 10.0 * output_rms_, false, output_rms_});
+        {"output_offset", 0.0, -10.0 * output_rms_, 10.0 * output_rms_, false, output_rms_, unit});
   } else if (base_.kind == RigKind::coil_bench) {
     const double r = base_.coil.resistance_20c;
-    p.push_back({"coil_resistance", r, 0.2 * r, 5.0 * r, true, 1.0});
+    p.push_back({"coil_resistance", r, 0.2 * r, 5.0 * r, true, 1.0, "ohm"});
   } else {
-    p.push_back({"yield_scale", 1.0, 0.05, 20.0, false, 1.0});
+    p.push_back({"yield_scale", 1.0, 0.05, 20.0, false, 1.0, "1"});
     if (fe_chain_) {
-      p.push_back({"viscous_scale", 1.0, 1e-2, 1e2, true, 1.0});
+      p.push_back({"viscous_scale", 1.0, 1e-2, 1e2, true, 1.0, "1"});
     } else {
       const double rv = base_.valve.viscous_resistance;
-      p.push_back({"viscous_resistance", rv, rv * 1e-2, rv * 1e2, true, 1.0});
+      p.push_back({"viscous_resistance", rv, rv * 1e-2, rv * 1e2, true, 1.0, "Pa s/m^3"});
     }
     if (base_.kind == RigKind::damper)
       p.push_back({"force_offset", base_.gas_force, base_.gas_force - 10.0 * output_rms_,
-                   base_.gas_force + 10.0 * output_rms_, false, output_rms_});
+                   base_.gas_force + 10.0 * output_rms_, false, output_rms_, "N"});
   }
   // Nuisances: a delay of up to two samples between the output and the drives (channel skew,
   // and a zero-order-held drive, which acts as half a sample), and the static map's pre-yield
@@ -447,13 +360,13 @@ std::vector<ParamDef> DiagnosisModel::static_params() const {
   // half a sample so that both conventions span the same timings of the recorded channels.
   const double dt = sample_interval_;
   const double shift = held_delay_shift() * dt;
-  p.push_back(
-      {"delay", 0.0, -kMaxDelaySamples * dt + shift, kMaxDelaySamples * dt + shift, false, dt});
+  p.push_back({"delay", 0.0, -kMaxDelaySamples * dt + shift, kMaxDelaySamples * dt + shift, false,
+               dt, "s"});
   if (smoothing_nuisance_) {
     const double q = peak_flow_;
     p.push_back({"preyield_flow",
                  std::clamp(base_.valve.regularisation_flow, 1e-5 * q, kMaxPreyieldFraction * q),
-                 1e-5 * q, kMaxPreyieldFraction * q, true, 1.0});
+                 1e-5 * q, kMaxPreyieldFraction * q, true, 1.0, "m^3/s"});
   }
   return p;
 }
@@ -462,63 +375,16 @@ std::size_t DiagnosisModel::nuisance_count() const {
   return smoothing_nuisance_ ? 2 : 1;
 }
 
-std::vector<ParamDef> DiagnosisModel::effect_params(Effect effect) const {
-  const double duration = rec_.t.back() - rec_.t.front();
-  switch (effect) {
-    case Effect::compressibility: {
-      const double v = chamber_volume_;
-      return {{"air_volume", 1e-3 * v, 1e-8 * v, v, true, 1.0}};
-    }
-    case Effect::fluid_inertia: {
-      // Start where the inertial pressure is a tenth of the measured swing.
-      const auto& vel = rec_.column("velocity");
-      std::vector<double> acc(vel.size(), 0.0);
-      for (std::size_t k = 1; k + 1 < vel.size(); ++k)
-        acc[k] = (vel[k + 1] - vel[k - 1]) / (rec_.t[k + 1] - rec_.t[k - 1]);
-      double scale = 0.1 * output_rms_ / std::max(rms(acc) * base_.piston_area, 1e-300);
-      if (base_.kind == RigKind::damper) scale /= base_.piston_area;
-      return {{"inertance", scale, scale * 1e-5, scale * 1e4, true, 1.0}};
-    }
-    case Effect::eddy_currents:
-    case Effect::mr_response_time:
-      return {{"time_constant", 0.01, 1e-5, 10.0, true, 1.0}};
-    case Effect::coil_inductance:
-      return {{"inductance", 0.1, 1e-5, 100.0, true, 1.0}};
-    case Effect::coil_heating:
-      return {{"thermal_resistance", 2.0, 1e-2, 1e3, true, 1.0},
-              {"thermal_time_constant", duration, 1e-2 * duration, 1e3 * duration, true, 1.0}};
-    case Effect::friction:
-      return {
-          {"coulomb_force", 0.05 * output_rms_, 1e-6 * output_rms_, 10.0 * output_rms_, true, 1.0}};
-    case Effect::pre_yield: {
-      // Linear compliance per chamber [m^3/Pa], from the oil's own (V / 1.5 GPa) to that of a
-      // 0.1 MPa gas (an elastic plug softer than any fluid column).
-      const double bulk = lumped::ChamberBlock{}.bulk_modulus, oil = chamber_volume_ / bulk;
-      return {{"compliance", 100.0 * oil, oil, oil * bulk / 1e5, true, 1.0}};
-    }
-    case Effect::magnetic_hysteresis: {
-      // Duhem in field-equivalent amperes: a [1/A] (a large a closes the loop), d [-] the
-      // reversible fraction of the slope; the loop's half width is (1 - d) / a.
-      const auto& i = rec_.column("current");
-      const auto [lo, hi] = std::minmax_element(i.begin(), i.end());
-      const double range = std::max(*hi - *lo, 1e-6);
-      return {{"a", 10.0 / range, 0.3 / range, 3e3 / range, true, 1.0},
-              {"d", 0.5, 0.0, 0.98, false, 1.0}};
-    }
-  }
-  throw InputError("diagnose: no candidate model for " + effect_name(effect));
-}
-
-std::vector<ParamDef> DiagnosisModel::layout(const std::vector<Effect>& effects) const {
+std::vector<ParamDef> DiagnosisModel::layout(const std::vector<const Candidate*>& effects) const {
   auto out = static_params();
-  for (Effect e : effects) {
-    auto p = effect_params(e);
+  for (const Candidate* e : effects) {
+    auto p = e->params(*this);
     out.insert(out.end(), p.begin(), p.end());
   }
   return out;
 }
 
-RigSpec DiagnosisModel::spec(const std::vector<Effect>& effects,
+RigSpec DiagnosisModel::spec(const std::vector<const Candidate*>& effects,
                              const std::vector<double>& values) const {
   RigSpec s = base_;
   std::size_t k = 0;
@@ -538,56 +404,8 @@ RigSpec DiagnosisModel::spec(const std::vector<Effect>& effects,
     ++k;  // delay: applied to the output (predict)
     if (smoothing_nuisance_) s.valve.regularisation_flow = values.at(k++);
   }
-  double linear_compliance = 0.0;
-  for (Effect e : effects) {
-    switch (e) {
-      case Effect::compressibility: {
-        lumped::ChamberBlock chamber;
-        chamber.oil_volume = chamber_volume_;
-        chamber.air_volume = values.at(k++);
-        s.compressibility = chamber;
-        break;
-      }
-      case Effect::fluid_inertia:
-        s.inertance = values.at(k++);
-        break;
-      case Effect::eddy_currents:
-        s.eddy_time_constant = values.at(k++);
-        s.predicted_eddy_lag.reset();  // the fitted lag replaces a predicted one
-        break;
-      case Effect::mr_response_time:
-        s.mr_response_time = values.at(k++);
-        break;
-      case Effect::coil_inductance:
-        s.coil.inductance = values.at(k++);
-        break;
-      case Effect::coil_heating: {
-        lumped::ThermalBlock thermal;
-        thermal.thermal_resistance = values.at(k++);
-        thermal.thermal_time_constant = values.at(k++);
-        s.coil_heating = thermal;
-        break;
-      }
-      case Effect::friction:
-        s.coulomb_force = values.at(k++);
-        break;
-      case Effect::magnetic_hysteresis:
-        s.magnetic_hysteresis = duhem_field(values.at(k), values.at(k + 1));
-        k += 2;
-        break;
-      case Effect::pre_yield:
-        linear_compliance = values.at(k++);
-        break;
-    }
-  }
-  // The pre-yield branch is a linear compliance between the chambers: the oil's bulk modulus
-  // softened to V / C (any air of the compressibility candidate stays on top of it).
-  if (linear_compliance > 0.0) {
-    lumped::ChamberBlock chamber = s.compressibility.value_or(lumped::ChamberBlock{});
-    chamber.oil_volume = chamber_volume_;
-    chamber.bulk_modulus = chamber_volume_ / linear_compliance;
-    s.compressibility = chamber;
-  }
+  ParamReader reader(values, k);
+  for (const Candidate* e : effects) e->switch_on(s, reader, *this);
   return s;
 }
 
@@ -651,14 +469,14 @@ double DiagnosisModel::best_delay(const std::vector<double>& undelayed, std::vec
   return delay;
 }
 
-std::vector<double> DiagnosisModel::predict(const std::vector<Effect>& effects,
+std::vector<double> DiagnosisModel::predict(const std::vector<const Candidate*>& effects,
                                             const std::vector<double>& values) const {
   if (fitted_) return delayed(predict_fitted(effects, values), values);
   auto sim = lumped::simulate_rig(spec(effects, values), rec_);
   return delayed(std::move(sim.columns.at(output_)), values);
 }
 
-std::vector<double> DiagnosisModel::predict_column(const std::vector<Effect>& effects,
+std::vector<double> DiagnosisModel::predict_column(const std::vector<const Candidate*>& effects,
                                                    const std::vector<double>& values,
                                                    const std::string& column) const {
   // A fitted model simulates its output only: other columns are what was recorded.

@@ -17,19 +17,7 @@
 
 namespace rheomag::diagnose {
 
-/// Candidate physics, named exactly as in the diagnosis output format.
-enum class Effect {
-  compressibility,
-  fluid_inertia,
-  magnetic_hysteresis,
-  eddy_currents,
-  coil_inductance,
-  coil_heating,
-  mr_response_time,
-  friction,
-  pre_yield  ///< the MR fluid's elastic pre-yield branch: a linear compliance before the plug
-             ///< yields
-};
+class Candidate;
 
 /// How the recorder's drive samples act on the rig between samples: a nuisance the baseline
 /// calibrates (it picks the convention that fits better), never physics.
@@ -42,9 +30,6 @@ enum class DriveSampling {
 /// "linear" | "held".
 inline constexpr EnumNames<DriveSampling, 2> kDriveSamplingNames{
     {{{DriveSampling::linear, "linear"}, {DriveSampling::held, "held"}}}};
-
-/// Name of an effect in the diagnosis output ("compressibility", ...).
-std::string effect_name(Effect effect);
 
 /// Largest delay between output and drives the baseline calibrates [samples]: channel skew and
 /// a drive recorded as held samples (half a sample) are recording nuisances, not physics.
@@ -62,10 +47,6 @@ inline constexpr double kNoisyDrive = 1e-4;
 /// (diagnose_noise.hpp); the bandwidth it gives at the recording's rate is reported.
 inline constexpr std::size_t kVelocityFilterHalfWidth = 8;
 
-/// b2 [1/A] of the diagnosis's Duhem candidate: small, so f(i) = tanh(b2 i) / b2 is the current
-/// itself and the saturation stays in the calibrated valve map.
-inline constexpr double kDuhemFieldB2 = 0.01;
-
 /// Fixed SDIRK2 steps per sample interval in every simulation of the diagnosis
 /// (lumped/ode_grid.hpp; 8 in an interval where a drive input steps): the cost is set by the
 /// number of samples, not by how often the inputs switch, and the output is a smooth function of
@@ -73,10 +54,6 @@ inline constexpr double kDuhemFieldB2 = 0.01;
 /// within 0.32 % rms of the error-controlled integrator with chamber compliance on, 0.002 % with a
 /// field lag (bench_rig_simulation).
 inline constexpr int kDiagnosisGridSubsteps = 1;
-
-/// The Duhem block of the magnetic_hysteresis candidate: field-equivalent current h with
-/// dh/dt = a |di/dt| (i - h) + d di/dt (paper 004 eqs. 2-3 with b1 b2 = 1, b2 -> 0).
-lumped::DuhemBlock duhem_field(double a, double d);
 
 /// [s] median interval between the sample times `t` (1 for fewer than two samples).
 double median_interval(const std::vector<double>& t);
@@ -105,6 +82,7 @@ struct ParamDef {
   double upper = 1.0;
   bool log_scale = true;
   double typical = 1.0;  ///< linear parameters are fitted as value / typical
+  std::string unit;      ///< SI unit of the value ("1" when dimensionless)
 };
 
 /// The baseline rig of a recording and the layout of the parameter vector for a set of effects.
@@ -142,10 +120,6 @@ class DiagnosisModel {
   /// on a coil drive without steps it would only be half a sample more delay of the motion).
   bool can_hold() const { return !fitted_ && !constant_field_ && coil_drive_steps_; }
 
-  /// Effects that can show in this recording (e.g. friction only on a damper's force, coil
-  /// effects only when the coil is voltage driven).
-  std::vector<Effect> applicable_effects() const;
-
   /// Static (calibrated) parameters of the baseline: yield_scale, viscous_resistance (or
   /// viscous_scale of an FE-chain map), force_offset, and the nuisances delay and preyield_flow.
   std::vector<ParamDef> static_params() const;
@@ -162,24 +136,22 @@ class DiagnosisModel {
   double best_delay(const std::vector<double>& undelayed, std::vector<double> values,
                     double& sse) const;
 
-  /// Parameters an effect adds, with starting values scaled to this recording.
-  std::vector<ParamDef> effect_params(Effect effect) const;
-
-  /// The full layout: static parameters, then each effect's parameters in order.
-  std::vector<ParamDef> layout(const std::vector<Effect>& effects) const;
+  /// The full layout: static parameters, then each effect's parameters (Candidate::params).
+  std::vector<ParamDef> layout(const std::vector<const Candidate*>& effects) const;
 
   /// The rig spec for parameter values `values` (in the order of layout(effects)).
-  lumped::RigSpec spec(const std::vector<Effect>& effects, const std::vector<double>& values) const;
+  lumped::RigSpec spec(const std::vector<const Candidate*>& effects,
+                       const std::vector<double>& values) const;
 
   /// Shifts `y` (at the recording's times) by the delay in `values`: y(t - delay).
   std::vector<double> delayed(std::vector<double> y, const std::vector<double>& values) const;
 
   /// Free-run model output at the recording's sample times, shifted by the delay nuisance.
-  std::vector<double> predict(const std::vector<Effect>& effects,
+  std::vector<double> predict(const std::vector<const Candidate*>& effects,
                               const std::vector<double>& values) const;
 
   /// Free-run model value of another column (e.g. the coil current of a voltage-driven rig).
-  std::vector<double> predict_column(const std::vector<Effect>& effects,
+  std::vector<double> predict_column(const std::vector<const Candidate*>& effects,
                                      const std::vector<double>& values,
                                      const std::string& column) const;
 
@@ -201,6 +173,12 @@ class DiagnosisModel {
   const std::vector<BaselineItem>& includes() const { return includes_; }
   /// True when the baseline is a fitted model (ModelBaseline) rather than the sidecar's rig.
   bool fitted_baseline() const { return fitted_ != nullptr; }
+  /// Fitted-model baseline: the model's field drive column ("" if none).
+  const std::string& field_column() const { return field_column_; }
+  /// True when the static map's pre-yield smoothness is calibrated (the flow reverses).
+  bool preyield_calibrated() const { return smoothing_nuisance_; }
+  /// Standard deviation of the measured output about its mean (floored at 1e-300).
+  double output_spread() const { return output_rms_; }
   /// [s] median sample interval.
   double sample_interval() const { return sample_interval_; }
   /// [m^3/s] largest |piston flow| of the recording (0 on a coil bench).
@@ -242,7 +220,7 @@ class DiagnosisModel {
   /// Estimates the drives' white noise and smooths a noisy velocity (errors in variables).
   void drive_noise_and_filter();
   /// Output of the fitted-model baseline with `effects` as blocks on its inputs and output.
-  std::vector<double> predict_fitted(const std::vector<Effect>& effects,
+  std::vector<double> predict_fitted(const std::vector<const Candidate*>& effects,
                                      const std::vector<double>& values) const;
   /// Tabulates the FE chain of [valve] case as the static map (InputError naming it if it fails).
   void chain_map(const std::string& where);

@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/finite_output.hpp"
 #include "core/html_text.hpp"
+#include "diagnose/candidate.hpp"
 
 namespace rheomag::diagnose {
 
@@ -141,10 +142,10 @@ std::string diagnosis_html(const Diagnosis& d) {
          "<th>FIT after</th><th>evidence</th></tr>\n";
     int i = 1;
     for (const auto& f : d.findings) {
-      o << "<tr><td>" << i++ << "</td><td><b>" << effect_name(f.effect) << "</b>";
+      o << "<tr><td>" << i++ << "</td><td><b>" << f.effect->name() << "</b>";
       if (!f.ambiguous_with.empty()) {
         o << "<br><span class='warn'>or equally:";
-        for (Effect a : f.ambiguous_with) o << ' ' << effect_name(a);
+        for (const Candidate* a : f.ambiguous_with) o << ' ' << a->name();
         o << "</span>";
       }
       o << "</td><td>";
@@ -243,7 +244,7 @@ std::string diagnosis_html(const Diagnosis& d) {
   o << "</table>\n<h2>Candidates tried</h2>\n<table><tr><th>step</th><th>effect</th><th>FIT "
        "%</th><th>&Delta;BIC</th></tr>\n";
   for (const auto& c : d.candidates)
-    o << "<tr><td>" << c.step + 1 << "</td><td>" << effect_name(c.effect) << "</td><td>"
+    o << "<tr><td>" << c.step + 1 << "</td><td>" << c.effect->name() << "</td><td>"
       << (c.screened ? std::string("screened out") : html_number(c.fit_percent, 4)) << "</td><td>"
       << html_number(c.delta_bic, 4) << "</td></tr>\n";
   o << "</table>\n";

@@ -93,14 +93,14 @@ double loop_compliance(const lumped::RigSpec& spec) {
   return 0.5 * spec.compressibility->capacitance(spec.compressibility->precharge);
 }
 
-std::vector<double> ringing_inertances(const DiagnosisModel& model, const ModelFit& current) {
+std::vector<double> ringing_inertances(const DiagnosisModel& model, const ModelFit& current,
+                                       const ParamDef& bounds) {
   if (model.fitted_baseline() || model.baseline().kind == lumped::RigKind::coil_bench) return {};
   const double c = loop_compliance(model.spec(current.effects, current.values));
   if (!(c > 0.0)) return {};
   const auto& y = model.measured();
   std::vector<double> residual(y.size());
   for (std::size_t k = 0; k < y.size(); ++k) residual[k] = y[k] - current.prediction[k];
-  const auto bounds = model.effect_params(Effect::fluid_inertia).front();
   std::vector<double> out;
   for (double f : ringing_frequencies(residual, model.recording().column("velocity"),
                                       model.sample_interval())) {

@@ -33,8 +33,9 @@ double loop_compliance(const lumped::RigSpec& spec);
 /// Start values [Pa s^2/m^3] for the fluid_inertia candidate on top of `current`: I = 1 /
 /// (omega^2 C) for each ringing frequency of the residual of `current` (above the velocity's
 /// band), with C the loop compliance `current` simulates (the stated oil's, plus any air and
-/// pre-yield compliance it includes). Only those within the candidate's bounds; empty on a coil
-/// bench, a fitted-model baseline or stiff chambers.
-std::vector<double> ringing_inertances(const DiagnosisModel& model, const ModelFit& current);
+/// pre-yield compliance it includes). Only those within the candidate's `bounds` (its inertance
+/// parameter); empty on a coil bench, a fitted-model baseline or stiff chambers.
+std::vector<double> ringing_inertances(const DiagnosisModel& model, const ModelFit& current,
+                                       const ParamDef& bounds);
 
 }  // namespace rheomag::diagnose

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/progress.hpp"
+#include "diagnose/candidate.hpp"
 #include "diagnose/diagnose_fit.hpp"
 #include "diagnose/diagnose_locate.hpp"
 #include "diagnose/diagnose_model.hpp"
@@ -49,7 +50,7 @@ struct DiagnoseOptions {
 
 /// One candidate tried at one step of forward selection.
 struct CandidateScore {
-  Effect effect;
+  const Candidate* effect;  ///< a registered candidate (candidate_registry.hpp)
   int step = 0;
   double fit_percent = 0.0;
   double delta_bic = 0.0;  ///< BIC of the model before minus BIC with this candidate
@@ -58,7 +59,7 @@ struct CandidateScore {
 
 /// One accepted piece of missing physics.
 struct Finding {
-  Effect effect;
+  const Candidate* effect;  ///< a registered candidate (candidate_registry.hpp)
   std::vector<std::string> param_names;
   std::vector<double> params;           ///< SI, from the final joint re-fit
   std::vector<double> standard_errors;  ///< SI
@@ -67,10 +68,11 @@ struct Finding {
   double heldout_gain = 0.0;  ///< fraction by which the held-out squared error fell
   double share = 0.0;         ///< share of the residual energy above the noise floor it removed
   std::string evidence;
-  std::vector<Effect> ambiguous_with;  ///< candidates that explain the data almost equally
+  std::vector<const Candidate*>
+      ambiguous_with;                  ///< candidates that explain the data almost equally
   std::string separating_measurement;  ///< what would tell them apart
   /// candidates that fit the output as well but not the measured coil current
-  std::vector<Effect> ruled_out_by_current;
+  std::vector<const Candidate*> ruled_out_by_current;
 };
 
 /// The nuisances calibrated in the baseline (never named as physics).

@@ -112,6 +112,16 @@ if in_group diagnose; then
   "$old" fit "$data/mrdamper/mrdamper.csv" --model bingham --json --quiet >"$work/model.json" 2>/dev/null
   run diagnose_baseline diagnose "$data/mrdamper/mrdamper.csv" --baseline "$work/model.json" \
     --samples 0:4000 --out OUT/diagb --json --quiet
+  # Whole real recordings (each under a minute on an idle machine): the constant-field damper,
+  # a current-driven damper, and a fitted damper model as the baseline.
+  run diagnose_mrdamper diagnose "$data/mrdamper/mrdamper.csv" \
+    --meta "$src/tests/data/diagnosis/mrdamper.toml" --out OUT/diag --json --quiet
+  run diagnose_utfsm diagnose "$data/utfsm/10mm1Hz0x5A.csv" \
+    --meta "$src/tests/data/diagnosis/utfsm_damper.toml" --json --quiet
+  "$old" fit "$data/utfsm/10mm1Hz0x5A.csv" --model damper --json --quiet >"$work/damper.json" \
+    2>/dev/null
+  run diagnose_baseline_damper diagnose "$data/utfsm/10mm1Hz0x5A.csv" \
+    --meta "$src/tests/data/diagnosis/utfsm_damper.toml" --baseline "$work/damper.json" --json --quiet
 fi
 
 echo "$failures command(s) differ"

@@ -16,8 +16,6 @@
 namespace {
 
 using rheomag::diagnose::Diagnosis;
-using rheomag::diagnose::Effect;
-using rheomag::diagnose::effect_name;
 using rheomag::lumped::DriverMode;
 using rheomag::lumped::RigKind;
 using rheomag::test::bypass_rig;
@@ -27,7 +25,7 @@ using rheomag::test::make_recording;
 void print(const Diagnosis& d, double ceiling) {
   std::cout << rheomag::diagnose::diagnosis_json(d)["baseline"].dump(1) << "\nfinal FIT "
             << d.final_fit_percent << ", ceiling " << ceiling << "\n";
-  for (const auto& f : d.findings) std::cout << "  named " << effect_name(f.effect) << "\n";
+  for (const auto& f : d.findings) std::cout << "  named " << f.effect->name() << "\n";
   for (const auto& n : d.notes) std::cout << "  note: " << n << "\n";
 }
 
@@ -155,7 +153,7 @@ TEST(DiagnoseBaseline, FeChainBaselineNamesAConcealedLag) {
   print(d, v.noise_ceiling);
   ASSERT_FALSE(d.findings.empty());
   const auto& f = d.findings.front();
-  EXPECT_TRUE(f.effect == Effect::mr_response_time || f.effect == Effect::eddy_currents);
+  EXPECT_TRUE(f.effect->name() == "mr_response_time" || f.effect->name() == "eddy_currents");
   EXPECT_NEAR(f.params.front() / 0.02, 1.0, 0.2);
   EXPECT_EQ(d.findings.size(), 1u);
   EXPECT_NEAR(d.final_fit.values[0] / 0.8, 1.0, 0.05);  // yield_scale

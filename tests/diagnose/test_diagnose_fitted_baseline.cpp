@@ -25,8 +25,6 @@
 namespace {
 
 using rheomag::diagnose::DiagnoseOptions;
-using rheomag::diagnose::Effect;
-using rheomag::diagnose::effect_name;
 using rheomag::diagnose::ModelBaseline;
 using rheomag::test::bypass_rig;
 using rheomag::test::drive;
@@ -74,11 +72,11 @@ void expect_one_field_lag(const rheomag::diagnose::Diagnosis& d, double tau) {
   std::cout << "baseline FIT " << d.baseline_fit_percent << " %, final " << d.final_fit_percent
             << " %\n";
   for (const auto& f : d.findings)
-    std::cout << "  " << effect_name(f.effect) << " " << f.params.front() << "\n";
+    std::cout << "  " << f.effect->name() << " " << f.params.front() << "\n";
   ASSERT_EQ(d.findings.size(), 1u);
   const auto& f = d.findings.front();
-  EXPECT_TRUE(f.effect == Effect::mr_response_time || f.effect == Effect::eddy_currents)
-      << effect_name(f.effect);
+  EXPECT_TRUE(f.effect->name() == "mr_response_time" || f.effect->name() == "eddy_currents")
+      << f.effect->name();
   EXPECT_NEAR(f.params.front() / tau, 1.0, 0.2);
 }
 
@@ -96,7 +94,7 @@ TEST(DiagnoseFittedBaseline, NamesAFieldLagTheModelLacks) {
 
 TEST(DiagnoseFittedBaseline, NamesNothingWhenTheDeviceIsUnchanged) {
   const auto d = diagnose_with(todays_recording(0.0), last_months_model());
-  EXPECT_TRUE(d.findings.empty()) << effect_name(d.findings.front().effect);
+  EXPECT_TRUE(d.findings.empty()) << d.findings.front().effect->name();
   EXPECT_GT(d.final_fit_percent, 90.0);
 }
 

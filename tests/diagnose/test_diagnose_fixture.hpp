@@ -69,7 +69,7 @@ inline VirtualRecording make_recording(lumped::RigSpec truth, const lumped::Reco
 /// Prints each finding of `d` with its parameters (SI), one line each.
 inline void print_findings(const diagnose::Diagnosis& d) {
   for (const auto& f : d.findings) {
-    std::cout << "  " << diagnose::effect_name(f.effect);
+    std::cout << "  " << f.effect->name();
     for (std::size_t j = 0; j < f.params.size(); ++j)
       std::cout << " " << f.param_names[j] << "=" << f.params[j];
     std::cout << "\n";

@@ -1,0 +1,123 @@
+// The diagnosis in the fixed JSON format (shared/docs/recording-format.md) plus details.
+
+#include <cmath>
+
+#include "diagnose/candidate.hpp"
+#include "diagnose/diagnose_run.hpp"
+
+namespace rheomag::diagnose {
+
+namespace {
+
+nlohmann::json nuisance_json(const Nuisance& u) {
+  nlohmann::json j = {
+      {"delay", u.delay},
+      {"delay_samples", u.delay_samples},
+      {"sampling", u.sampling},
+      {"drive_sampling", kDriveSamplingNames.name(u.drive_sampling)},
+      {"sampling_fit_gain",
+       std::isfinite(u.sampling_fit_gain) ? nlohmann::json(u.sampling_fit_gain) : nlohmann::json()},
+      {"drive_noise", u.drive_noise},
+      {"velocity_filter_bandwidth", u.velocity_filter_bandwidth}};
+  if (u.preyield_flow > 0.0) {
+    j["preyield_flow"] = u.preyield_flow;
+    j["preyield_fraction_of_peak_flow"] = u.preyield_fraction;
+  }
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json diagnosis_json(const Diagnosis& d) {
+  using nlohmann::json;
+  auto params_of = [](const ModelFit& f, std::size_t from, std::size_t to) {
+    json p = json::object();
+    for (std::size_t j = from; j < to; ++j) p[f.layout[j].name] = f.values[j];
+    return p;
+  };
+  const std::size_t n_static = d.baseline.values.size();
+  json out;
+  out["recording"] = d.recording;
+  out["baseline"] = {{"fit_percent", d.baseline_fit_percent},
+                     {"params", params_of(d.baseline, 0, n_static)},
+                     {"includes", json::array()},
+                     {"nuisance", nuisance_json(d.nuisance)}};
+  for (const auto& item : d.includes)
+    out["baseline"]["includes"].push_back(
+        {{"name", item.name},
+         {"value", item.unit.empty() && item.value == 0.0 ? json() : json(item.value)},
+         {"unit", item.unit},
+         {"source", item.source}});
+  out["mismatch"] = json::array();
+  for (const auto& w : d.mismatch)
+    out["mismatch"].push_back({{"t_start", w.t_start},
+                               {"t_end", w.t_end},
+                               {"share_of_residual", w.share},
+                               {"regime", w.regime}});
+  out["missing_physics"] = json::array();
+  for (const auto& f : d.findings) {
+    json p = json::object(), u = json::object();
+    for (std::size_t j = 0; j < f.params.size(); ++j) {
+      p[f.param_names[j]] = f.params[j];
+      u[f.param_names[j]] =
+          std::isfinite(f.standard_errors[j]) ? json(f.standard_errors[j]) : json();
+    }
+    for (const auto& [name, value] : f.effect->derived_params(f.params)) p[name] = value;
+    json e = {{"name", f.effect->name()},
+              {"params", p},
+              {"standard_errors", u},
+              {"fit_percent", f.fit_percent},
+              {"delta_bic", f.delta_bic},
+              {"heldout_gain", f.heldout_gain},
+              {"share_of_residual_above_noise", f.share},
+              {"evidence", f.evidence}};
+    if (!f.ruled_out_by_current.empty()) {
+      e["ruled_out_by_measured_current"] = json::array();
+      for (const Candidate* a : f.ruled_out_by_current)
+        e["ruled_out_by_measured_current"].push_back(a->name());
+    }
+    if (!f.ambiguous_with.empty()) {
+      e["ambiguous_with"] = json::array();
+      for (const Candidate* a : f.ambiguous_with) e["ambiguous_with"].push_back(a->name());
+      e["separating_measurement"] = f.separating_measurement;
+    }
+    out["missing_physics"].push_back(e);
+  }
+  out["final"] = {{"fit_percent", d.final_fit_percent},
+                  {"params", params_of(d.final_fit, 0, d.final_fit.values.size())},
+                  {"nuisance", nuisance_json(d.final_nuisance)}};
+  out["unexplained"] = {{"share_of_residual", d.unexplained.share},
+                        {"share_of_baseline_residual", d.unexplained.baseline_share},
+                        {"noise_floor_rms", d.unexplained.noise_sigma},
+                        {"residual_rms", d.unexplained.residual_rms}};
+  json stats;
+  stats["whiteness"] = {{"lag1_autocorrelation", d.baseline_stats.lag1_autocorrelation},
+                        {"ljung_box_q", d.baseline_stats.ljung_box_q},
+                        {"white", d.baseline_stats.white}};
+  stats["correlations"] = json::array();
+  for (const auto& c : d.baseline_stats.correlations)
+    stats["correlations"].push_back({{"signal", c.signal}, {"value", c.value}, {"lag", c.lag}});
+  stats["loops"] = json::array();
+  for (const auto& l : d.baseline_stats.loops)
+    stats["loops"].push_back({{"input", l.input},
+                              {"opening", l.opening},
+                              {"slow_fast_ratio", l.slow_fast_ratio},
+                              {"rate_independent", l.rate_independent}});
+  stats["output_lag"] = d.baseline_stats.output_lag;
+  stats["final_white"] = d.final_stats.white;
+  out["residual_statistics"] = stats;
+  out["candidates"] = json::array();
+  for (const auto& c : d.candidates)
+    out["candidates"].push_back(
+        {{"name", c.effect->name()},
+         {"step", c.step + 1},
+         {"fit_percent", c.screened ? nlohmann::json() : nlohmann::json(c.fit_percent)},
+         {"screened", c.screened},
+         {"delta_bic", c.delta_bic}});
+  if (d.selection.size() > 0)
+    out["selection_samples"] = {{"begin", d.selection.begin}, {"end", d.selection.end}};
+  out["notes"] = d.notes;
+  return out;
+}
+
+}  // namespace rheomag::diagnose

@@ -1,0 +1,104 @@
+// The baseline's nuisances during selection.
+
+#include "diagnose/diagnose_nuisances.hpp"
+
+#include <cmath>
+
+#include "diagnose/candidate.hpp"
+#include "diagnose/diagnose_text.hpp"
+
+namespace rheomag::diagnose {
+
+std::vector<bool> nuisances_held(const DiagnosisModel& model,
+                                 const std::vector<const Candidate*>& effects) {
+  std::vector<bool> held(model.layout(effects).size(), false);
+  const std::size_t n_static = model.static_params().size();
+  for (std::size_t j = n_static - model.nuisance_count(); j < n_static; ++j) held[j] = true;
+  return held;
+}
+
+std::vector<bool> held_in_candidates(const DiagnosisModel& model,
+                                     const std::vector<const Candidate*>& effects,
+                                     const std::vector<double>& values) {
+  auto held = nuisances_held(model, effects);
+  const auto layout = model.static_params();
+  for (std::size_t j = model.delay_index(); j < layout.size(); ++j) {
+    const auto& p = layout[j];
+    const double v = values[j];
+    const bool at_bound = p.log_scale ? v <= p.lower * 1.001 || v >= p.upper / 1.001
+                                      : std::abs(v - p.lower) < 5e-4 * (p.upper - p.lower) ||
+                                            std::abs(v - p.upper) < 5e-4 * (p.upper - p.lower);
+    if (!at_bound) held[j] = false;
+  }
+  return held;
+}
+
+void recalibrate_nuisances(const DiagnosisModel& model, ModelFit& fit, const FitSettings& base) {
+  auto free = held_in_candidates(model, fit.effects, fit.values);
+  bool any = false;
+  std::vector<bool> fixed(fit.values.size(), true);
+  for (std::size_t j = model.delay_index(); j < model.static_params().size(); ++j)
+    if (!free[j]) fixed[j] = false, any = true;
+  if (!any) return;
+  auto s = base;
+  s.fixed = fixed;
+  auto f = fit_model(model, fit.effects, fit.values, s);
+  if (f.sse < fit.sse) fit = std::move(f);
+}
+
+void polish_delay(const DiagnosisModel& model, ModelFit& fit) {
+  const std::size_t j = model.delay_index();
+  auto values = fit.values;
+  values[j] = 0.0;
+  double sse = 0.0;
+  const auto undelayed = model.predict(fit.effects, values);
+  const double delay = model.best_delay(undelayed, values, sse);
+  if (!(sse < fit.sse)) return;
+  fit.values[j] = delay;
+  fit.sse = sse;
+  fit.prediction = model.delayed(undelayed, fit.values);
+}
+
+std::vector<double> nuisance_start(const DiagnosisModel& model, int threads) {
+  const auto layout = model.static_params();
+  std::vector<double> start;
+  for (const auto& p : layout) start.push_back(p.nominal);
+  const std::size_t j = layout.size() - 1;
+  if (layout[j].name != "preyield_flow") return start;
+  std::vector<double> grid;
+  for (double v = layout[j].lower; v <= layout[j].upper * 1.0001; v *= std::sqrt(10.0))
+    grid.push_back(v);
+  return grid_search(model, {}, std::move(start), j, grid, nullptr, threads);
+}
+
+Nuisance nuisance_of(const DiagnosisModel& model, const ModelFit& fit) {
+  Nuisance u;
+  u.drive_noise = model.drive_noise();
+  u.velocity_filter_bandwidth = model.velocity_filter_bandwidth();
+  for (std::size_t j = 0; j < model.static_params().size(); ++j) {
+    if (fit.layout[j].name == "delay") u.delay = fit.values[j];
+    if (fit.layout[j].name == "preyield_flow") u.preyield_flow = fit.values[j];
+  }
+  u.delay_samples = u.delay / model.sample_interval();
+  if (model.peak_flow() > 0.0) u.preyield_fraction = u.preyield_flow / model.peak_flow();
+  u.drive_sampling = model.sampling();
+  const double frac = std::abs(u.delay_samples);
+  u.sampling =
+      std::string(u.drive_sampling == DriveSampling::held
+                      ? "drives held between samples (the coil drive a zero-order hold, each "
+                        "sample standing for the interval it begins; the motion read at the "
+                        "interval's middle)"
+                      : "drives linear between samples") +
+      "; " +
+      (frac < 0.25 ? std::string("output and drives aligned")
+                   : std::string(u.delay_samples > 0 ? "output behind" : "output ahead of") +
+                         " the drives by " + fmt(frac, 2) + " samples (channel skew" +
+                         (u.drive_sampling == DriveSampling::linear
+                              ? ", or drives recorded as held samples, which a linear reading "
+                                "sees half a sample late)"
+                              : ")")) +
+      "; calibrated, not physics";
+  return u;
+}
+
+}  // namespace rheomag::diagnose

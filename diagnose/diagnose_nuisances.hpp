@@ -1,0 +1,43 @@
+#pragma once
+// The baseline's nuisances (output delay, pre-yield smoothness) during selection: which are held
+// while candidates are fitted, their re-calibration, their start values and their report.
+
+#include <vector>
+
+#include "diagnose/diagnose_fit.hpp"
+#include "diagnose/diagnose_run.hpp"
+
+namespace rheomag::diagnose {
+
+/// The baseline's nuisances held (true) in the layout of `effects`: while candidates are
+/// fitted and screened, the recording's timing and pre-yield smoothness stay as calibrated; the
+/// held-out folds and the final joint re-fit free them (a fold fitted with them held can land
+/// in another optimum and score a real effect as useless).
+std::vector<bool> nuisances_held(const DiagnosisModel& model,
+                                 const std::vector<const Candidate*>& effects);
+
+/// Nuisances held while a candidate is screened and fitted: the pre-yield smoothness always;
+/// the output delay only when the baseline put it at its bound (it was free to absorb a
+/// candidate's phase, e.g. an inertia's lead or a compliance's lag, and is re-fitted with each
+/// candidate so that the comparison is between two models each with its best delay; at a bound
+/// it would make every step project onto the bound).
+std::vector<bool> held_in_candidates(const DiagnosisModel& model,
+                                     const std::vector<const Candidate*>& effects,
+                                     const std::vector<double>& values);
+
+/// Re-calibrates the nuisances of `fit` that are not at a bound with everything else held (after
+/// an accepted effect the pre-yield smoothing and delay it was compared with may no longer be
+/// the best, and the next candidate would be credited with their gain).
+void recalibrate_nuisances(const DiagnosisModel& model, ModelFit& fit, const FitSettings& base);
+
+/// Sets `fit`'s output delay to its best value for the rest of its parameters (no refit).
+void polish_delay(const DiagnosisModel& model, ModelFit& fit);
+
+/// Static start values; the pre-yield smoothness (when calibrated) from a decade grid, since a
+/// plug switch much narrower than a sample's flow step leaves the error flat in it.
+std::vector<double> nuisance_start(const DiagnosisModel& model, int threads);
+
+/// The nuisances of a fitted model.
+Nuisance nuisance_of(const DiagnosisModel& model, const ModelFit& fit);
+
+}  // namespace rheomag::diagnose

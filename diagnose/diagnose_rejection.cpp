@@ -1,0 +1,111 @@
+// Why a candidate that lowered BIC is still not accepted, and the findings that fade.
+
+#include "diagnose/diagnose_rejection.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "diagnose/candidate.hpp"
+#include "diagnose/diagnose_nuisances.hpp"
+#include "diagnose/diagnose_text.hpp"
+
+namespace rheomag::diagnose {
+
+std::string rejection(const DiagnosisModel& model, const ModelFit& current, const ModelFit& fit,
+                      const Candidate* effect, double delta_bic, const Evidence& evidence,
+                      bool away, const DiagnoseOptions& options, double& share) {
+  const std::string head = effect->name() + " lowered BIC by " + fmt(delta_bic) +
+                           (away ? " on the samples away from steps" : "");
+  // What the candidate itself explains: the gain over the current model, but no more than the
+  // error its fit gains back when the candidate alone is switched off (every other parameter
+  // as fitted). A fit that only finishes converging the current model's own parameters (a
+  // Coulomb force of a milli-newton beside a re-fitted compliance) is not credited with that.
+  const auto on_set = [away](const TwoSse& e) { return away ? e.away : e.all; };
+  const double sse_off =
+      on_set(sse_switched_off(model, fit, fit.effects.size() - 1, evidence).second);
+  const double sse_now =
+      away ? two_sse(model.measured(), current.prediction, evidence).away : current.sse;
+  const double sse_new = away ? two_sse(model.measured(), fit.prediction, evidence).away : fit.sse;
+  const double floor_sse = away ? evidence.floor_away : evidence.floor_all;
+  double explained_rms_in_sigma = 0.0;
+  if (!material(sse_now, std::min(sse_now, sse_off) - sse_new, floor_sse, options, share,
+                explained_rms_in_sigma)) {
+    // Practical significance: a material share of the residual energy above the noise floor.
+    if (share < options.min_share)
+      return head + " but removed only " + fmt(100 * share, 2) +
+             " % of the residual energy above the noise floor: not accepted";
+    // Materiality against the noise: the output change it explains, in rms over the recording,
+    // at least min_noise_multiple noise standard deviations (floor_sse = n sigma^2).
+    return head + " but the output change it explains is only " + fmt(explained_rms_in_sigma, 2) +
+           " noise standard deviations in rms (at least " + fmt(options.min_noise_multiple, 2) +
+           " needed): below the noise, not accepted";
+  }
+  // A time constant shorter than one sample interval cannot be told from the recording's own
+  // timing (channel skew, held drives), which the delay nuisance already absorbs.
+  if (const double tau = effect->timing_lag(model, fit); tau > 0.0 && tau < model.sample_interval())
+    return head + " with a time constant of " + fmt(1e3 * tau) +
+           " ms, shorter than one sample interval (" + fmt(1e3 * model.sample_interval()) +
+           " ms): not told apart from the recording's timing; not accepted";
+  // What the candidate itself finds implausible (e.g. a hysteresis loop inside the noise).
+  if (auto why = effect->implausible(model, fit); !why.empty()) return head + why;
+  // Identifiability: the effect's size parameter known to a relative standard error below
+  // max_relative_se.
+  const double rse =
+      size_relative_se(model, fit, options.threads, away ? evidence.away : std::vector<bool>{});
+  if (!(rse < options.max_relative_se))
+    return head + " but its " + effect->params(model).front().name +
+           " is not identified (relative standard error " +
+           (std::isfinite(rse) ? fmt(100 * rse, 2) + " %" : std::string("unbounded")) +
+           "): not accepted";
+  return "";
+}
+
+void drop_faded_findings(const DiagnosisModel& model, ModelFit& fit, const Evidence& evidence,
+                         const DiagnoseOptions& options, Diagnosis& d) {
+  bool dropped = true;
+  while (dropped && fit.effects.size() > 1) {
+    dropped = false;
+    for (std::size_t i = 0; i < fit.effects.size(); ++i) {
+      const auto [without, sse_off] = sse_switched_off(model, fit, i, evidence);
+      if (!std::isfinite(sse_off.all)) continue;
+      const TwoSse with{fit.sse, two_sse(model.measured(), fit.prediction, evidence).away};
+      double share = 0.0, share_away = 0.0, rms = 0.0;
+      if (material(sse_off.all, sse_off.all - with.all, evidence.floor_all, options, share, rms) ||
+          (!evidence.away.empty() && material(sse_off.away, sse_off.away - with.away,
+                                              evidence.floor_away, options, share_away, rms)))
+        continue;
+      const Candidate* e = fit.effects[i];
+      d.notes.push_back(e->name() +
+                        " was accepted in forward selection but in the joint "
+                        "re-fit it explains only " +
+                        fmt(100 * std::max(share, share_away), 2) +
+                        " % of the residual energy above the noise floor: not reported");
+      d.findings.erase(std::remove_if(d.findings.begin(), d.findings.end(),
+                                      [e](const Finding& f) { return f.effect == e; }),
+                       d.findings.end());
+      // The model without it, its parameters as fitted (standard errors from one evaluation).
+      FitSettings s;
+      s.max_iterations = 0;
+      s.threads = options.threads;
+      fit = fit_model(model, without.effects, without.values, s);
+      dropped = true;
+      break;
+    }
+  }
+}
+
+double size_relative_se(const DiagnosisModel& model, const ModelFit& fit, int threads,
+                        const std::vector<bool>& mask) {
+  FitSettings s;
+  s.mask = mask;
+  s.max_iterations = 0;
+  s.threads = threads;
+  s.fixed = held_in_candidates(model, fit.effects, fit.values);
+  const auto f = fit_model(model, fit.effects, fit.values, s);
+  const std::size_t j = f.layout.size() - f.effects.back()->params(model).size();
+  const double v = std::abs(f.values[j]);
+  return v > 0.0 ? f.standard_errors[j] / v : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace rheomag::diagnose
