@@ -108,10 +108,10 @@ if in_group ident; then
 fi
 if in_group diagnose; then
   run diagnose diagnose "$data/mrdamper/mrdamper.csv" --meta "$src/tests/data/diagnosis/mrdamper.toml" \
-    --samples 0:4000 --out OUT/diag --json --quiet
+    --samples 0:3000 --out OUT/diag --json --quiet
   "$old" fit "$data/mrdamper/mrdamper.csv" --model bingham --json --quiet >"$work/model.json" 2>/dev/null
   run diagnose_baseline diagnose "$data/mrdamper/mrdamper.csv" --baseline "$work/model.json" \
-    --samples 0:4000 --out OUT/diagb --json --quiet
+    --samples 0:3000 --out OUT/diagb --json --quiet
   # Whole real recordings (each under a minute on an idle machine): the constant-field damper,
   # a current-driven damper, and a fitted damper model as the baseline.
   run diagnose_mrdamper diagnose "$data/mrdamper/mrdamper.csv" \
