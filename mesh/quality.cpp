@@ -9,6 +9,8 @@
 #include <numbers>
 #include <unordered_map>
 
+#include "mesh/triangle.hpp"
+
 namespace rheomag::mesh {
 
 namespace {
@@ -73,7 +75,7 @@ MeshQuality measure_quality(const Mesh& mesh, const Pslg& pslg) {
     const Point& c = mesh.nodes[static_cast<std::size_t>(tri[2])];
     const double ab = length(a, b), bc = length(b, c), ca = length(c, a);
     const double longest = std::max({ab, bc, ca});
-    const double area = 0.5 * std::abs((b.r - a.r) * (c.z - a.z) - (b.z - a.z) * (c.r - a.r));
+    const double area = triangle_area(a, b, c);
     q.min_angle = std::min({q.min_angle, angle(a, b, c), angle(b, c, a), angle(c, a, b)});
     q.max_aspect_ratio =
         std::max(q.max_aspect_ratio, longest * (ab + bc + ca) / (4.0 * std::sqrt(3.0) * area));
