@@ -109,6 +109,13 @@ CoilSpec coil_spec(const magnetostatics::MagnetostaticSolver& solver, const Valv
   return spec;
 }
 
+std::optional<double> wire_resistance(const cases::Case& c,
+                                      const magnetostatics::MagnetostaticSolver& solver) {
+  const ValveOptions options = read_valve_options(c);
+  if (options.wire.empty()) return std::nullopt;
+  return coil_properties(coil_spec(solver, options), 0.0, 0.0).resistance;
+}
+
 SolvedValve::SolvedValve(const magnetostatics::MagnetostaticSolver& solver,
                          const magnetostatics::Solution& solution,
                          const magnetostatics::Results& results, const fluid::Fluid& fluid,
