@@ -106,6 +106,25 @@ MeshQuality measure_quality(const Mesh& mesh, const Pslg& pslg) {
   return q;
 }
 
+nlohmann::json quality_json(const MeshQuality& q) {
+  nlohmann::json regions = nlohmann::json::array();
+  for (const RegionQuality& r : q.regions) {
+    nlohmann::json row = {
+        {"name", r.name}, {"elements", r.elements}, {"area", r.area}, {"max_edge", r.max_edge}};
+    if (r.gap != GapKind::none) {
+      row["thickness"] = r.thickness;
+      row["elements_across"] = r.elements_across;
+    }
+    regions.push_back(row);
+  }
+  return {{"elements", q.elements},
+          {"nodes", q.nodes},
+          {"order", q.order},
+          {"min_angle_deg", q.min_angle},
+          {"max_aspect_ratio", q.max_aspect_ratio},
+          {"regions", regions}};
+}
+
 std::string format_quality(const MeshQuality& q) {
   char line[256];
   std::snprintf(line, sizeof line,
