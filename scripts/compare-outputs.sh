@@ -22,7 +22,8 @@ failures=0
 # Lines that carry a wall-clock time or a temporary path, removed before comparing.
 mask() {
   sed -E -e 's#'"$work"'/(old|new)#OUT#g' \
-    -e '/"(seconds|wall_seconds|cpu_seconds|elapsed[a-z_]*|time_s|solve_time[a-z_]*)"/d' \
+    -e '/"(seconds|wall_seconds|cpu_seconds|mesh_seconds|elapsed[a-z_]*|time_s|solve_time[a-z_]*)"/d' \
+    -e 's/, [0-9.]+ s$//' -e '/designs\/min/d' \
     -e 's/[0-9.]+ ?(s|ms) (wall|cpu|elapsed)//g' -e 's/(in|took) [0-9.]+ ?s\b//g' \
     -e '/(left|ETA|elapsed)/d' "$1"
 }
