@@ -1,35 +1,26 @@
 // rheomag flow: pressure drop of one MR-fluid gap (annular, slit or radial) at a given yield
 // stress and flow rate, optionally with the inner wall moving (mixed mode). The physics lives in
-// fluid/; this file only maps options to it.
+// fluid/gap_flow.hpp; this file only maps options to it.
 
 #include <CLI/CLI.hpp>
-#include <cstdio>
+#include <iostream>
 #include <memory>
-#include <optional>
 #include <string>
+#include <string_view>
 
 #include "app/command.hpp"
-#include "core/enum_names.hpp"
 #include "core/error.hpp"
-#include "fluid/mixed_mode.hpp"
-#include "fluid/radial_bingham.hpp"
-#include "fluid/slit_bingham.hpp"
+#include "fluid/gap_flow.hpp"
 
 namespace {
 
-enum class GapKind { annular, slit, radial };
-enum class FlowModel { exact, approx };
+using rheomag::fluid::FlowGapKind;
+using rheomag::fluid::kFlowGapKindNames;
+using rheomag::fluid::kFlowModelNames;
 
-constexpr auto kGapKindNames = rheomag::enum_names<GapKind>(
-    {{GapKind::annular, "annular"}, {GapKind::slit, "slit"}, {GapKind::radial, "radial"}});
-constexpr auto kFlowModelNames =
-    rheomag::enum_names<FlowModel>({{FlowModel::exact, "exact"}, {FlowModel::approx, "approx"}});
-
+/// The options of `rheomag flow`: the gap and its flow, and the output form.
 struct FlowOptions {
-  GapKind kind = GapKind::annular;
-  FlowModel model = FlowModel::exact;
-  double gap = 0, length = 0, radius = 0, width = 0, r_in = 0, r_out = 0;
-  double tau_y = 0, viscosity = 0, flow = 0, wall_velocity = 0, flow_index = 1.0;
+  rheomag::fluid::GapFlowInput gap;
   bool json = false;
 };
 
@@ -44,91 +35,21 @@ void forbid(const CLI::App& cmd, const char* option, std::string_view kind) {
                               std::string(kind));
 }
 
-/// The result of one gap: the drop, plus the mixed-mode details for annular and slit gaps.
-struct FlowResult {
-  rheomag::fluid::GapPressureDrop drop;
-  std::optional<rheomag::fluid::MixedModeDrop> mixed;
-};
-
-FlowResult compute(const CLI::App& cmd, const FlowOptions& o) {
-  using namespace rheomag::fluid;
-  const std::string_view kind = kGapKindNames.name(o.kind);
+void run_flow(const CLI::App& cmd, const FlowOptions& o) {
+  const FlowGapKind kind = o.gap.kind;
   for (const char* option : {"--length", "--radius", "--width", "--r-in", "--r-out"}) {
     const std::string_view name(option);
-    const bool used = o.kind == GapKind::annular ? (name == "--length" || name == "--radius")
-                      : o.kind == GapKind::slit  ? (name == "--length" || name == "--width")
-                                                 : (name == "--r-in" || name == "--r-out");
-    used ? require(cmd, option, kind) : forbid(cmd, option, kind);
+    const bool used = kind == FlowGapKind::annular ? (name == "--length" || name == "--radius")
+                      : kind == FlowGapKind::slit  ? (name == "--length" || name == "--width")
+                                                   : (name == "--r-in" || name == "--r-out");
+    used ? require(cmd, option, kFlowGapKindNames.name(kind))
+         : forbid(cmd, option, kFlowGapKindNames.name(kind));
   }
-  const bool moving = o.wall_velocity != 0.0;
-  if (o.model == FlowModel::approx && (moving || o.flow_index != 1.0 || o.kind == GapKind::slit))
-    throw rheomag::InputError(
-        "--model approx (paper 000) is for a still-walled Bingham annular or radial gap only");
-  if (o.kind == GapKind::radial && (moving || o.flow_index != 1.0))
-    throw rheomag::InputError(
-        "--wall-velocity and --flow-index apply to --kind annular and slit only");
-  const GapRheology fluid{o.tau_y, o.viscosity, o.flow_index};
-  FlowResult result;
-  if (o.kind == GapKind::radial) {
-    const RadialGeometry g{o.gap, o.r_in, o.r_out};
-    result.drop = radial_bingham(g, o.tau_y, o.viscosity, o.flow,
-                                 o.model == FlowModel::exact ? SlitLaw::exact : SlitLaw::paper000);
-  } else if (o.model == FlowModel::approx) {
-    result.drop =
-        annulus_paper000(AnnulusGeometry{o.gap, o.radius, o.length}, o.tau_y, o.viscosity, o.flow);
-  } else {
-    result.mixed = o.kind == GapKind::annular
-                       ? annulus_mixed_mode(AnnulusGeometry{o.gap, o.radius, o.length}, fluid,
-                                            o.wall_velocity, o.flow)
-                       : slit_mixed_mode(SlitGeometry{o.gap, o.width, o.length}, fluid,
-                                         o.wall_velocity, o.flow);
-    result.drop = result.mixed->drop;
-  }
-  return result;
-}
-
-void run_flow(const CLI::App& cmd, const FlowOptions& o) {
-  const FlowResult result = compute(cmd, o);
-  const auto& d = result.drop;
-  const std::string_view kind = kGapKindNames.name(o.kind);
-  const std::string_view model = kFlowModelNames.name(o.model);
-  const std::string regime =
-      result.mixed ? std::string(rheomag::fluid::kMixedRegimeNames.name(result.mixed->regime))
-                   : std::string(o.tau_y > 0.0 ? "floating_plug" : "fully_yielded");
-  if (o.json) {
-    rheomag::app::print(
-        "{\"kind\": \"%s\", \"model\": \"%s\", \"wall_velocity\": %.12g, \"regime\": \"%s\", "
-        "\"dp\": %.12g, \"dp_yield\": %.12g, \"dp_viscous\": %.12g, \"plug_fraction\": %.12g, "
-        "\"bingham_number\": %.12g",
-        std::string(kind).c_str(), std::string(model).c_str(), o.wall_velocity, regime.c_str(),
-        d.dp, d.dp_yield, d.dp_viscous, d.plug_fraction, d.bingham_number);
-    if (result.mixed)
-      rheomag::app::print(
-          ", \"plug_start\": %.12g, \"plug_end\": %.12g, \"moving_wall_stress\": %.12g, "
-          "\"fixed_wall_stress\": %.12g, \"moving_wall_force\": %.12g",
-          result.mixed->plug_start, result.mixed->plug_end, result.mixed->moving_wall_stress,
-          result.mixed->fixed_wall_stress, result.mixed->moving_wall_force);
-    rheomag::app::print("}\n");
-    return;
-  }
-  rheomag::app::print("%s gap, %s model, wall velocity %g m/s\n", std::string(kind).c_str(),
-                      std::string(model).c_str(), o.wall_velocity);
-  rheomag::app::print("  pressure drop        dp            = %.6g Pa (%.4g bar)\n", d.dp,
-                      d.dp * 1e-5);
-  rheomag::app::print("  viscous part         dp_viscous    = %.6g Pa\n", d.dp_viscous);
-  rheomag::app::print("  yield part           dp_yield      = %.6g Pa\n", d.dp_yield);
-  rheomag::app::print("  regime                               %s%s\n", regime.c_str(),
-                      o.kind == GapKind::radial ? " (at the mean radius)" : "");
-  rheomag::app::print("  plug fraction        delta         = %.6g%s\n", d.plug_fraction,
-                      o.kind == GapKind::radial ? " (at the mean radius)" : "");
-  rheomag::app::print("  Bingham number       Bi            = %.6g%s\n", d.bingham_number,
-                      o.kind == GapKind::radial ? " (at the mean radius)" : "");
-  if (result.mixed) {
-    rheomag::app::print("  plug                 from %.6g to %.6g m off the moving wall\n",
-                        result.mixed->plug_start, result.mixed->plug_end);
-    rheomag::app::print("  moving-wall force    F_wall        = %.6g N (shear stress %.6g Pa)\n",
-                        result.mixed->moving_wall_force, result.mixed->moving_wall_stress);
-  }
+  const rheomag::fluid::GapFlowResult result = rheomag::fluid::gap_flow(o.gap);
+  if (o.json)
+    rheomag::app::print_json(rheomag::fluid::gap_flow_json(result), 2);
+  else
+    std::cout << rheomag::fluid::gap_flow_text(result);
 }
 
 const bool registered = rheomag::app::register_command([](CLI::App& root) {
@@ -152,30 +73,30 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
   cmd->add_option_function<std::string>(
          "--kind",
          [options](const std::string& kind) {
-           options->kind = kGapKindNames.parse(kind, "--kind");
+           options->gap.kind = kFlowGapKindNames.parse(kind, "--kind");
          },
          "Gap kind: annular, slit or radial")
       ->required()
       ->check(CLI::IsMember({"annular", "slit", "radial"}));
-  cmd->add_option("--gap", options->gap, "Gap clearance h [m]")->required();
-  cmd->add_option("--length", options->length, "annular, slit: active length L [m]");
-  cmd->add_option("--radius", options->radius, "annular: mean radius R of the gap [m]");
-  cmd->add_option("--width", options->width, "slit: width b across the flow [m]");
-  cmd->add_option("--r-in", options->r_in, "radial: inner radius [m]");
-  cmd->add_option("--r-out", options->r_out, "radial: outer radius [m]");
-  cmd->add_option("--tau-y", options->tau_y, "Yield stress tau_y [Pa] (>= 0)")->required();
-  cmd->add_option("--viscosity", options->viscosity,
+  cmd->add_option("--gap", options->gap.gap, "Gap clearance h [m]")->required();
+  cmd->add_option("--length", options->gap.length, "annular, slit: active length L [m]");
+  cmd->add_option("--radius", options->gap.radius, "annular: mean radius R of the gap [m]");
+  cmd->add_option("--width", options->gap.width, "slit: width b across the flow [m]");
+  cmd->add_option("--r-in", options->gap.r_in, "radial: inner radius [m]");
+  cmd->add_option("--r-out", options->gap.r_out, "radial: outer radius [m]");
+  cmd->add_option("--tau-y", options->gap.tau_y, "Yield stress tau_y [Pa] (>= 0)")->required();
+  cmd->add_option("--viscosity", options->gap.viscosity,
                   "Plastic viscosity mu [Pa s] (consistency K [Pa s^n] with --flow-index)")
       ->required();
-  cmd->add_option("--flow-index", options->flow_index,
+  cmd->add_option("--flow-index", options->gap.flow_index,
                   "Herschel-Bulkley exponent n (default 1: Bingham; annular and slit)");
-  cmd->add_option("--flow", options->flow, "Volume flow rate Q [m^3/s]")->required();
-  cmd->add_option("--wall-velocity", options->wall_velocity,
+  cmd->add_option("--flow", options->gap.flow, "Volume flow rate Q [m^3/s]")->required();
+  cmd->add_option("--wall-velocity", options->gap.wall_velocity,
                   "Velocity U of the inner (moving) wall along the flow [m/s] (default 0)");
   cmd->add_option_function<std::string>(
          "--model",
          [options](const std::string& model) {
-           options->model = kFlowModelNames.parse(model, "--model");
+           options->gap.model = kFlowModelNames.parse(model, "--model");
          },
          "exact (default) or approx (paper 000 eqs. 2-3)")
       ->check(CLI::IsMember({"exact", "approx"}));

@@ -4,13 +4,11 @@
 #include <memory>
 #include <optional>
 #include <string>
-
-#include <nlohmann/json.hpp>
+#include <vector>
 
 #include "app/command.hpp"
 #include "case/case_file.hpp"
-#include "magnetostatics/domain.hpp"
-#include "mesh/mesher.hpp"
+#include "magnetostatics/solve_problem.hpp"
 #include "mesh/quality.hpp"
 #include "mesh/vtu_writer.hpp"
 
@@ -25,33 +23,10 @@ struct MeshCommandOptions {
   bool json = false;
 };
 
-nlohmann::json quality_json(const mesh::MeshQuality& q) {
-  nlohmann::json regions = nlohmann::json::array();
-  for (const mesh::RegionQuality& r : q.regions) {
-    nlohmann::json row = {
-        {"name", r.name}, {"elements", r.elements}, {"area", r.area}, {"max_edge", r.max_edge}};
-    if (r.gap != mesh::GapKind::none) {
-      row["thickness"] = r.thickness;
-      row["elements_across"] = r.elements_across;
-    }
-    regions.push_back(row);
-  }
-  return {{"elements", q.elements},
-          {"nodes", q.nodes},
-          {"order", q.order},
-          {"min_angle_deg", q.min_angle},
-          {"max_aspect_ratio", q.max_aspect_ratio},
-          {"regions", regions}};
-}
-
 void run(const MeshCommandOptions& o) {
   cases::Case c = cases::load_case(o.case_path);
   if (o.order) c.problem.order = *o.order;
-  const cases::Problem closed = magnetostatics::close_domain(c.problem);
-  mesh::MeshOptions options;
-  options.order = closed.order;
-  options.min_gap_elements = closed.min_gap_elements;
-  const mesh::Mesh m = mesh::generate_mesh(closed.geometry, options);
+  const auto [closed, m] = magnetostatics::close_and_mesh(c.problem);
   const mesh::MeshQuality quality = mesh::measure_quality(m, closed.geometry);
   if (!o.vtk.empty()) {
     std::vector<std::string> names;
@@ -59,7 +34,7 @@ void run(const MeshCommandOptions& o) {
     mesh::write_vtu(o.vtk, m, {}, names);
   }
   if (o.json) {
-    nlohmann::json j = quality_json(quality);
+    nlohmann::json j = mesh::quality_json(quality);
     j["case"] = c.name;
     if (!o.vtk.empty()) j["vtk"] = o.vtk;
     rheomag::app::print_json(j, 2);

@@ -1,6 +1,5 @@
 // rheomag solve: magnetostatic solve of a TOML case or a FEMM .fem model.
 
-#include <array>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -11,8 +10,10 @@
 #include "app/command.hpp"
 #include "case/case_file.hpp"
 #include "core/error.hpp"
+#include "magnetostatics/field_probe.hpp"
 #include "magnetostatics/report.hpp"
 #include "magnetostatics/solve_problem.hpp"
+#include "magnetostatics/sweep_report.hpp"
 #include "magnetostatics3d/report3d.hpp"
 #include "magnetostatics3d/solve3d.hpp"
 
@@ -92,63 +93,23 @@ void run(const SolveCommandOptions& o) {
   std::vector<SweepPoint> table;
   if (!o.sweep.empty()) table = solved.solver->sweep(0, o.sweep);
   if (!o.vtk.empty()) write_results_vtu(o.vtk, *solved.solver, solved.solution, solved.results);
-  if (o.points.size() % 2 != 0)
-    throw rheomag::InputError("--point: expected pairs r,z [m], got " +
-                              std::to_string(o.points.size()) + " numbers");
-  nlohmann::json probes = nlohmann::json::array();
-  for (std::size_t k = 0; k + 1 < o.points.size(); k += 2) {
-    std::array<double, 2> b{};
-    if (!flux_density_at(*solved.solver, solved.solution, {o.points[k], o.points[k + 1]}, -1, b))
-      throw rheomag::InputError("--point " + std::to_string(o.points[k]) + "," +
-                                std::to_string(o.points[k + 1]) + ": not inside the mesh");
-    probes.push_back({{"r", o.points[k]},
-                      {"z", o.points[k + 1]},
-                      {"b_r", b[0]},
-                      {"b_z", b[1]},
-                      {"b", std::hypot(b[0], b[1])}});
-  }
+  const std::vector<FieldProbe> probes = probe_field(*solved.solver, solved.solution, o.points);
 
   if (o.json) {
     nlohmann::json j = results_json(*solved.solver, solved.results);
     j["case"] = c.name;
     j["mesh_seconds"] = solved.mesh_seconds;
     if (!o.vtk.empty()) j["vtk"] = o.vtk;
-    if (!probes.empty()) j["points"] = probes;
-    if (!table.empty()) {
-      nlohmann::json rows = nlohmann::json::array();
-      for (const SweepPoint& p : table)
-        rows.push_back({{"current", p.current},
-                        {"flux_linkage", p.flux_linkage},
-                        {"inductance", p.secant_inductance},
-                        {"incremental_inductance", p.incremental_inductance},
-                        {"newton_iterations", p.newton_iterations}});
-      j["sweep"] = rows;
-    }
+    if (!probes.empty()) j["points"] = probes_json(probes);
+    if (!table.empty()) j["sweep"] = sweep_json(table);
     rheomag::app::print_json(j, 2);
     return;
   }
   std::cout << "case " << c.name << " (" << o.case_path << ")\n";
   if (!c.description.empty()) std::cout << c.description << "\n";
   std::cout << results_summary(*solved.solver, solved.results);
-  if (!table.empty()) {
-    std::cout << "\nlambda(I) table of circuit " << problem.circuits.front().name << "\n"
-              << "  current [A]  lambda [mWb]  L=lambda/I [mH]  dlambda/dI [mH]  Newton\n";
-    char line[160];
-    for (const SweepPoint& p : table) {
-      std::snprintf(line, sizeof line, "  %11.4g %13.5g %16.5g %16.5g %7d\n", p.current,
-                    p.flux_linkage * 1e3, p.secant_inductance * 1e3, p.incremental_inductance * 1e3,
-                    p.newton_iterations);
-      std::cout << line;
-    }
-  }
-  if (!probes.empty()) std::cout << "\n";
-  for (const auto& p : probes) {
-    char line[160];
-    std::snprintf(line, sizeof line, "B at (%.6g, %.6g) m: B_r %.6g T, B_z %.6g T, |B| %.6g T\n",
-                  p["r"].get<double>(), p["z"].get<double>(), p["b_r"].get<double>(),
-                  p["b_z"].get<double>(), p["b"].get<double>());
-    std::cout << line;
-  }
+  if (!table.empty()) std::cout << sweep_text(table, problem.circuits.front().name);
+  std::cout << probes_text(probes);
   if (!o.vtk.empty()) std::cout << "\nwrote " << o.vtk << " (open it in ParaView)\n";
 }
 

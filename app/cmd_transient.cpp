@@ -2,23 +2,17 @@
 
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 
 #include "app/command.hpp"
 #include "case/case_file.hpp"
-#include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "magnetostatics/report.hpp"
-#include "magnetostatics/results.hpp"
-#include "transient/case_options.hpp"
+#include "transient/from_case.hpp"
 #include "transient/report.hpp"
-#include "transient/transient_solver.hpp"
-#include "valve/coil.hpp"
+#include "transient/vtk_series.hpp"
 #include "valve/solved_valve.hpp"
 
 namespace {
@@ -42,58 +36,15 @@ struct TransientCliOptions {
 
 /// Coil resistance: --resistance, else [transient] resistance, else from the winding's wire.
 std::optional<double> coil_resistance(const TransientCliOptions& o, const cases::Case& c,
-                                      const transient::TransientCaseOptions& t,
-                                      const magnetostatics::MagnetostaticSolver& statics) {
+                                      const transient::CaseTransient& set_up) {
   if (o.resistance) {
     if (!(*o.resistance > 0.0) || !std::isfinite(*o.resistance))
       throw InputError("--resistance: expected a resistance > 0 Ohm");
     return o.resistance;
   }
-  if (t.resistance) return t.resistance;
-  const valve::ValveOptions valve_options = valve::read_valve_options(c);
-  if (valve_options.wire.empty()) return std::nullopt;
-  const valve::CoilSpec spec = valve::coil_spec(statics, valve_options);
-  return valve::coil_properties(spec, 0.0, 0.0).resistance;
+  if (set_up.case_options.resistance) return set_up.case_options.resistance;
+  return valve::wire_resistance(c, *set_up.statics);
 }
-
-/// Writes every state as DIR/state_NNNNN.vtu plus DIR/series.pvd (ParaView's time series).
-class VtkSeries {
- public:
-  VtkSeries(std::filesystem::path dir, const magnetostatics::MagnetostaticSolver& statics)
-      : dir_(std::move(dir)), statics_(statics) {
-    std::error_code error;
-    std::filesystem::create_directories(dir_, error);
-    if (error) throw InputError("--vtk-series: cannot create " + dir_.string());
-  }
-  void write(const transient::TransientState& s) {
-    char name[32];
-    std::snprintf(name, sizeof name, "state_%05d.vtu", count_++);
-    magnetostatics::Solution solution;
-    solution.currents.assign(statics_.problem().circuits.size(), 0.0);
-    for (std::size_t c = 0; c < solution.currents.size(); ++c)
-      solution.currents[c] = statics_.problem().circuits[c].current;
-    solution.currents[0] = s.current;
-    solution.a = s.a;
-    for (int c = 0; c < static_cast<int>(solution.currents.size()); ++c)
-      solution.flux_linkage.push_back(statics_.circuit_source(c).dot(s.a));
-    const auto results = magnetostatics::compute_results(statics_, solution);
-    magnetostatics::write_results_vtu((dir_ / name).string(), statics_, solution, results);
-    collection_ << "    <DataSet timestep=\"" << s.time << "\" part=\"0\" file=\"" << name
-                << "\"/>\n";
-  }
-  void finish() {
-    write_file_atomically(dir_ / "series.pvd",
-                          "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
-                          "version=\"0.1\">\n  <Collection>\n" +
-                              collection_.str() + "  </Collection>\n</VTKFile>\n");
-  }
-
- private:
-  std::filesystem::path dir_;
-  const magnetostatics::MagnetostaticSolver& statics_;
-  std::ostringstream collection_;
-  int count_ = 0;
-};
 
 void run(const TransientCliOptions& o) {
   if (o.current.has_value() == o.voltage.has_value())
@@ -104,21 +55,17 @@ void run(const TransientCliOptions& o) {
   const cases::Case c = cases::load_case(o.case_path);
   if (c.problem.circuits.empty())
     throw InputError(o.case_path + ": the case has no circuit to drive");
-  const transient::TransientCaseOptions case_options = transient::read_transient_case(c);
-  auto statics = magnetostatics::make_solver(c.problem);
-  transient::TransientSolver solver(
-      *statics, transient::eddy_coefficients(statics->problem(), case_options.remedies));
+  const transient::CaseTransient set_up = transient::transient_from_case(c);
 
-  transient::TransientOptions options;
-  options.drive = o.voltage ? transient::Drive::voltage : transient::Drive::current;
-  options.value = o.voltage ? *o.voltage : *o.current;
+  transient::TransientOptions options =
+      transient::step_options(o.voltage ? transient::Drive::voltage : transient::Drive::current,
+                              o.voltage ? *o.voltage : *o.current, o.duration);
   options.from_current = o.from;
-  options.duration = o.duration;
   options.steps = o.steps;
   options.tolerance = o.tolerance;
   options.newton.max_iterations = o.newton_iterations;
   options.scheme = transient::kTimeSchemeNames.parse(o.scheme, "--scheme");
-  const std::optional<double> resistance = coil_resistance(o, c, case_options, *statics);
+  const std::optional<double> resistance = coil_resistance(o, c, set_up);
   if (o.voltage && !resistance)
     throw InputError(o.case_path +
                      ": a voltage step needs the coil resistance: give the wire ([valve] wire = "
@@ -133,11 +80,12 @@ void run(const TransientCliOptions& o) {
       std::cerr << "rheomag transient: " << e.detail << " (" << e.elapsed << " s)\n";
     };
   }
-  std::unique_ptr<VtkSeries> series;
-  if (!o.vtk_series.empty()) series = std::make_unique<VtkSeries>(o.vtk_series, *statics);
+  std::unique_ptr<transient::VtkSeries> series;
+  if (!o.vtk_series.empty())
+    series = std::make_unique<transient::VtkSeries>(o.vtk_series, *set_up.statics);
   transient::StateCallback on_state;
   if (series) on_state = [&](const transient::TransientState& s) { series->write(s); };
-  const transient::TransientResult result = solver.run(options, on_state);
+  const transient::TransientResult result = set_up.solver->run(options, on_state);
   if (series) series->finish();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -6,6 +6,8 @@
 #include <iostream>
 #include <vector>
 
+#include "core/format_text.hpp"
+
 namespace rheomag::app {
 
 void FiniteLineGuard::pass_line() {
@@ -73,16 +75,9 @@ void print_json(const nlohmann::json& j, int indent) {
 void print(const char* format, ...) {
   va_list args;
   va_start(args, format);
-  va_list copy;
-  va_copy(copy, args);
-  const int n = std::vsnprintf(nullptr, 0, format, copy);
-  va_end(copy);
-  if (n > 0) {
-    std::vector<char> text(static_cast<std::size_t>(n) + 1);
-    std::vsnprintf(text.data(), text.size(), format, args);
-    std::cout.write(text.data(), n);
-  }
+  const std::string text = format_text_v(format, args);
   va_end(args);
+  std::cout << text;
 }
 
 }  // namespace rheomag::app

@@ -17,6 +17,7 @@
 #include "core/constants.hpp"
 #include "core/error.hpp"
 #include "mesh/mesher.hpp"
+#include "mesh/triangle.hpp"
 
 namespace rheomag::cases {
 
@@ -106,14 +107,14 @@ std::vector<Label> block_labels(const Problem& problem, const mesh::Mesh& m) {
     if (m.region[e] != g.default_region) continue;
     const auto& t = m.triangles[e];
     const mesh::Point a = m.nodes[t[0]], b = m.nodes[t[1]], c = m.nodes[t[2]];
-    const double area = 0.5 * std::abs((b.r - a.r) * (c.z - a.z) - (c.r - a.r) * (b.z - a.z));
+    const double area = mesh::triangle_area(a, b, c);
     auto& best = largest[root(parent, e)];
     if (area > best.first) best = {area, e};
   }
   for (const auto& [component, best] : largest) {
     const auto& t = m.triangles[best.second];
-    const mesh::Point centroid{(m.nodes[t[0]].r + m.nodes[t[1]].r + m.nodes[t[2]].r) / 3.0,
-                               (m.nodes[t[0]].z + m.nodes[t[1]].z + m.nodes[t[2]].z) / 3.0};
+    const mesh::Point centroid =
+        mesh::triangle_centroid(m.nodes[t[0]], m.nodes[t[1]], m.nodes[t[2]]);
     labels.push_back({centroid, g.default_region, size_of(g.default_region)});
   }
   return labels;

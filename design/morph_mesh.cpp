@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mesh/triangle.hpp"
+
 namespace rheomag::design {
 
 namespace {
@@ -48,10 +50,6 @@ bool extended_knots(const std::vector<double>& from, const std::vector<double>& 
   return from_knots.size() >= 2;
 }
 
-double signed_area(const mesh::Point& a, const mesh::Point& b, const mesh::Point& c) {
-  return 0.5 * ((b.r - a.r) * (c.z - a.z) - (c.r - a.r) * (b.z - a.z));
-}
-
 }  // namespace
 
 Breakpoints geometry_breakpoints(const mesh::Pslg& pslg) {
@@ -85,7 +83,7 @@ std::optional<mesh::Mesh> morph_mesh(const mesh::Mesh& mesh, const Breakpoints& 
     out.nodes[i].z = map_coordinate(mesh.nodes[i].z, z_from, z_to);
   }
   for (const auto& t : out.triangles) {
-    if (!(signed_area(out.nodes[t[0]], out.nodes[t[1]], out.nodes[t[2]]) > 0.0))
+    if (!(mesh::signed_triangle_area(out.nodes[t[0]], out.nodes[t[1]], out.nodes[t[2]]) > 0.0))
       return std::nullopt;
     if (out.order == 2) {
       for (int e = 0; e < 3; ++e) {

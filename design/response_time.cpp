@@ -5,8 +5,7 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "transient/case_options.hpp"
-#include "transient/transient_solver.hpp"
+#include "transient/from_case.hpp"
 
 namespace rheomag::design {
 
@@ -16,21 +15,17 @@ ResponseTime response_time(magnetostatics::MagnetostaticSolver& statics, const c
   if (!(options.supply_voltage > 0.0) || !(options.resistance > 0.0) ||
       !(options.time_constant > 0.0) || options.steps < 1 || !(options.span_factor > 0.0))
     throw InputError(where + ": response_time needs supply_voltage > 0, a coil resistance and L/R");
-  transient::TransientSolver solver(
-      statics,
-      transient::eddy_coefficients(statics.problem(), transient::read_transient_case(c).remedies));
+  const transient::CaseTransient set_up = transient::transient_from_case(c, statics);
   ResponseTime out;
   auto slowest_gap_t90 = [&](double from_current, double voltage) {
     double span = options.span_factor * options.time_constant;
     for (int attempt = 0; attempt < 4; ++attempt, span *= 2.0) {
-      transient::TransientOptions o;
-      o.drive = transient::Drive::voltage;
+      transient::TransientOptions o =
+          transient::step_options(transient::Drive::voltage, voltage, span);
       o.from_current = from_current;
-      o.value = voltage;
       o.resistance = options.resistance;
-      o.duration = span;
       o.steps = options.steps;
-      const transient::TransientResult r = solver.run(o);
+      const transient::TransientResult r = set_up.solver->run(o);
       ++out.transient_runs;
       double slowest = 0.0;
       bool reached = !r.gaps.empty();

@@ -6,10 +6,8 @@
 
 #include "case/case_file.hpp"
 #include "core/error.hpp"
-#include "magnetostatics/solve_problem.hpp"
-#include "transient/case_options.hpp"
+#include "transient/from_case.hpp"
 #include "transient/lag_fit.hpp"
-#include "transient/transient_solver.hpp"
 
 namespace rheomag::lumped {
 
@@ -33,20 +31,15 @@ PredictedLag predict_field_lag(const std::filesystem::path& case_path,
         (k > 0 && !(currents[k] > currents[k - 1])))
       throw InputError(where + ": predicted field lag: currents must be > 0 A and increasing");
   const cases::Case c = cases::load_case(case_path);
-  auto statics = magnetostatics::make_solver(c.problem);
-  transient::TransientSolver solver(
-      *statics,
-      transient::eddy_coefficients(statics->problem(), transient::read_transient_case(c).remedies));
+  const transient::CaseTransient set_up = transient::transient_from_case(c);
   PredictedLag out;
   for (double current : currents) {
     double duration = 0.5;
     for (int attempt = 0;; ++attempt, duration *= 2.0) {
-      transient::TransientOptions o;
-      o.drive = transient::Drive::current;
-      o.value = current;
-      o.duration = duration;
+      transient::TransientOptions o =
+          transient::step_options(transient::Drive::current, current, duration);
       o.tolerance = 1e-3;
-      const transient::TransientResult r = solver.run(o);
+      const transient::TransientResult r = set_up.solver->run(o);
       if (r.gaps.empty()) throw InputError(where + ": the case has no fluid gap");
       const transient::GapSeries* slowest = nullptr;
       bool reached = true;

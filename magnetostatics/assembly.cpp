@@ -11,6 +11,7 @@
 
 #include "case/magnet_direction.hpp"
 #include "core/error.hpp"
+#include "mesh/triangle.hpp"
 
 namespace rheomag::magnetostatics {
 namespace {
@@ -63,8 +64,7 @@ Assembler::Assembler(const cases::Problem& problem, const mesh::Mesh& mesh, cons
     }
     material_of_element_[e] = material;
     const auto v = vertices(mesh, e);
-    region_area_[region] += 0.5 * std::abs((v[1].r - v[0].r) * (v[2].z - v[0].z) -
-                                           (v[2].r - v[0].r) * (v[1].z - v[0].z));
+    region_area_[region] += mesh::triangle_area(v[0], v[1], v[2]);
   }
   for (const mesh::BoundaryEdge& edge : mesh.boundary_edges) {
     if (edge.boundary < 0 || edge.boundary >= static_cast<int>(problem.boundaries.size())) continue;
@@ -538,7 +538,7 @@ Eigen::VectorXd Assembler::fixed_source() const {
                                  problem_.geometry.source + ": magnet '" + name + "'");
     }
     const auto v = vertices(mesh_, e);
-    const mesh::Point centroid{(v[0].r + v[1].r + v[2].r) / 3.0, (v[0].z + v[1].z + v[2].z) / 3.0};
+    const mesh::Point centroid = mesh::triangle_centroid(v[0], v[1], v[2]);
     const double angle = directions[region]->degrees_at(centroid) * std::numbers::pi / 180.0;
     const double m_r = h_c * std::cos(angle), m_z = h_c * std::sin(angle);
     for (int p = 0; p < q.points; ++p) {

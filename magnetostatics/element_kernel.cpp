@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "mesh/triangle.hpp"
+
 namespace rheomag::magnetostatics {
 
 void b_operator(cases::Symmetry symmetry, int order, const std::array<mesh::Point, 3>& v, double xi,
@@ -69,7 +71,7 @@ void element_quadrature(cases::Symmetry symmetry, double depth, int order,
   const double r10 = v[1].r - v[0].r, r20 = v[2].r - v[0].r;
   const double z10 = v[1].z - v[0].z, z20 = v[2].z - v[0].z;
   const double inv_det = 1.0 / (r10 * z20 - r20 * z10);
-  const double area = 0.5 * std::abs(r10 * z20 - r20 * z10);
+  const double area = mesh::triangle_area(v[0], v[1], v[2]);
   const bool axisymmetric = symmetry == cases::Symmetry::axisymmetric;
   for (int p = 0; p < ref.points; ++p) {
     const double xi = ref.xi[p], eta = ref.eta[p];

@@ -9,9 +9,6 @@
 
 namespace rheomag::magnetostatics {
 
-namespace {
-
-/// The problem closed (outer boundary, air) and meshed as solve_problem does.
 std::pair<cases::Problem, mesh::Mesh> close_and_mesh(const cases::Problem& problem,
                                                      const SolveOptions& options) {
   if (problem.order != 1 && problem.order != 2) {
@@ -30,8 +27,6 @@ std::pair<cases::Problem, mesh::Mesh> close_and_mesh(const cases::Problem& probl
   mesh::Mesh mesh = mesh::generate_mesh(closed.geometry, mesh_options);
   return {std::move(closed), std::move(mesh)};
 }
-
-}  // namespace
 
 std::unique_ptr<MagnetostaticSolver> make_solver(const cases::Problem& problem,
                                                  const SolveOptions& options) {

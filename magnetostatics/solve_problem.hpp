@@ -2,6 +2,7 @@
 // One call from a Problem to results: close the domain, mesh, solve, post-process.
 
 #include <memory>
+#include <utility>
 
 #include "case/problem.hpp"
 #include "magnetostatics/results.hpp"
@@ -18,6 +19,11 @@ struct SolveResult {
   Results results;
   double mesh_seconds = 0.0;  ///< time spent closing the domain and meshing
 };
+
+/// The problem closed (outer boundary, air) and meshed as solve_problem does (order
+/// Problem::order, Problem::min_gap_elements); InputError for an order other than 1 or 2.
+std::pair<cases::Problem, mesh::Mesh> close_and_mesh(const cases::Problem& problem,
+                                                     const SolveOptions& options = {});
 
 /// close_domain -> mesh::generate_mesh (order Problem::order, Problem::min_gap_elements) ->
 /// MagnetostaticSolver, without a solve (for callers that choose their own currents).

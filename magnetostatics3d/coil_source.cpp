@@ -4,6 +4,8 @@
 #include <cmath>
 #include <map>
 
+#include "mesh/triangle.hpp"
+
 namespace rheomag::magnetostatics3d {
 namespace {
 
@@ -77,8 +79,7 @@ std::vector<CircuitCoils> collect_coils(const cases::Problem& closed, const mesh
   };
   for (std::size_t e = 0; e < meridian.triangles.size(); ++e) {
     const auto v = vertices(e);
-    area[meridian.region[e]] += 0.5 * std::abs((v[1].r - v[0].r) * (v[2].z - v[0].z) -
-                                               (v[2].r - v[0].r) * (v[1].z - v[0].z));
+    area[meridian.region[e]] += mesh::triangle_area(v[0], v[1], v[2]);
   }
   // Edge use count per region: an edge used once is on the region's boundary.
   std::map<std::array<int, 3>, int> uses;

@@ -9,6 +9,8 @@
 #include <numbers>
 #include <unordered_map>
 
+#include "mesh/triangle.hpp"
+
 namespace rheomag::mesh {
 
 namespace {
@@ -73,7 +75,7 @@ MeshQuality measure_quality(const Mesh& mesh, const Pslg& pslg) {
     const Point& c = mesh.nodes[static_cast<std::size_t>(tri[2])];
     const double ab = length(a, b), bc = length(b, c), ca = length(c, a);
     const double longest = std::max({ab, bc, ca});
-    const double area = 0.5 * std::abs((b.r - a.r) * (c.z - a.z) - (b.z - a.z) * (c.r - a.r));
+    const double area = triangle_area(a, b, c);
     q.min_angle = std::min({q.min_angle, angle(a, b, c), angle(b, c, a), angle(c, a, b)});
     q.max_aspect_ratio =
         std::max(q.max_aspect_ratio, longest * (ab + bc + ca) / (4.0 * std::sqrt(3.0) * area));
@@ -102,6 +104,25 @@ MeshQuality measure_quality(const Mesh& mesh, const Pslg& pslg) {
     rq.elements_across = rq.max_edge > 0.0 ? rq.thickness / rq.max_edge : 0.0;
   }
   return q;
+}
+
+nlohmann::json quality_json(const MeshQuality& q) {
+  nlohmann::json regions = nlohmann::json::array();
+  for (const RegionQuality& r : q.regions) {
+    nlohmann::json row = {
+        {"name", r.name}, {"elements", r.elements}, {"area", r.area}, {"max_edge", r.max_edge}};
+    if (r.gap != GapKind::none) {
+      row["thickness"] = r.thickness;
+      row["elements_across"] = r.elements_across;
+    }
+    regions.push_back(row);
+  }
+  return {{"elements", q.elements},
+          {"nodes", q.nodes},
+          {"order", q.order},
+          {"min_angle_deg", q.min_angle},
+          {"max_aspect_ratio", q.max_aspect_ratio},
+          {"regions", regions}};
 }
 
 std::string format_quality(const MeshQuality& q) {

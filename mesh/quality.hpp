@@ -1,6 +1,7 @@
 #pragma once
 // Quality statistics of a mesh: sizes, angles, and how well each fluid gap is resolved.
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,10 @@ struct MeshQuality {
 
 /// Measures a mesh generated from `pslg` (which gives the region names and gap kinds).
 MeshQuality measure_quality(const Mesh& mesh, const Pslg& pslg);
+
+/// The JSON document of `rheomag mesh --json`: counts, order, min angle, max aspect ratio and
+/// per-region statistics (gap thickness and elements across for gap regions).
+nlohmann::json quality_json(const MeshQuality& quality);
 
 /// A human-readable table of the statistics, one line per region.
 std::string format_quality(const MeshQuality& quality);

@@ -12,6 +12,7 @@
 #include "case/wire_gauge.hpp"
 #include "core/error.hpp"
 #include "design/response_time.hpp"
+#include "mesh/triangle.hpp"
 #include "valve/coil.hpp"
 #include "valve/solved_valve.hpp"
 
@@ -122,8 +123,7 @@ design::Quantities OptimiseEvaluator::evaluate(const std::vector<double>& x) {
       for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
         const auto& t = mesh.triangles[e];
         const mesh::Point a = mesh.nodes[t[0]], b = mesh.nodes[t[1]], p = mesh.nodes[t[2]];
-        window[mesh.region[e]] +=
-            0.5 * std::abs((b.r - a.r) * (p.z - a.z) - (p.r - a.r) * (b.z - a.z));
+        window[mesh.region[e]] += mesh::triangle_area(a, b, p);
       }
       for (std::size_t k = 0; k < closed.regions.size(); ++k)
         if (closed.regions[k].circuit >= 0 && closed.regions[k].turns != 0.0)
@@ -195,7 +195,7 @@ design::Quantities OptimiseEvaluator::evaluate(const std::vector<double>& x) {
       if (static_cast<std::size_t>(m.region[e]) >= region_density_.size()) continue;
       const auto& t = m.triangles[e];
       const mesh::Point a = m.nodes[t[0]], b = m.nodes[t[1]], p = m.nodes[t[2]];
-      const double area = 0.5 * std::abs((b.r - a.r) * (p.z - a.z) - (p.r - a.r) * (b.z - a.z));
+      const double area = mesh::triangle_area(a, b, p);
       mass +=
           region_density_[m.region[e]] * 2.0 * std::numbers::pi * (a.r + b.r + p.r) / 3.0 * area;
     }

@@ -90,6 +90,31 @@ if in_group fe; then
     --viscosity 0.1 --flow 5e-6 --wall-velocity 0.05
   run shear shear --kind drum --r-in 0.03 --r-out 0.031 --length 0.02 --tau-y 30e3 \
     --viscosity 0.1 --speed 10 --json
+  # The two flow commands above stop at option parsing (no --gap); these reach the gap laws.
+  run flow_annular_json flow --kind annular --gap 1e-3 --length 0.01 --radius 0.0195 \
+    --tau-y 20000 --viscosity 0.106 --flow 1e-6 --json
+  run flow_annular_text flow --kind annular --gap 1e-3 --length 0.01 --radius 0.0195 \
+    --tau-y 20000 --viscosity 0.106 --flow 1e-6 --model approx
+  run flow_slit_json flow --kind slit --gap 1e-3 --width 0.05 --length 0.02 --tau-y 30e3 \
+    --viscosity 0.1 --flow 1e-7 --wall-velocity 0.1 --json
+  run flow_slit_text flow --kind slit --gap 1e-3 --width 0.05 --length 0.02 --tau-y 30e3 \
+    --viscosity 0.1 --flow 1e-7 --wall-velocity 0.1
+  run flow_radial_text flow --kind radial --gap 0.5e-3 --r-in 0.005 --r-out 0.02 --tau-y 3e4 \
+    --viscosity 0.11 --flow 2e-5
+  run shear_disc_text shear --kind disc --r-in 0.01 --r-out 0.05 --gap 1e-3 --faces 2 \
+    --tau-y 3e4 --viscosity 0.1 --speed -50
+  run solve_point solve "$src/cases/annular_valve.toml" --current 1 --point 0.019,0,0.015,0.005 \
+    --sweep 0,1
+  run solve_point_json solve "$src/cases/annular_valve.toml" --current 1 --point 0.019,0 --json
+  run mesh_text mesh "$src/cases/annular_valve.toml" --vtk OUT/mesh.vtu
+  run export export "$src/cases/annular_valve.toml" --fem OUT/valve.fem
+  run valve_wire valve "$src/cases/annular_valve.toml" --current 0.5,1 --flow 1e-6 \
+    --wire "AWG 26" --temperature 60
+  run valve_nowire_json valve "$src/cases/radial_valve.toml" --current 1 --flow 1e-6 --json
+  run transient_series transient "$src/cases/annular_valve.toml" --voltage 12 --duration 0.01 \
+    --steps 4 --vtk-series OUT/series --quiet
+  run damper_piston damper "$src/cases/damper_piston.toml" --current 0.5 --velocity -0.1,0.1
+  run brake_drum brake "$src/cases/brake_drum.toml" --current 1 --speed 0,10 --json
 fi
 if in_group study; then
   run sweep sweep "$src/cases/sweeps/annular_gap_current.toml" --jobs 1 --out OUT/sweep

@@ -28,4 +28,11 @@ CoilProperties DeviceChain::coil(double current, double inductance) const {
   return coil_properties(coil_, current, inductance);
 }
 
+std::vector<double> currents_or_case(const cases::Case& c, const std::vector<double>& currents) {
+  if (!currents.empty()) return currents;
+  std::vector<double> out;
+  for (const auto& circuit : c.problem.circuits) out = {circuit.current};
+  return out;
+}
+
 }  // namespace rheomag::valve

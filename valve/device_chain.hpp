@@ -16,6 +16,9 @@
 
 namespace rheomag::valve {
 
+/// The currents asked for, or (none) the case's circuit current (that of its last circuit).
+std::vector<double> currents_or_case(const cases::Case& c, const std::vector<double>& currents);
+
 /// A device case (damper, brake): mesh and solver once, one field solve per current.
 class DeviceChain {
  public:

@@ -11,6 +11,7 @@
 #include "case/material_library.hpp"
 #include "core/error.hpp"
 #include "fluid/newtonian.hpp"
+#include "mesh/triangle.hpp"
 
 namespace rheomag::valve {
 
@@ -87,7 +88,7 @@ CoilSpec coil_spec(const magnetostatics::MagnetostaticSolver& solver, const Valv
     if (problem.regions[mesh.region[e]].circuit != 0) continue;
     const auto& t = mesh.triangles[e];
     const mesh::Point a = mesh.nodes[t[0]], b = mesh.nodes[t[1]], d = mesh.nodes[t[2]];
-    const double triangle = 0.5 * std::abs((b.r - a.r) * (d.z - a.z) - (d.r - a.r) * (b.z - a.z));
+    const double triangle = mesh::triangle_area(a, b, d);
     area += triangle;
     moment += triangle * (a.r + b.r + d.r) / 3.0;
   }
@@ -106,6 +107,13 @@ CoilSpec coil_spec(const magnetostatics::MagnetostaticSolver& solver, const Valv
   else if (!options.wire.empty())
     spec.wire_diameter = wire_diameter(options.wire);
   return spec;
+}
+
+std::optional<double> wire_resistance(const cases::Case& c,
+                                      const magnetostatics::MagnetostaticSolver& solver) {
+  const ValveOptions options = read_valve_options(c);
+  if (options.wire.empty()) return std::nullopt;
+  return coil_properties(coil_spec(solver, options), 0.0, 0.0).resistance;
 }
 
 SolvedValve::SolvedValve(const magnetostatics::MagnetostaticSolver& solver,

@@ -3,6 +3,7 @@
 // sampled once from the FE solution, then the pressure drop of the whole flow path at any flow
 // rate without another field solve (used by ValveChain, sweeps and the optimiser).
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,11 @@ fluid::Fluid case_fluid(const cases::Case& c);
 /// window area and mean turn length (2 pi x area-weighted mean radius), plus the wire diameter
 /// (0 without ValveOptions::wire) and temperature of `options`. InputError without turns.
 CoilSpec coil_spec(const magnetostatics::MagnetostaticSolver& solver, const ValveOptions& options);
+
+/// Resistance of the case's coil at its [valve] temperature from its [valve] wire and the
+/// winding in the solver's mesh; nothing when the case names no wire.
+std::optional<double> wire_resistance(const cases::Case& c,
+                                      const magnetostatics::MagnetostaticSolver& solver);
 
 /// The flow path of a solved design: every magnetised gap (RegionSeed::gap) in series with the
 /// normal flux density |B_n| at 101 mid-line points, then the unmagnetised passages and minor

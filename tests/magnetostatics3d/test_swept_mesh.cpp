@@ -18,6 +18,7 @@
 #include "magnetostatics3d/solve3d.hpp"
 #include "magnetostatics3d/swept_mesh.hpp"
 #include "mesh/mesher.hpp"
+#include "mesh/triangle.hpp"
 
 namespace rheomag::magnetostatics3d {
 namespace {
@@ -96,7 +97,7 @@ TEST(SweptMesh, ConformingWithEveryBoundaryFaceClassified) {
       const mesh::Point& a = meridian.nodes[tri[0]];
       const mesh::Point& b = meridian.nodes[tri[1]];
       const mesh::Point& c = meridian.nodes[tri[2]];
-      const double area = 0.5 * std::abs((b.r - a.r) * (c.z - a.z) - (c.r - a.r) * (b.z - a.z));
+      const double area = mesh::triangle_area(a, b, c);
       double chord = 0.0;  // sum of sin(step) over the intervals
       for (std::size_t k = 1; k < rev.angles.size(); ++k)
         chord += std::sin(rev.angles[k] - rev.angles[k - 1]);
@@ -122,7 +123,7 @@ TEST(SweptMesh, RestoredRingsHaveTheTrueRevolvedVolume) {
     const mesh::Point& a = meridian.nodes[tri[0]];
     const mesh::Point& b = meridian.nodes[tri[1]];
     const mesh::Point& c = meridian.nodes[tri[2]];
-    const double area = 0.5 * std::abs((b.r - a.r) * (c.z - a.z) - (c.r - a.r) * (b.z - a.z));
+    const double area = mesh::triangle_area(a, b, c);
     pappus += area * (a.r + b.r + c.r) / 3.0;
   }
   const std::vector<std::pair<Revolution, bool>> cases{
