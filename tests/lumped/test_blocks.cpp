@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "lumped/blocks.hpp"
-#include "lumped/greybox.hpp"
+#include "lumped/pheno_simulation.hpp"
 #include "lumped/rig_model.hpp"
 #include "lumped/signals.hpp"
 #include "lumped/transfer_function.hpp"
