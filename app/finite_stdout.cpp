@@ -2,9 +2,9 @@
 
 #include "app/finite_stdout.hpp"
 
-#include <cstdio>
 #include <iostream>
-#include <vector>
+
+#include "identify/printf_stream.hpp"
 
 namespace rheomag::app {
 
@@ -73,15 +73,7 @@ void print_json(const nlohmann::json& j, int indent) {
 void print(const char* format, ...) {
   va_list args;
   va_start(args, format);
-  va_list copy;
-  va_copy(copy, args);
-  const int n = std::vsnprintf(nullptr, 0, format, copy);
-  va_end(copy);
-  if (n > 0) {
-    std::vector<char> text(static_cast<std::size_t>(n) + 1);
-    std::vsnprintf(text.data(), text.size(), format, args);
-    std::cout.write(text.data(), n);
-  }
+  identify::vprint_to(std::cout, format, args);
   va_end(args);
 }
 

@@ -8,9 +8,7 @@
 
 namespace rheomag::identify {
 
-void print_to(std::ostream& out, const char* format, ...) {
-  va_list args;
-  va_start(args, format);
+void vprint_to(std::ostream& out, const char* format, va_list args) {
   va_list copy;
   va_copy(copy, args);
   const int n = std::vsnprintf(nullptr, 0, format, copy);
@@ -20,6 +18,12 @@ void print_to(std::ostream& out, const char* format, ...) {
     std::vsnprintf(text.data(), text.size(), format, args);
     out.write(text.data(), n);
   }
+}
+
+void print_to(std::ostream& out, const char* format, ...) {
+  va_list args;
+  va_start(args, format);
+  vprint_to(out, format, args);
   va_end(args);
 }
 
