@@ -7,7 +7,6 @@
 
 #include "identify/stability.hpp"
 
-using namespace rheomag::lumped;
 using namespace rheomag::identify;
 
 namespace {

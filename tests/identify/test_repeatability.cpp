@@ -9,7 +9,6 @@
 
 #include "identify/repeatability.hpp"
 
-using namespace rheomag::lumped;
 using namespace rheomag::identify;
 
 namespace {
