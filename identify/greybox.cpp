@@ -22,7 +22,6 @@
 #include "identify/standard_errors.hpp"
 #include "lumped/ode.hpp"
 #include "lumped/output_smoothing.hpp"
-#include "lumped/pheno_free_run.hpp"
 
 namespace rheomag::identify {
 

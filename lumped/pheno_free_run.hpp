@@ -48,7 +48,7 @@ void process_output(PhenoKind kind, const T* p, const DriveSeries& d, SampleRang
 }
 
 /// Models integrated by their own stiff-stable exponential step (damper_step, bouc_wen_step).
-bool has_exponential_step(PhenoKind kind) {
+inline bool has_exponential_step(PhenoKind kind) {
   return kind == PhenoKind::damper || kind == PhenoKind::bouc_wen;
 }
 
