@@ -111,7 +111,7 @@ if in_group ident; then
   run fit_family_text fit-family "$data/utfsm/10mm1Hz0A.csv" "$data/utfsm/10mm1Hz1A.csv" \
     --model bingham --predict "$data/utfsm/10mm1Hz0x5A.csv" --quiet
   run simulate_chain simulate "$src/cases/rigs/constant_velocity_pump_chain.toml" \
-    --signal velocity=constant:0.01 --signal current=steps:levels=0/0.5/1,period=0.2 \
+    --signal velocity=constant:value=0.01 --signal current=steps:levels=0/0.5/1,period=0.2 \
     --duration 0.6 --rate 200 --out OUT/chain.csv
 fi
 if in_group diagnose; then
