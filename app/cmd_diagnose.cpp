@@ -12,7 +12,7 @@
 #include "core/error.hpp"
 #include "diagnose/diagnose_report.hpp"
 #include "diagnose/diagnose_run.hpp"
-#include "lumped/fit_model_json.hpp"
+#include "identify/fit_model_json.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording_excerpt.hpp"
 #include "lumped/recording_io.hpp"
@@ -135,7 +135,7 @@ const bool registered = app::register_command([](CLI::App& root) {
     diagnose::DiagnoseOptions options;
     if (!o->baseline.empty())
       options.baseline_model =
-          diagnose::ModelBaseline{lumped::read_fit_model_json(o->baseline), o->baseline};
+          diagnose::ModelBaseline{identify::read_fit_model_json(o->baseline), o->baseline};
     if (!o->quiet)
       options.progress = [](const ProgressEvent& e) {
         std::cerr << "diagnose: " << e.stage << (e.detail.empty() ? "" : " ") << e.detail << "\n";

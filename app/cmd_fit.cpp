@@ -1,347 +1,37 @@
 // rheomag fit: identify a model of a recording (black-box or grey-box) and report FIT%, RMSE%
-// and RE on the training and validation parts. The methods live in lumped/ident_*.hpp and
-// lumped/greybox.hpp; this file maps options to them and prints the result.
+// and RE on the training and validation parts. The workflow lives in identify/fit_run.hpp (the
+// methods in identify/); this file maps options to it and prints the result.
 
 #include <CLI/CLI.hpp>
-#include <cmath>
-#include <filesystem>
-#include <functional>
 #include <iostream>
 #include <map>
 #include <memory>
-#include <nlohmann/json.hpp>
-#include <optional>
-#include <span>
 #include <string>
-#include <vector>
 
 #include "app/command.hpp"
 #include "app/progress_lines.hpp"
-#include "core/error.hpp"
-#include "lumped/fit_model_json.hpp"
-#include "lumped/greybox.hpp"
-#include "lumped/ident_fit.hpp"
-#include "lumped/ident_plot.hpp"
-#include "lumped/ident_stability.hpp"
-#include "lumped/metrics.hpp"
-#include "lumped/recording_io.hpp"
-#include "lumped/repeatability.hpp"
-#include "lumped/valve_chain_fit.hpp"
+#include "identify/fit_run.hpp"
 
 namespace {
 
-using namespace rheomag::lumped;
+using namespace rheomag::identify;
 
+/// The options of `rheomag fit`: the request plus how to print it.
 struct FitOptions {
-  std::string recording;
-  std::string model;
-  std::string train;
-  std::string validate;
-  EvalMode mode = EvalMode::simulation;
+  FitRequest request;
   bool json = false;
   bool quiet = false;
-  std::string plot;
 };
 
-/// Where the validation data come from.
-struct Validation {
-  std::optional<SampleRange> range;  ///< part of the same recording
-  std::optional<Recording> other;    ///< another recording of the same device
-};
-
-/// What one fit produced, whatever the model kind.
-struct FitReport {
-  std::string model;
-  nlohmann::json fitted;  ///< the fitted-model document (lumped/fit_model_json.hpp)
-  nlohmann::json params = nlohmann::json::object();
-  nlohmann::json standard_errors;  ///< grey-box only
-  Metrics train;
-  std::optional<Metrics> validation;
-  std::vector<double> train_output, validation_output;
-  std::optional<StabilityVerdict> train_stability;       ///< black-box, simulation mode only
-  std::optional<StabilityVerdict> validation_stability;  ///< black-box, simulation mode only
-};
-
-bool looks_like_file(const std::string& text) {
-  return text.find(':') == std::string::npos || std::filesystem::exists(text) ||
-         (text.size() > 4 && text.compare(text.size() - 4, 4, ".csv") == 0);
-}
-
-std::string range_text(const SampleRange& r) {
-  return std::to_string(r.begin) + ":" + std::to_string(r.end);
-}
-
-Validation read_validation(const FitOptions& o, const Recording& rec, const SampleRange& train) {
-  Validation v;
-  if (o.validate.empty()) return v;
-  if (looks_like_file(o.validate)) {
-    v.other = rheomag::app::load_recording(o.validate);
-    if (v.other->meta.drive != rec.meta.drive || v.other->meta.output != rec.meta.output)
-      throw rheomag::InputError("--validate " + o.validate +
-                                ": its sidecar's drive/output columns differ from " +
-                                rec.meta.sidecar_path);
-    return v;
-  }
-  v.range = parse_sample_range(o.validate, rec.t.size(), "--validate");
-  if (v.range->begin < train.end && train.begin < v.range->end)
-    throw rheomag::InputError("--train " + range_text(train) + " and --validate " +
-                              range_text(*v.range) + " overlap; validation samples must be unseen");
-  return v;
-}
-
-Metrics metrics_on(const std::vector<double>& y, const std::vector<double>& yhat, SampleRange r) {
-  return compute_metrics(std::span<const double>(y), std::span<const double>(yhat), r);
-}
-
-std::vector<double> to_std(const Eigen::VectorXd& v) {
-  return {v.data(), v.data() + v.size()};
-}
-
-FitReport fit_black_box_model(const FitOptions& o, const Recording& rec, const SampleRange& train,
-                              const Validation& val) {
-  const ModelSpec spec = parse_model_spec(o.model);
-  const IoData all = io_data_from_recording(rec);
-  const IoData train_data =
-      slice(all, static_cast<std::ptrdiff_t>(train.begin), static_cast<std::ptrdiff_t>(train.end));
-  const std::unique_ptr<IdentModel> model = fit_black_box(spec, train_data);
-  FitReport report;
-  report.model = model->name();
-  for (const auto& [name, value] : model->params()) report.params[name] = value;
-  report.fitted = black_box_model_json(model->name(), model->params(), rec.meta);
-  Eigen::VectorXd out;
-  report.train = evaluate(*model, train_data, o.mode, &out);
-  report.train_output = to_std(out);
-  if (o.mode == EvalMode::simulation)
-    report.train_stability = check_simulation_stability(*model, train_data);
-  std::optional<IoData> val_data;
-  if (val.range)
-    val_data = slice(all, static_cast<std::ptrdiff_t>(val.range->begin),
-                     static_cast<std::ptrdiff_t>(val.range->end));
-  else if (val.other)
-    val_data = io_data_from_recording(*val.other);
-  if (val_data) {
-    report.validation = evaluate(*model, *val_data, o.mode, &out);
-    report.validation_output = to_std(out);
-    if (o.mode == EvalMode::simulation)
-      report.validation_stability = check_simulation_stability(*model, *val_data);
-  }
-  return report;
-}
-
-/// Report of a grey-box fit (GreyboxFit or ValveChainFit): parameters with standard errors (held
-/// ones left out), its free run on the training and validation parts; `simulate_other` runs the
-/// fitted model on a validation recording.
-template <class Fit>
-FitReport grey_box_report(
-    const Fit& fit, const Recording& rec, const SampleRange& train, const Validation& val,
-    const std::function<std::vector<double>(const Recording&)>& simulate_other) {
-  FitReport report;
-  report.model = fit.model;
-  report.standard_errors = nlohmann::json::object();
-  for (const auto& p : fit.params) {
-    if (p.fixed && fit.model == "valve-chain") continue;  // no compliance: the drive is Q itself
-    report.params[p.name] = p.value;
-    report.standard_errors[p.name] = p.standard_error && std::isfinite(*p.standard_error)
-                                         ? nlohmann::json(*p.standard_error)
-                                         : nlohmann::json(nullptr);
-  }
-  report.train = fit.train;
-  report.train_output.assign(fit.simulated.begin() + static_cast<std::ptrdiff_t>(train.begin),
-                             fit.simulated.begin() + static_cast<std::ptrdiff_t>(train.end));
-  const std::vector<double>& y = rec.column(rec.meta.output);
-  if (val.range) {
-    report.validation = metrics_on(y, fit.simulated, *val.range);
-    report.validation_output.assign(
-        fit.simulated.begin() + static_cast<std::ptrdiff_t>(val.range->begin),
-        fit.simulated.begin() + static_cast<std::ptrdiff_t>(val.range->end));
-  } else if (val.other) {
-    report.validation_output = simulate_other(*val.other);
-    const std::vector<double>& yv = val.other->column(val.other->meta.output);
-    report.validation = metrics_on(yv, report.validation_output, SampleRange{0, yv.size()});
-  }
-  return report;
-}
-
-void reject_prediction_mode(const FitOptions& o) {
-  if (o.mode == EvalMode::prediction)
-    throw rheomag::InputError("--mode prediction: grey-box model '" + o.model +
-                              "' is a state-space model run in free simulation only");
-}
-
-FitReport fit_grey_box_model(const FitOptions& o, const Recording& rec, const SampleRange& train,
-                             const Validation& val) {
-  reject_prediction_mode(o);
-  GreyboxOptions options;
-  options.train = train;
-  if (!o.quiet) options.progress = rheomag::app::progress_lines("fit", std::cerr);
-  const GreyboxFit fit = fit_greybox(rec, o.model, options);
-  FitReport report = grey_box_report(
-      fit, rec, train, val, [&](const Recording& other) { return simulate_greybox(other, fit); });
-  report.fitted = fit_model_json(fit, rec.meta);
-  return report;
-}
-
-FitReport fit_valve_chain_model(const FitOptions& o, const Recording& rec, const SampleRange& train,
-                                const Validation& val) {
-  reject_prediction_mode(o);
-  ValveChainFitOptions options;
-  options.train = train;
-  const ValveChainFit fit = fit_valve_chain(rec, options);
-  FitReport report = grey_box_report(fit, rec, train, val, [&](const Recording& other) {
-    return simulate_valve_chain(other, fit);
-  });
-  report.fitted = fit_model_json(fit, rec.meta);
-  return report;
-}
-
-/// Metrics as JSON; an unstable free run has no meaningful metrics: nulls and the reason.
-nlohmann::json metrics_json(const Metrics& m, const std::optional<StabilityVerdict>& s) {
-  if (s && !s->stable)
-    return {{"fit_percent", nullptr},
-            {"rmse_percent", nullptr},
-            {"re", nullptr},
-            {"stable", false},
-            {"stability", s->reason}};
-  nlohmann::json j = {
-      {"fit_percent", m.fit_percent}, {"rmse_percent", m.rmse_percent}, {"re", m.re}};
-  if (s) j["stable"] = true;
-  return j;
-}
-
-std::vector<double> part(const std::vector<double>& v, const SampleRange& r) {
-  return {v.begin() + static_cast<std::ptrdiff_t>(r.begin),
-          v.begin() + static_cast<std::ptrdiff_t>(r.end)};
-}
-
-/// The repeatability (FIT of its own mean cycle, lumped/repeatability.hpp) of samples `r` of
-/// `rec`'s output under its motion drive (velocity or flow, else its first drive column).
-std::optional<double> repeatability_of(const Recording& rec, const SampleRange& r) {
-  std::string drive;
-  for (const char* c : {"velocity", "flow"})
-    if (drive.empty() && rec.columns.count(c)) drive = c;
-  if (drive.empty() && !rec.meta.drive.empty()) drive = rec.meta.drive.front();
-  if (drive.empty() || !rec.columns.count(drive)) return std::nullopt;
-  return repeatability_percent(part(rec.t, r), part(rec.column(drive), r),
-                               part(rec.column(rec.meta.output), r));
-}
-
-/// Where the recording repeats itself under a periodic drive: its repeatability, and the metrics
-/// JSON gains it.
-void add_repeatability(nlohmann::json& metrics, const std::optional<double>& repeatability) {
-  if (repeatability) metrics["repeatability_percent"] = *repeatability;
-}
-
-void print_text(const FitReport& r, const FitOptions& o, const SampleRange& train,
-                const Validation& val, const Recording& rec) {
-  auto line = [](const std::string& what, const Metrics& m,
-                 const std::optional<StabilityVerdict>& s) {
-    if (s && !s->stable) {
-      rheomag::app::print("%-34s UNSTABLE in free-run simulation: %s (no FIT reported)\n",
-                          what.c_str(), s->reason.c_str());
-      return;
-    }
-    rheomag::app::print("%-34s FIT %7.2f %%   RMSE %7.2f %%   RE %.4f\n", what.c_str(),
-                        m.fit_percent, m.rmse_percent, m.re);
-  };
-  rheomag::app::print("model %s (%s mode)\n", r.model.c_str(),
-                      o.mode == EvalMode::simulation ? "simulation" : "prediction");
-  const auto repeatability = [](const std::optional<double>& rep) {
-    if (rep)
-      rheomag::app::print("%-34s FIT %7.2f %%   (its own mean cycle: no periodic model beats it)\n",
-                          "  repeatability", *rep);
-  };
-  line("train " + range_text(train), r.train, r.train_stability);
-  repeatability(repeatability_of(rec, train));
-  if (r.validation) {
-    line("validation " + (val.range ? range_text(*val.range) : o.validate), *r.validation,
-         r.validation_stability);
-    repeatability(val.other ? repeatability_of(*val.other, SampleRange{0, val.other->t.size()})
-                            : repeatability_of(rec, *val.range));
-  }
-  rheomag::app::print("parameters:\n");
-  for (const auto& [name, value] : r.params.items()) {
-    rheomag::app::print("  %-28s %.6g", name.c_str(), value.get<double>());
-    if (r.standard_errors.is_object() && r.standard_errors.contains(name) &&
-        r.standard_errors[name].is_number())
-      rheomag::app::print("  +- %.3g", r.standard_errors[name].get<double>());
-    rheomag::app::print("\n");
-  }
-}
-
-void write_plot(const FitReport& r, const FitOptions& o, const Recording& rec,
-                const SampleRange& train, const Validation& val) {
-  const std::vector<double>& y = rec.column(rec.meta.output);
-  std::vector<PlotSegment> segments{
-      {"training", part(rec.t, train), part(y, train), r.train_output}};
-  if (val.range)
-    segments.push_back(
-        {"validation", part(rec.t, *val.range), part(y, *val.range), r.validation_output});
-  else if (val.other)
-    segments.push_back(
-        {"validation (" + std::filesystem::path(o.validate).filename().string() + ")", val.other->t,
-         val.other->column(val.other->meta.output), r.validation_output});
-  char title[256];
-  std::snprintf(title, sizeof title, "%s on %s (%s): FIT %.1f %% training", r.model.c_str(),
-                std::filesystem::path(o.recording).filename().c_str(),
-                o.mode == EvalMode::simulation ? "simulation" : "one-step prediction",
-                r.train.fit_percent);
-  std::string heading = title;
-  if (r.validation) {
-    std::snprintf(title, sizeof title, ", %.1f %% validation", r.validation->fit_percent);
-    heading += title;
-  }
-  // SI units of the recording format's output columns (shared/docs/recording-format.md).
-  static const std::map<std::string, std::string> units{
-      {"force", "N"},    {"pressure", "Pa"},     {"current", "A"},       {"voltage", "V"},
-      {"flow", "m^3/s"}, {"flux_linkage", "Wb"}, {"temperature", "degC"}};
-  const auto unit = units.find(rec.meta.output);
-  const std::string label =
-      rec.meta.output + (unit == units.end() ? std::string() : " [" + unit->second + "]");
-  write_fit_plot(o.plot, heading, label, segments);
-}
-
-void run_fit(const FitOptions& o) {
-  const bool black_box = is_black_box_model(o.model);
-  const bool valve_chain = o.model == "valve-chain";
-  if (!black_box && !valve_chain && !is_greybox_model(o.model)) {
-    throw rheomag::InputError("--model '" + o.model +
-                              "' is not a model rheomag knows; did you mean '" +
-                              closest_model_name(o.model, known_model_names()) + "'?");
-  }
-  if (!o.plot.empty() && !gnuplot_available())
-    throw rheomag::InputError("--plot needs gnuplot on PATH (Debian package gnuplot-nox)");
-  const Recording rec = rheomag::app::load_recording(o.recording);
-  const std::size_t n = rec.t.size();
-  const SampleRange train =
-      o.train.empty() ? SampleRange{0, n} : parse_sample_range(o.train, n, "--train");
-  rec.require_varying(rec.meta.output, train.begin, train.end);
-  const Validation val = read_validation(o, rec, train);
-  const FitReport report = black_box     ? fit_black_box_model(o, rec, train, val)
-                           : valve_chain ? fit_valve_chain_model(o, rec, train, val)
-                                         : fit_grey_box_model(o, rec, train, val);
-  if (!o.plot.empty()) write_plot(report, o, rec, train, val);
-  if (!o.json) {
-    print_text(report, o, train, val, rec);
-    return;
-  }
-  // The fitted model itself (readable by read_fit_model_json), then how well it fits.
-  nlohmann::json j = report.fitted;
-  j["params"] = report.params;
-  if (report.standard_errors.is_object()) j["standard_errors"] = report.standard_errors;
-  j["train"] = metrics_json(report.train, report.train_stability);
-  add_repeatability(j["train"], repeatability_of(rec, train));
-  j["train_range"] = {train.begin, train.end};
-  j["validation"] = report.validation
-                        ? metrics_json(*report.validation, report.validation_stability)
-                        : nlohmann::json(nullptr);
-  if (report.validation)
-    add_repeatability(j["validation"],
-                      val.other ? repeatability_of(*val.other, SampleRange{0, val.other->t.size()})
-                                : repeatability_of(rec, *val.range));
-  if (val.range) j["validation_range"] = {val.range->begin, val.range->end};
-  if (val.other) j["validation_file"] = o.validate;
-  j["mode"] = o.mode == EvalMode::simulation ? "simulation" : "prediction";
-  rheomag::app::print_json(j);
+void run_fit_command(const FitOptions& o) {
+  FitRequest request = o.request;
+  request.load_recording = rheomag::app::load_recording;
+  if (!o.quiet) request.progress = rheomag::app::progress_lines("fit", std::cerr);
+  const FitRun run = run_fit(request);
+  if (o.json)
+    rheomag::app::print_json(fit_run_json(run));
+  else
+    write_fit_run_text(run, std::cout);
 }
 
 const bool registered = rheomag::app::register_command([](CLI::App& root) {
@@ -368,18 +58,18 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
       "tf and hw are output-error models: their prediction equals their simulation.\n"
       "Black-box models are checked in simulation mode (poles of the output recursion, bounded\n"
       "free run); an unstable one is reported as such instead of a FIT.");
-  cmd->add_option("recording", o->recording, "Recording CSV (its .toml sidecar beside it)")
+  cmd->add_option("recording", o->request.recording, "Recording CSV (its .toml sidecar beside it)")
       ->required();
-  cmd->add_option("--model", o->model, "Model name (see above)")->required();
-  cmd->add_option("--train", o->train,
+  cmd->add_option("--model", o->request.model, "Model name (see above)")->required();
+  cmd->add_option("--train", o->request.train,
                   "Training samples a:b, half-open sample indices [a, b) ('a:' to the end); "
                   "default all")
       ->check(rheomag::app::non_empty());
-  cmd->add_option("--validate", o->validate,
+  cmd->add_option("--validate", o->request.validate,
                   "Validation samples c:d (half-open, must not overlap --train) or another "
                   "recording CSV of the same device")
       ->check(rheomag::app::non_empty());
-  cmd->add_option("--mode", o->mode,
+  cmd->add_option("--mode", o->request.mode,
                   "simulation (free run, default) or prediction (one step ahead)")
       ->transform(CLI::CheckedTransformer(
           std::map<std::string, EvalMode>{{"simulation", EvalMode::simulation},
@@ -391,10 +81,10 @@ const bool registered = rheomag::app::register_command([](CLI::App& root) {
                 "setup, parameters with units, static_map of valve-chain; readable back as a "
                 "model file, docs/fit-model-json.md), params, train and validation "
                 "({fit_percent, rmse_percent, re}), mode");
-  cmd->add_option("--plot", o->plot,
+  cmd->add_option("--plot", o->request.plot,
                   "Write a PNG figure (measured vs model, residual) with gnuplot")
       ->check(rheomag::app::output_file());
-  cmd->callback([o]() { run_fit(*o); });
+  cmd->callback([o]() { run_fit_command(*o); });
 });
 
 }  // namespace

@@ -9,10 +9,10 @@
 
 #include "app/command.hpp"
 #include "core/error.hpp"
-#include "lumped/fit_model_json.hpp"
+#include "coupling/simulation_spec.hpp"
+#include "identify/fit_model_json.hpp"
 #include "lumped/recording_io.hpp"
 #include "lumped/signals.hpp"
-#include "lumped/simulation_spec.hpp"
 
 namespace {
 
@@ -29,6 +29,8 @@ void print_written(const SimulateOptions& o, const rheomag::lumped::Recording& r
 /// with its output replaced by the model's.
 rheomag::lumped::Recording simulate_fitted_model(const SimulateOptions& o) {
   using namespace rheomag::lumped;
+  using namespace rheomag::identify;
+  using namespace rheomag::coupling;
   if (o.input.empty() || !o.signals.empty())
     throw rheomag::InputError(o.spec +
                               ": a fitted model runs on a recording's drive columns: give --input "
@@ -58,6 +60,8 @@ bool is_fitted_model_file(const std::string& path) {
 
 void run_simulate(const SimulateOptions& o) {
   using namespace rheomag::lumped;
+  using namespace rheomag::identify;
+  using namespace rheomag::coupling;
   if (is_fitted_model_file(o.spec)) {
     const Recording rec = simulate_fitted_model(o);
     write_recording(rec, o.out);

@@ -2,9 +2,7 @@
 
 #include "app/finite_stdout.hpp"
 
-#include <cstdio>
 #include <iostream>
-#include <vector>
 
 #include "core/format_text.hpp"
 

@@ -12,10 +12,10 @@
 #include <iostream>
 #include <string>
 
+#include "coupling/simulation_spec.hpp"
 #include "diagnose/diagnose_run.hpp"
 #include "lumped/recording.hpp"
 #include "lumped/signals.hpp"
-#include "lumped/simulation_spec.hpp"
 
 namespace {
 
@@ -24,13 +24,13 @@ using namespace rheomag;
 /// The recording `rheomag simulate cases/rigs/bypass_cylinder.toml ... --duration D --rate R`
 /// would write.
 lumped::Recording bypass_recording(double duration, double rate) {
-  const auto spec = lumped::read_simulation_spec(std::string(RHEOMAG_SOURCE_DIR) +
-                                                 "/cases/rigs/bypass_cylinder.toml");
+  const auto spec = coupling::read_simulation_spec(std::string(RHEOMAG_SOURCE_DIR) +
+                                                   "/cases/rigs/bypass_cylinder.toml");
   lumped::Recording drive;
   drive.t = lumped::uniform_times(duration, rate);
   lumped::add_signal(drive, "displacement=sine:amplitude=0.025,frequency=0.5");
   lumped::add_signal(drive, "current=steps:levels=0/0.5/1,period=2");
-  auto rec = lumped::simulate_spec(spec, drive);
+  auto rec = coupling::simulate_spec(spec, drive);
   rec.csv_path = "bypass_cylinder.csv";
   rec.meta.sidecar_path = "bypass_cylinder.toml";
   return rec;

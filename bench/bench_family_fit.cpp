@@ -9,11 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "lumped/current_dependent_fit.hpp"
-#include "lumped/greybox.hpp"
+#include "identify/current_dependent_fit.hpp"
+#include "identify/greybox.hpp"
 #include "lumped/recording_io.hpp"
 
 using namespace rheomag::lumped;
+using namespace rheomag::identify;
 
 namespace {
 

@@ -6,12 +6,14 @@
 
 #include <string>
 
-#include "lumped/greybox.hpp"
+#include "coupling/simulation_spec.hpp"
+#include "identify/greybox.hpp"
 #include "lumped/recording_io.hpp"
 #include "lumped/signals.hpp"
-#include "lumped/simulation_spec.hpp"
 
 using namespace rheomag::lumped;
+using namespace rheomag::identify;
+using namespace rheomag::coupling;
 
 static void BM_SimulateBypassRig10s1kHz(benchmark::State& state) {
   const SimulationSpec spec =

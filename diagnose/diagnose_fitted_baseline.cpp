@@ -29,7 +29,7 @@ std::vector<std::string> sorted(std::vector<std::string> v) {
 
 void DiagnosisModel::from_fitted_model(const ModelBaseline& fitted) {
   const auto& meta = rec_.meta;
-  const lumped::FitModel& m = fitted.model;
+  const identify::FitModel& m = fitted.model;
   const std::string& file = fitted.file;
   const std::string where = meta.sidecar_path.empty() ? std::string("sidecar") : meta.sidecar_path;
   if (!meta.rig.kind && !m.rig)
@@ -51,7 +51,7 @@ void DiagnosisModel::from_fitted_model(const ModelBaseline& fitted) {
   base_.kind = meta.rig.kind ? *meta.rig.kind : *m.rig;
   base_.description = meta.description;
   base_.grid_substeps = kDiagnosisGridSubsteps;
-  fitted_ = std::make_shared<const lumped::FitModel>(m);
+  fitted_ = std::make_shared<const identify::FitModel>(m);
   field_column_ = m.valve_chain ? m.valve_chain->setup.field_column : m.greybox->setup.field_column;
   constant_field_ = field_column_.empty();
   const bool voltage_driven = field_column_ == "command" || field_column_ == "voltage";
@@ -109,7 +109,7 @@ void DiagnosisModel::from_fitted_model(const ModelBaseline& fitted) {
       peak_flow_ = std::max(peak_flow_, std::abs(v) * base_.piston_area);
     // The model's sign convention: damping opposes motion, so its output correlates with the
     // velocity with one sign; the output blocks (friction, inertia) take the same sign.
-    const auto y = lumped::simulate_fit_model(rec_, m);
+    const auto y = identify::simulate_fit_model(rec_, m);
     const auto& v = rec_.column("velocity");
     double mean = 0.0, dot = 0.0;
     for (double x : y) mean += x / static_cast<double>(y.size());
@@ -125,7 +125,7 @@ std::vector<double> DiagnosisModel::predict_fitted(const std::vector<const Candi
   FittedModelBlocks blocks{r, added, field_column_, model_sign_};
   ParamReader reader(values, static_params().size());
   for (const Candidate* e : effects) e->compose_with_model(blocks, reader, *this);
-  auto y = lumped::simulate_fit_model(r, *fitted_);
+  auto y = identify::simulate_fit_model(r, *fitted_);
   const double scale = values.at(0), offset = values.at(1);
   for (std::size_t j = 0; j < y.size(); ++j) y[j] = scale * y[j] + offset + added[j];
   return y;

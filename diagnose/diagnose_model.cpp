@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "coupling/rig_chain_map.hpp"
 #include "diagnose/candidate.hpp"
 #include "diagnose/diagnose_noise.hpp"
 
@@ -238,7 +239,7 @@ void DiagnosisModel::chain_map(const std::string& where) {
   base_.valve.case_file = rec_.meta.valve.case_file;
   base_.valve.regularisation_flow = 1e-3 * std::max(peak_flow_, 1e-12);
   try {
-    base_ = lumped::with_chain_map(base_, rec_);
+    base_ = coupling::with_chain_map(base_, rec_);
   } catch (const InputError& e) {
     throw InputError(where + ": [valve] case = \"" + base_.valve.case_file +
                      "\" cannot be used as the baseline: " + e.what());

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/enum_names.hpp"
-#include "lumped/fit_model_json.hpp"
+#include "identify/fit_model_json.hpp"
 #include "lumped/recording.hpp"
 #include "lumped/rig_model.hpp"
 
@@ -66,10 +66,10 @@ struct BaselineItem {
   std::string source;  ///< e.g. "sidecar [coil] inductance", with how it is used
 };
 
-/// A fitted model (`rheomag fit --json`, read by lumped::read_fit_model_json) as the baseline of a
-/// diagnosis, and the file it came from (named in messages and in baseline.includes).
+/// A fitted model (`rheomag fit --json`, read by identify::read_fit_model_json) as the baseline of
+/// a diagnosis, and the file it came from (named in messages and in baseline.includes).
 struct ModelBaseline {
-  lumped::FitModel model;
+  identify::FitModel model;
   std::string file;
 };
 
@@ -208,7 +208,7 @@ class DiagnosisModel {
   bool coil_drive_steps_ = false;  ///< the coil drive moves by a step within one interval
   /// Applies the held convention to the drives (RigSpec::held_drives, motion read later).
   void hold_drives();
-  std::shared_ptr<const lumped::FitModel> fitted_;  ///< the fitted-model baseline, if any
+  std::shared_ptr<const identify::FitModel> fitted_;  ///< the fitted-model baseline, if any
   std::string field_column_;  ///< fitted baseline: the model's field drive column ("" if none)
   double model_sign_ = 1.0;   ///< fitted baseline: sign of its output's correlation with velocity
   std::vector<BaselineItem> includes_;

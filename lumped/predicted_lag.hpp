@@ -1,9 +1,8 @@
 #pragma once
-// The field lag of a valve predicted from its drawing: FE step responses with eddy currents
-// (transient magnetics, docs/transient.md) reduced to a current-dependent first-order lag for
-// the rigs' eddy_currents block.
+// The field lag of a valve predicted from its drawing (coupling/field_lag_prediction.hpp: FE step
+// responses with eddy currents, docs/transient.md) as a current-dependent first-order lag for the
+// rigs' eddy_currents block.
 
-#include <filesystem>
 #include <vector>
 
 namespace rheomag::lumped {
@@ -15,13 +14,5 @@ struct PredictedLag {
   /// Time constant at |current| (linear interpolation, held beyond the ends).
   double at(double current) const;
 };
-
-/// For each current I (> 0, increasing): a current step 0 -> I on the first circuit of the FE
-/// case at `case_path` (its conductivities and [transient] remedies), simulated until every
-/// fluid gap's mean |B| has made 90 % of its change; the slowest gap's response is fitted by one
-/// first-order lag (transient::fit_lags). InputError for a case that cannot be read or has no
-/// conductivities / fluid gap, or bad currents; ConvergenceError when a step does not converge.
-PredictedLag predict_field_lag(const std::filesystem::path& case_path,
-                               const std::vector<double>& currents);
 
 }  // namespace rheomag::lumped

@@ -322,27 +322,6 @@ std::vector<int> grid_of(const RigSpec& spec, const DriveInputs& in) {
 
 }  // namespace
 
-RigSpec with_chain_map(const RigSpec& spec, const Recording& drive) {
-  RigSpec s = spec;
-  if (s.valve.case_file.empty() || s.valve.chain || s.kind == RigKind::coil_bench) return s;
-  double i_max = 0.0, q_max = 0.0;
-  auto largest = [](const std::vector<double>& v) {
-    double m = 0.0;
-    for (double x : v) m = std::max(m, std::abs(x));
-    return m;
-  };
-  if (s.driver_mode == DriverMode::current_source)
-    i_max = largest(drive.column("current"));
-  else if (s.driver_mode == DriverMode::current_pi)
-    i_max = largest(drive.column("current_cmd"));
-  else
-    i_max = s.driver.gain * largest(drive.column(s.voltage_column)) / s.coil.resistance_20c;
-  q_max = s.piston_area * largest(drive.column("velocity"));
-  if (!(q_max > 0.0)) q_max = 1e-6;
-  s.valve.chain = tabulate_valve_chain(s.valve.case_file, i_max > 0.0 ? 1.05 * i_max : 1.0, q_max);
-  return s;
-}
-
 Recording simulate_rig(const RigSpec& spec_in, const Recording& drive) {
   if (drive.t.size() < 2) throw InputError("simulate: the drive needs at least 2 samples");
   DriveInputs in;
@@ -368,7 +347,11 @@ Recording simulate_rig(const RigSpec& spec_in, const Recording& drive) {
   }
   if (spec_in.inertance && *spec_in.inertance <= 0)
     throw InputError("simulate: inertance must be > 0");
-  const RigSpec spec = with_chain_map(spec_in, drive);
+  if (spec_in.kind != RigKind::coil_bench && !spec_in.valve.case_file.empty() &&
+      !spec_in.valve.chain)
+    throw InputError("simulate: the valve names the FE case " + spec_in.valve.case_file +
+                     " but carries no tabulated map (coupling::with_chain_map fills it)");
+  const RigSpec& spec = spec_in;
   RigSystem system(spec, in);
   IntegratorOptions opt;
   opt.abs_tol = 1e-7;

@@ -77,14 +77,11 @@ std::vector<std::string> rig_drive_columns(const RigSpec& spec);
 /// Output column the rig explains ("pressure", "force" or "current").
 std::string rig_output_column(const RigSpec& spec);
 
-/// The spec with its valve's FE-chain map tabulated once over the drive's current and flow range
-/// (unchanged when the valve is a table, the map is already there, or the rig is a coil bench).
-/// Throws InputError if the case cannot be read, ConvergenceError if it does not solve.
-RigSpec with_chain_map(const RigSpec& spec, const Recording& drive);
-
 /// Simulates the rig driven by the drive columns of `drive` at its sample times (rosenbrock4, or
 /// the fixed sample grid when spec.grid_substeps > 0),
-/// adds the spec's sensor noise, and returns a recording (CSV columns + sidecar metadata).
+/// adds the spec's sensor noise, and returns a recording (CSV columns + sidecar metadata). A valve
+/// that names an FE case needs its map in spec.valve.chain (coupling::with_chain_map fills it):
+/// InputError otherwise.
 Recording simulate_rig(const RigSpec& spec, const Recording& drive);
 
 }  // namespace rheomag::lumped

@@ -1,13 +1,13 @@
 #pragma once
 // Static valve map from the fluid chain: the pressure drop of a case's magnetised gaps
-// (valve::ValveChain, FE field per current) tabulated once on a current x flow grid, split into
+// (valve::ValveChain, FE field per current; tabulated by coupling/valve_chain_tabulation.hpp) on
+// a current x flow grid, split into
 // the yield part and the viscous (Poiseuille) part so each carries its own calibration scale, and
 // its inverse Q(dp, I) for rigs with compliant chambers. Templates so Ceres Jets flow through the
 // scales and the states.
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -26,16 +26,6 @@ struct ChainMapTable {
   template <class T>
   T yield_at(std::size_t k, const T& i) const;
 };
-
-/// Evaluates `case_file` with valve::ValveChain (a damper piston case, one with a [damper] table:
-/// valve::DamperChain, its force minus the gas force over the piston area) at `currents` x
-/// `flows` once and returns the table
-/// (currents from 0 to max_current, flows log-spaced from 1e-3 to 1.5 times max_flow). Throws
-/// InputError if the case cannot be read or has no valve.
-std::shared_ptr<const ChainMapTable> tabulate_valve_chain(const std::string& case_file,
-                                                          double max_current, double max_flow,
-                                                          int current_points = 6,
-                                                          int flow_points = 12);
 
 /// Pressure drop [Pa] at flow Q [m^3/s] and field current i [A]:
 /// yield_scale * yield(i, |Q|) tanh(Q / eps_flow) + viscous_scale * R * Q.

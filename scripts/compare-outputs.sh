@@ -130,6 +130,16 @@ if in_group ident; then
     --report OUT/report --json --quiet
   run simulate simulate "$data/mrdamper/mrdamper.toml" --input "$data/mrdamper/mrdamper.csv" \
     --out OUT/sim.csv
+  # Text reports of fit / fit-family, a validation recording, and a rig whose valve map and field
+  # lag come from an FE case (coupling/).
+  run fit_bingham_text fit "$data/mrdamper/mrdamper.csv" --model bingham --quiet
+  run fit_arx_validate_file fit "$data/utfsm/10mm1Hz0A.csv" --model arx:2,2,1 \
+    --validate "$data/utfsm/10mm1Hz0x5A.csv"
+  run fit_family_text fit-family "$data/utfsm/10mm1Hz0A.csv" "$data/utfsm/10mm1Hz1A.csv" \
+    --model bingham --predict "$data/utfsm/10mm1Hz0x5A.csv" --quiet
+  run simulate_chain simulate "$src/cases/rigs/constant_velocity_pump_chain.toml" \
+    --signal velocity=constant:value=0.01 --signal current=steps:levels=0/0.5/1,period=0.2 \
+    --duration 0.6 --rate 200 --out OUT/chain.csv
 fi
 if in_group diagnose; then
   run diagnose diagnose "$data/mrdamper/mrdamper.csv" --meta "$src/tests/data/diagnosis/mrdamper.toml" \

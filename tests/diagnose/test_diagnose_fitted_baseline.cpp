@@ -17,9 +17,9 @@
 
 #include "core/error.hpp"
 #include "diagnose/diagnose_run.hpp"
-#include "lumped/fit_model_json.hpp"
-#include "lumped/greybox.hpp"
-#include "lumped/valve_chain_fit.hpp"
+#include "identify/fit_model_json.hpp"
+#include "identify/greybox.hpp"
+#include "identify/valve_chain_fit.hpp"
 #include "test_diagnose_fixture.hpp"
 
 namespace {
@@ -38,9 +38,9 @@ ModelBaseline last_months_model() {
                                       {"displacement=sine:amplitude=0.025,frequency=1",
                                        "current=steps:levels=0/1,period=0.35"}),
                                 3e4, 11);
-  const auto fit = rheomag::lumped::fit_greybox(v.noisy, "bingham");
-  const std::string text = rheomag::lumped::fit_model_json(fit, v.noisy.meta).dump();
-  return {rheomag::lumped::parse_fit_model_json(text, "model.json"), "model.json"};
+  const auto fit = rheomag::identify::fit_greybox(v.noisy, "bingham");
+  const std::string text = rheomag::identify::fit_model_json(fit, v.noisy.meta).dump();
+  return {rheomag::identify::parse_fit_model_json(text, "model.json"), "model.json"};
 }
 
 /// Today's recording of the same rig (another drive), with `lag` [s] of MR response time.
@@ -100,21 +100,22 @@ TEST(DiagnoseFittedBaseline, NamesNothingWhenTheDeviceIsUnchanged) {
 
 /// A valve-chain damper model over a small hand-made static map (as `fit --model valve-chain`
 /// stores it; no FE solve needed): yield 0.2-0.9 MPa over 0-1 A, piston 1e-3 m^2, 10 ms field lag.
-rheomag::lumped::ValveChainFit chain_damper_model() {
+rheomag::identify::ValveChainFit chain_damper_model() {
   auto map = std::make_shared<rheomag::lumped::ChainMapTable>();
   map->case_file = "valve.toml";
   map->current = {0.0, 0.5, 1.0};
   map->flow = {1e-7, 1e-6, 1e-5, 1e-4};
   map->yield = {2e5, 2.1e5, 2.2e5, 2.3e5, 5e5, 5.2e5, 5.4e5, 5.6e5, 8e5, 8.4e5, 8.7e5, 9e5};
   map->viscous_resistance = 2e9;
-  rheomag::lumped::ValveChainFit fit;
+  rheomag::identify::ValveChainFit fit;
   fit.setup.map = map;
   fit.setup.motion_column = "velocity";
   fit.setup.field_column = "current";
   fit.setup.output_column = "force";
   fit.setup.piston_area = 1e-3;
   fit.setup.eps_flow = 1e-7;
-  fit.params = rheomag::lumped::valve_chain_parameters({1.0, 1.0, 0.01, 0.0}, /*compliant=*/false);
+  fit.params =
+      rheomag::identify::valve_chain_parameters({1.0, 1.0, 0.01, 0.0}, /*compliant=*/false);
   return fit;
 }
 
@@ -149,14 +150,14 @@ TEST(DiagnoseFittedBaselineChain, NamesAFieldLagInFrontOfAValveChainModel) {
     lagged.push_back(state);
   }
   rec.columns = {{"velocity", v}, {"current", lagged}, {"force", std::vector<double>(v.size())}};
-  auto force = rheomag::lumped::simulate_valve_chain(rec, fit);
+  auto force = rheomag::identify::simulate_valve_chain(rec, fit);
   std::mt19937 rng(3);
   std::normal_distribution<double> noise(0.0, 10.0);  // ~1 % of the force's rms
   for (double& f : force) f += noise(rng);
   rec.columns["force"] = force;
   rec.columns["current"] = i;  // what the recorder saw: the coil current, not the field
-  const auto model = rheomag::lumped::parse_fit_model_json(
-      rheomag::lumped::fit_model_json(fit, rec.meta).dump(), "chain.json");
+  const auto model = rheomag::identify::parse_fit_model_json(
+      rheomag::identify::fit_model_json(fit, rec.meta).dump(), "chain.json");
   const auto d = diagnose_with(rec, {model, "chain.json"});
   expect_one_field_lag(d, tau);
   bool has_map = false;

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <string>
 
+#include "coupling/rig_chain_map.hpp"
 #include "diagnose/diagnose_run.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording.hpp"
@@ -47,6 +48,7 @@ inline lumped::Recording drive(double duration, double rate,
 inline VirtualRecording make_recording(lumped::RigSpec truth, const lumped::Recording& in,
                                        double sigma, unsigned seed = 7) {
   const std::string out = lumped::rig_output_column(truth);
+  truth = coupling::with_chain_map(truth, in);  // a [valve] case's FE map, tabulated once
   auto clean_spec = truth;
   clean_spec.sensor_noise.clear();
   const auto clean = lumped::simulate_rig(clean_spec, in);

@@ -1,13 +1,12 @@
 // Bad input of recordings (issue #18's probe): every physical value of a sidecar has a declared
 // domain and a value outside it is refused at read time with file, line and key; CSVs with a
 // UTF-8 byte-order mark are read; a CSV with another separator is refused naming it; a constant
-// output is refused naming file and column; narx on it is an InputError, not a crash.
+// output is refused naming file and column (narx on it: tests/identify/test_ident_nonlinear.cpp).
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <Eigen/Dense>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -17,7 +16,6 @@
 
 #include "core/error.hpp"
 #include "core/finite_output.hpp"
-#include "lumped/ident_narx.hpp"
 #include "lumped/recording_io.hpp"
 
 using ::testing::HasSubstr;
@@ -268,7 +266,6 @@ TEST(BadInputRecording, OutputConstantToRoundingNamed) {
   EXPECT_NO_THROW(rec.require_varying("force"));  // 2e-7 relative: a measured change
 }
 
-// narx on a constant output died with SIGSEGV inside the QR of an empty regressor matrix.
 // `simulate model.json` with a parameter of 1e308 produced an infinite force; the writer said
 // "p.csv: non-finite value at sample 1" with exit 2, as if the input were wrong and without the
 // column. It is a non-finite result (exit 3) naming the column and time; nothing is written.
@@ -299,18 +296,4 @@ TEST(BadInputRecording, SidecarWithCapitalExtensionIsFound) {
   EXPECT_EQ(rec.meta.output, "force");
   EXPECT_EQ(rec.meta.sidecar_path, (dir / "REC.TOML").string());
   std::filesystem::remove_all(dir);
-}
-
-TEST(BadInputRecording, NarxOnConstantOutputIsInputError) {
-  IoData data;
-  const int n = 400;
-  data.u.resize(n, 1);
-  for (int k = 0; k < n; ++k) data.u(k, 0) = std::sin(0.1 * k);
-  data.y = Eigen::VectorXd::Constant(n, 5.0);
-  data.sample_time = 0.005;
-  NarxOptions options;
-  options.orders = {2, 2, 1};
-  EXPECT_THAT([&] { fit_narx(data, options); },
-              ::testing::ThrowsMessage<rheomag::InputError>(
-                  HasSubstr("narx: the output is constant (5 on all 400 samples)")));
 }

@@ -2,12 +2,14 @@
 // Duhem loop closing, LuGre steady state = Bingham, thermal steady state, PI tracking, eddy time
 // constant; and convergence of the regularised sign/plug switches as their width shrinks.
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "core/error.hpp"
 #include "lumped/blocks.hpp"
-#include "lumped/greybox.hpp"
+#include "lumped/pheno_simulation.hpp"
 #include "lumped/rig_model.hpp"
 #include "lumped/signals.hpp"
 #include "lumped/transfer_function.hpp"
@@ -251,4 +253,16 @@ TEST(Blocks, TransferFunctionStepAndTf14Gain) {
     ASSERT_NEAR(y[k], exact, 1e-5) << "t = " << t;
   }
   EXPECT_NEAR(dc_gain(tf14_paper000()), 7.4849, 1e-3);
+}
+
+// The lumped layer solves no FE: a valve that names a case must arrive with its map tabulated
+// (coupling::with_chain_map); a caller that forgets is told so instead of getting a silent table.
+TEST(Blocks, ValveCaseWithoutTabulatedMapIsRefused) {
+  RigSpec s = bypass_rig();
+  s.valve.case_file = "cases/annular_valve.toml";
+  Recording d = drive_with(0.01, 1e3, {"velocity=constant:value=0.01", "current=constant:value=1"});
+  EXPECT_THAT([&] { simulate_rig(s, d); },
+              ::testing::ThrowsMessage<rheomag::InputError>(::testing::HasSubstr(
+                  "the valve names the FE case cases/annular_valve.toml but carries no tabulated "
+                  "map (coupling::with_chain_map fills it)")));
 }

@@ -1,0 +1,130 @@
+// Family fits: join recordings, fit one grey-box model, evaluate it on every member.
+
+#include "identify/current_dependent_fit.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+
+#include "core/error.hpp"
+#include "identify/family_cross_validation.hpp"
+#include "identify/repeatability.hpp"
+#include "lumped/output_smoothing.hpp"
+
+namespace rheomag::identify {
+
+FamilyMember evaluate_family_member(const lumped::Recording& rec, const GreyboxFit& fit) {
+  FamilyMember m;
+  m.csv_path = rec.csv_path;
+  if (!fit.setup.field_column.empty()) {
+    const auto& u = rec.column(fit.setup.field_column);
+    m.field = std::accumulate(u.begin(), u.end(), 0.0) / static_cast<double>(u.size());
+  }
+  m.simulated = simulate_greybox(rec, fit);
+  m.mean_removed = lumped::output_mean_removed(rec.column(fit.setup.output_column));
+  m.metrics = lumped::compute_metrics(rec.column(fit.setup.output_column), m.simulated);
+  m.repeatability = repeatability_percent(rec.t, rec.column(fit.setup.motion_column),
+                                          rec.column(fit.setup.output_column));
+  return m;
+}
+
+void check_family(const std::vector<lumped::Recording>& training,
+                  const std::vector<lumped::Recording>& prediction, const std::string& model) {
+  if (training.empty()) throw InputError("fit-family: no training recordings given");
+  const lumped::Recording& first = training.front();
+  const auto kind_text = [](const lumped::Recording& r) {
+    return r.meta.rig.kind ? "'" + std::string(lumped::kRigKindNames.name(*r.meta.rig.kind)) + "'"
+                           : std::string("(none)");
+  };
+  const auto same_kind = [&](const lumped::Recording& r) {
+    if (r.meta.rig.kind != first.meta.rig.kind)
+      throw InputError(r.csv_path + ": [rig] kind " + kind_text(r) + " differs from " +
+                       kind_text(first) + " of " + first.csv_path +
+                       "; a family is one device on one rig");
+    if (r.meta.drive != first.meta.drive || r.meta.output != first.meta.output)
+      throw InputError(r.csv_path + ": drive/output columns differ from " + first.csv_path +
+                       "; a family fit needs recordings of the same kind");
+  };
+  for (const lumped::Recording& r : training) same_kind(r);
+  for (const lumped::Recording& r : prediction) same_kind(r);
+  lumped::PhenoKind kind;
+  if (!lumped::parse_pheno_kind(model, kind)) return;  // fit_greybox_family names the unknown model
+  const lumped::GreyboxSetup setup = lumped::greybox_setup_for(first, kind);
+  if (setup.field_column.empty()) return;  // no field input: the model is not current-dependent
+  // The field terms are identifiable only if the field takes two or more values in the family.
+  double lo = 1e300, hi = -1e300;
+  for (const lumped::Recording& r : training)
+    for (double u : r.column(setup.field_column)) {
+      lo = std::min(lo, u);
+      hi = std::max(hi, u);
+    }
+  if (!(hi - lo > 1e-3 * std::max({std::abs(lo), std::abs(hi), 1e-12})))
+    throw InputError("fit-family --model " + model + ": the '" + setup.field_column +
+                     "' column is " + std::to_string(lo) + " in every training recording (" +
+                     first.csv_path +
+                     ", ...); the model's field terms need recordings at two or "
+                     "more field levels");
+}
+
+lumped::Recording join_recordings(const std::vector<lumped::Recording>& recs, int decimation) {
+  if (recs.empty()) throw InputError("join_recordings: no recordings given");
+  if (decimation < 1)
+    throw InputError("decimation must be at least 1, got " + std::to_string(decimation));
+  const lumped::Recording& first = recs.front();
+  lumped::Recording joined;
+  joined.meta = first.meta;
+  joined.csv_path = first.csv_path;
+  for (const auto& [name, values] : first.columns) {
+    (void)values;
+    const bool everywhere = std::all_of(recs.begin(), recs.end(), [&](const lumped::Recording& r) {
+      return r.columns.count(name);
+    });
+    if (everywhere) joined.columns[name];
+  }
+  for (const lumped::Recording& r : recs) {
+    if (r.meta.drive != first.meta.drive || r.meta.output != first.meta.output)
+      throw InputError(r.csv_path + ": drive/output columns differ from " + first.csv_path +
+                       "; a family fit needs recordings of the same kind");
+    if (r.t.size() < 2) throw InputError(r.csv_path + ": fewer than 2 samples");
+    const double step = (r.t[1] - r.t[0]) * decimation;
+    const double shift = joined.t.empty() ? -r.t.front() : joined.t.back() + step - r.t.front();
+    for (std::size_t i = 0; i < r.t.size(); i += static_cast<std::size_t>(decimation)) {
+      joined.t.push_back(r.t[i] + shift);
+      for (auto& [name, values] : joined.columns) values.push_back(r.columns.at(name)[i]);
+    }
+  }
+  return joined;
+}
+
+FamilyFit fit_current_dependent(const std::vector<lumped::Recording>& training,
+                                const std::string& model,
+                                const std::vector<lumped::Recording>& prediction,
+                                const FamilyFitOptions& options) {
+  check_family(training, prediction, model);
+  if (options.cross_validate) check_cross_validation(training, model);  // before the long fits
+  FamilyFit out;
+  const auto start = std::chrono::steady_clock::now();
+  out.fit = fit_greybox_family(training, model, options.greybox, options.decimation);
+  // Each recording simulated at its full rate with the fitted parameters.
+  const std::size_t members = training.size() + prediction.size();
+  const auto evaluate = [&](const lumped::Recording& r, std::vector<FamilyMember>& into) {
+    into.push_back(evaluate_family_member(r, out.fit));
+    if (!options.greybox.progress) return;
+    ProgressEvent e;
+    e.stage = "simulating every recording with the fitted " + out.fit.model;
+    e.done = static_cast<double>(out.training.size() + out.predicted.size());
+    e.total = static_cast<double>(members);
+    e.elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    options.greybox.progress(e);
+  };
+  for (const lumped::Recording& r : training) evaluate(r, out.training);
+  for (const lumped::Recording& r : prediction) {
+    evaluate(r, out.predicted);
+    out.predicted.back().band = prediction_band(r, out.fit);
+  }
+  if (options.cross_validate) out.held_out = cross_validate_family(training, model, options);
+  return out;
+}
+
+}  // namespace rheomag::identify

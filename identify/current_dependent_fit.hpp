@@ -1,0 +1,78 @@
+#pragma once
+// Current-dependent grey-box fits across a family of recordings of one device (paper 001's
+// protocol): one parameter set, with the field-scaled terms of the model linear in the current,
+// fitted jointly on recordings at several currents and frequencies, then used to predict other
+// recordings (e.g. another frequency), with per-recording metrics (RE of paper 001 eq. 10).
+
+#include <string>
+#include <vector>
+
+#include "identify/greybox.hpp"
+#include "identify/prediction_band.hpp"
+#include "lumped/metrics.hpp"
+#include "lumped/recording.hpp"
+
+namespace rheomag::identify {
+
+/// Options of a family fit: the grey-box options plus how the recordings are joined.
+struct FamilyFitOptions {
+  GreyboxOptions greybox;  ///< `train` is ignored (every joined sample is fitted)
+  int decimation = 4;      ///< keep every n-th sample of each recording in the joint fit
+  /// Also refit once without each training recording and predict it (leave-one-recording-out).
+  bool cross_validate = false;
+};
+
+/// Metrics of the fitted model on one recording of the family (free run, full rate).
+struct FamilyMember {
+  std::string csv_path;
+  double field = 0.0;  ///< [A or V] mean of the field drive column (the recording's current)
+  lumped::Metrics metrics;
+  /// The recording's output had its mean removed, so the model's was too (output_mean_removed).
+  bool mean_removed = false;
+  /// Predicted recordings: the prediction's one-sigma band from the parameters' disagreement
+  /// between the training recordings (prediction_band).
+  std::optional<PredictionBand> band;
+  /// FIT % of the recording's own mean cycle on its steady cycles, the most a model answering its
+  /// periodic drive with a periodic output reaches there (repeatability_percent); empty if the
+  /// drive is not periodic.
+  std::optional<double> repeatability;
+  std::vector<double> simulated;  ///< free-run model output at the recording's samples
+};
+
+/// Result of fit_current_dependent.
+struct FamilyFit {
+  GreyboxFit fit;                       ///< the joint fit (its metrics are on the joined data)
+  std::vector<FamilyMember> training;   ///< the fitted model on each training recording
+  std::vector<FamilyMember> predicted;  ///< the fitted model on each prediction recording
+  /// Each training recording predicted by the family fitted without it, in training order
+  /// (leave-one-recording-out, FamilyFitOptions::cross_validate); empty otherwise.
+  std::vector<FamilyMember> held_out;
+};
+
+/// The recordings joined end to end, each decimated by `decimation` and shifted in time to
+/// follow the previous one by one (decimated) sample step; columns present in all are kept.
+/// InputError if the list is empty, decimation < 1, or the recordings' sidecars disagree on the
+/// drive or output columns.
+lumped::Recording join_recordings(const std::vector<lumped::Recording>& recs, int decimation);
+
+/// Checks that `training` and `prediction` make one family for `model`: InputError if empty, for
+/// recordings of another rig kind or other drive/output columns, or for a field-dependent model
+/// whose training recordings hold one field level only.
+void check_family(const std::vector<lumped::Recording>& training,
+                  const std::vector<lumped::Recording>& prediction, const std::string& model);
+
+/// The fitted model `fit` on one recording: its free run at the recording's full rate and the
+/// metrics against the recording's output (the band is left empty).
+FamilyMember evaluate_family_member(const lumped::Recording& rec, const GreyboxFit& fit);
+
+/// Fits `model` (a grey-box name) jointly on `training` (joined, see join_recordings) so that its
+/// field-scaled parameters are linear functions of the current, then simulates every training
+/// and `prediction` recording separately with the fitted parameters; with
+/// options.cross_validate, also fills held_out (cross_validate_family). InputError for a family
+/// of mixed rigs or columns, or one field level for a field-dependent model.
+FamilyFit fit_current_dependent(const std::vector<lumped::Recording>& training,
+                                const std::string& model,
+                                const std::vector<lumped::Recording>& prediction,
+                                const FamilyFitOptions& options = {});
+
+}  // namespace rheomag::identify

@@ -1,0 +1,118 @@
+// The JSON document and the text report of a current-dependent family fit (`rheomag
+// fit-family`).
+
+#include "identify/family_fit_output.hpp"
+
+#include <algorithm>
+
+#include "identify/fit_model_json.hpp"
+#include "core/format_text.hpp"
+
+namespace rheomag::identify {
+
+namespace {
+
+nlohmann::json member_json(const FamilyMember& m) {
+  return {{"file", m.csv_path},
+          {"field", m.field},
+          {"fit_percent", m.metrics.fit_percent},
+          {"rmse_percent", m.metrics.rmse_percent},
+          {"re", m.metrics.re},
+          {"mean_removed", m.mean_removed},
+          {"band_rms", m.band ? nlohmann::json(m.band->rms) : nlohmann::json()},
+          {"band_percent", m.band ? nlohmann::json(m.band->percent) : nlohmann::json()},
+          {"repeatability_percent",
+           m.repeatability ? nlohmann::json(*m.repeatability) : nlohmann::json()}};
+}
+
+void print_members(std::ostream& out, const char* title, const std::vector<FamilyMember>& members) {
+  const bool banded = std::any_of(members.begin(), members.end(),
+                                  [](const FamilyMember& m) { return m.band.has_value(); });
+  out << format_text("%s\n  %-40s %8s %8s %8s %6s%s\n", title, "recording", "field", "FIT%", "RE",
+           "rep%", banded ? "  band% (1 sigma, parameters between recordings)" : "");
+  for (const auto& m : members) {
+    out << format_text("  %-40s %8.3g %8.1f %8.3f", m.csv_path.c_str(), m.field, m.metrics.fit_percent,
+             m.metrics.re);
+    if (m.repeatability)
+      out << format_text(" %6.1f", *m.repeatability);
+    else
+      out << format_text(" %6s", "-");
+    if (m.band) out << format_text("  %5.1f", m.band->percent);
+    out << format_text("%s\n",
+             m.mean_removed ? "  (mean removed: compared without the model's mean)" : "");
+  }
+}
+
+/// One line comparing the held-out FITs with the fitted ones: the median and the lowest of each.
+void print_held_out_summary(std::ostream& out, const FamilyFit& r) {
+  const auto fits = [](const std::vector<FamilyMember>& members) {
+    std::vector<double> v;
+    for (const auto& m : members) v.push_back(m.metrics.fit_percent);
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  const std::vector<double> held = fits(r.held_out), fitted = fits(r.training);
+  const auto median = [](const std::vector<double>& v) {
+    const std::size_t h = v.size() / 2;
+    return v.size() % 2 ? v[h] : 0.5 * (v[h - 1] + v[h]);
+  };
+  print_to(out,
+           "held-out FIT: median %.1f %%, lowest %.1f %% (fitted on all: median %.1f %%, lowest "
+           "%.1f %%)\n",
+           median(held), held.front(), median(fitted), fitted.front());
+}
+
+}  // namespace
+
+void write_family_fit_text(const FamilyFit& r, std::size_t recordings, int decimation,
+                           std::ostream& out) {
+  out << format_text("model %s, joint fit on %zu recordings (every %d-th sample)\n", r.fit.model.c_str(),
+           recordings, decimation);
+  out << format_text("  %-24s %14s %-13s %-13s\n", "parameter", "value", "+- classical",
+           "+- between recordings");
+  const auto error_column = [&out](const std::optional<double>& e) {
+    if (e)
+      out << format_text(" +- %-10.3g", *e);
+    else
+      out << format_text("    %-10s", "");
+  };
+  for (const auto& p : r.fit.params) {
+    out << format_text("  %-24s %14.6g", p.name.c_str(), p.value);
+    error_column(p.standard_error);
+    error_column(p.standard_error_between_recordings);
+    out << format_text(" %s%s\n", p.unit.c_str(),
+             p.fixed      ? " (fixed)"
+             : p.at_bound ? " (at bound)"
+                          : "");
+  }
+  print_members(out, "training recordings:", r.training);
+  if (!r.predicted.empty()) print_members(out, "predicted recordings:", r.predicted);
+  if (!r.held_out.empty()) {
+    print_members(out,
+                  "held out (each training recording predicted by the family fitted without it):",
+                  r.held_out);
+    print_held_out_summary(out, r);
+  }
+  print_to(out,
+           "rep%%: FIT of each recording's own mean cycle on its steady cycles, the most a model "
+           "answering a periodic drive with a periodic output reaches there (- : drive not "
+           "periodic)\n");
+}
+
+nlohmann::json family_fit_json(const FamilyFit& r, const lumped::RecordingMeta& meta,
+                               int decimation, bool cross_validate) {
+  nlohmann::json j = fit_model_json(r.fit, meta);
+  j["train"] = nlohmann::json::array();
+  for (const auto& m : r.training) j["train"].push_back(member_json(m));
+  j["prediction"] = nlohmann::json::array();
+  for (const auto& m : r.predicted) j["prediction"].push_back(member_json(m));
+  if (cross_validate) {
+    j["held_out"] = nlohmann::json::array();
+    for (const auto& m : r.held_out) j["held_out"].push_back(member_json(m));
+  }
+  j["decimation"] = decimation;
+  j["mode"] = "simulation";
+  return j;
+}
+
+}  // namespace rheomag::identify

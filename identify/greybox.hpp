@@ -1,0 +1,90 @@
+#pragma once
+// Grey-box (physical) identification: Bingham, LuGre, modified Bouc-Wen, Maxwell, Dahl,
+// bi-viscous, hyperbolic tangent and the physically based damper model fitted to a recording (or
+// jointly to several recordings of one device) with Ceres (bounded trust region, automatic
+// differentiation through a fixed-step RK4 simulation), multi-start, and standard errors from the
+// Jacobian.
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/progress.hpp"
+#include "lumped/metrics.hpp"
+#include "lumped/pheno_simulation.hpp"
+#include "lumped/phenomenological.hpp"
+#include "lumped/recording.hpp"
+
+namespace rheomag::identify {
+
+/// Options of a grey-box fit.
+struct GreyboxOptions {
+  std::optional<lumped::SampleRange> train;  ///< samples to fit on; whole recording if empty
+  int starts = 4;           ///< multi-start: number of starting points (first = nominal)
+  unsigned seed = 1;        ///< seed of the perturbed starting points
+  int max_iterations = 60;  ///< Levenberg-Marquardt iterations per start
+  int threads = 0;          ///< threads (0: one per core); same fit if starts >= it
+  double max_substep = lumped::kPhenoMaxSubstep;  ///< [s] largest RK4 substep in the fit
+  double exponential_step = 5e-3;  ///< [s] largest step of the damper model's integrator
+  double bouc_wen_step = 1e-3;     ///< [s] largest step of the Bouc-Wen model's integrator
+  double eps_fraction = 1e-3;      ///< sign/|.| regularisation width as a fraction of rms motion
+  /// Reports the fit's Levenberg-Marquardt iterations (summed over the starts, out of the bound
+  /// starts x max_iterations); may be called from several threads at once.
+  ProgressCallback progress;
+};
+
+/// One fitted parameter in SI units (units spelled out for this recording's columns).
+struct FittedParameter {
+  std::string name;
+  std::string unit;
+  double value = 0.0;
+  std::optional<double> standard_error;  ///< empty when held fixed or not identifiable
+  /// Cluster-robust standard error, each training recording one cluster (family fits of two or
+  /// more recordings; cluster_standard_errors): how far the recordings disagree on the value.
+  std::optional<double> standard_error_between_recordings;
+  bool fixed = false;     ///< held constant (e.g. field terms without a field input)
+  bool at_bound = false;  ///< ended on a bound
+};
+
+/// Result of fit_greybox.
+struct GreyboxFit {
+  std::string model;
+  lumped::GreyboxSetup setup;
+  std::vector<FittedParameter> params;  ///< in the order of pheno_params(kind)
+  std::vector<double> simulated;        ///< free-run model output over the whole recording
+  lumped::Metrics train;                ///< simulation-mode metrics on the training samples
+  lumped::SampleRange train_range;
+  double residual_sigma = 0.0;  ///< [output unit] rms residual on the training samples
+  int starts_run = 0;
+  int best_start = 0;
+  bool converged = false;  ///< Ceres reported convergence for the best start
+  /// Family fits of two or more recordings: the parameters' cluster-robust covariance between
+  /// recordings (N x N in the model's parameter order, SI units), zero for held and unidentifiable
+  /// parameters; empty otherwise.
+  Eigen::MatrixXd covariance_between_recordings;
+};
+
+/// Names accepted by fit_greybox: bingham, lugre, bouc-wen, maxwell, dahl, bi-viscous, tanh,
+/// damper.
+const std::vector<std::string>& greybox_model_names();
+
+/// True if `model` is a grey-box model name.
+bool is_greybox_model(const std::string& model);
+
+/// Fits `model` to `rec` (output column vs motion, position and field drive columns). Throws
+/// InputError for an unknown model, a recording without a velocity/flow drive, or too few samples.
+GreyboxFit fit_greybox(const lumped::Recording& rec, const std::string& model,
+                       const GreyboxOptions& options = {});
+
+/// Fits `model` jointly to `recs` (same drive and output columns), keeping every `decimation`-th
+/// sample: each recording is simulated from its own initial state and its residuals are divided
+/// by its own spread ||y - mean(y)||, so every recording weighs the same whatever its force
+/// level (the cost is sum (1 - FIT_r)^2 / 2). `options.train` is ignored; fit.simulated is empty.
+GreyboxFit fit_greybox_family(const std::vector<lumped::Recording>& recs, const std::string& model,
+                              const GreyboxOptions& options, int decimation);
+
+/// Free-run output of a fitted model on another recording of the same device (stiff integrator).
+std::vector<double> simulate_greybox(const lumped::Recording& rec, const GreyboxFit& fit);
+
+}  // namespace rheomag::identify

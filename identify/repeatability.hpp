@@ -1,0 +1,24 @@
+#pragma once
+// How far a recording repeats itself under a periodic drive: the FIT of its own mean cycle on its
+// steady cycles. A model whose output answers a periodic drive with a periodic output cannot beat
+// this on those cycles, so it tells a user how much of a model's error is the test's own
+// cycle-to-cycle scatter (drift, noise) rather than missing physics.
+
+#include <optional>
+#include <vector>
+
+namespace rheomag::identify {
+
+/// FIT % (100 (1 - ||y - y_cycle|| / ||y - mean y||)) of the mean cycle y_cycle on the steady
+/// cycles of y(t) under the drive v(t): cycles between v's upward crossings (upward_crossings)
+/// whose drive swing is within 2 % of the largest; each sample is compared with the other steady
+/// cycles' mean at its phase (linear interpolation), the squared error scaled by (n-1)/(n-1+2/3)
+/// for the noise that mean carries over n cycles (at most 64 cycles, evenly spread, are used).
+/// Empty without at least 3 steady cycles, for a
+/// drive that is not periodic (drive_period) or repeats itself to less than 95 % by the same
+/// measure.
+std::optional<double> repeatability_percent(const std::vector<double>& t,
+                                            const std::vector<double>& v,
+                                            const std::vector<double>& y);
+
+}  // namespace rheomag::identify
