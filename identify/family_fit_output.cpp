@@ -5,8 +5,8 @@
 
 #include <algorithm>
 
-#include "identify/fit_model_json.hpp"
 #include "core/format_text.hpp"
+#include "identify/fit_model_json.hpp"
 
 namespace rheomag::identify {
 
@@ -29,17 +29,17 @@ void print_members(std::ostream& out, const char* title, const std::vector<Famil
   const bool banded = std::any_of(members.begin(), members.end(),
                                   [](const FamilyMember& m) { return m.band.has_value(); });
   out << format_text("%s\n  %-40s %8s %8s %8s %6s%s\n", title, "recording", "field", "FIT%", "RE",
-           "rep%", banded ? "  band% (1 sigma, parameters between recordings)" : "");
+                     "rep%", banded ? "  band% (1 sigma, parameters between recordings)" : "");
   for (const auto& m : members) {
-    out << format_text("  %-40s %8.3g %8.1f %8.3f", m.csv_path.c_str(), m.field, m.metrics.fit_percent,
-             m.metrics.re);
+    out << format_text("  %-40s %8.3g %8.1f %8.3f", m.csv_path.c_str(), m.field,
+                       m.metrics.fit_percent, m.metrics.re);
     if (m.repeatability)
       out << format_text(" %6.1f", *m.repeatability);
     else
       out << format_text(" %6s", "-");
     if (m.band) out << format_text("  %5.1f", m.band->percent);
     out << format_text("%s\n",
-             m.mean_removed ? "  (mean removed: compared without the model's mean)" : "");
+                       m.mean_removed ? "  (mean removed: compared without the model's mean)" : "");
   }
 }
 
@@ -56,20 +56,20 @@ void print_held_out_summary(std::ostream& out, const FamilyFit& r) {
     const std::size_t h = v.size() / 2;
     return v.size() % 2 ? v[h] : 0.5 * (v[h - 1] + v[h]);
   };
-  print_to(out,
-           "held-out FIT: median %.1f %%, lowest %.1f %% (fitted on all: median %.1f %%, lowest "
-           "%.1f %%)\n",
-           median(held), held.front(), median(fitted), fitted.front());
+  out << format_text(
+      "held-out FIT: median %.1f %%, lowest %.1f %% (fitted on all: median %.1f %%, lowest "
+      "%.1f %%)\n",
+      median(held), held.front(), median(fitted), fitted.front());
 }
 
 }  // namespace
 
 void write_family_fit_text(const FamilyFit& r, std::size_t recordings, int decimation,
                            std::ostream& out) {
-  out << format_text("model %s, joint fit on %zu recordings (every %d-th sample)\n", r.fit.model.c_str(),
-           recordings, decimation);
+  out << format_text("model %s, joint fit on %zu recordings (every %d-th sample)\n",
+                     r.fit.model.c_str(), recordings, decimation);
   out << format_text("  %-24s %14s %-13s %-13s\n", "parameter", "value", "+- classical",
-           "+- between recordings");
+                     "+- between recordings");
   const auto error_column = [&out](const std::optional<double>& e) {
     if (e)
       out << format_text(" +- %-10.3g", *e);
@@ -81,9 +81,9 @@ void write_family_fit_text(const FamilyFit& r, std::size_t recordings, int decim
     error_column(p.standard_error);
     error_column(p.standard_error_between_recordings);
     out << format_text(" %s%s\n", p.unit.c_str(),
-             p.fixed      ? " (fixed)"
-             : p.at_bound ? " (at bound)"
-                          : "");
+                       p.fixed      ? " (fixed)"
+                       : p.at_bound ? " (at bound)"
+                                    : "");
   }
   print_members(out, "training recordings:", r.training);
   if (!r.predicted.empty()) print_members(out, "predicted recordings:", r.predicted);
@@ -93,10 +93,10 @@ void write_family_fit_text(const FamilyFit& r, std::size_t recordings, int decim
                   r.held_out);
     print_held_out_summary(out, r);
   }
-  print_to(out,
-           "rep%%: FIT of each recording's own mean cycle on its steady cycles, the most a model "
-           "answering a periodic drive with a periodic output reaches there (- : drive not "
-           "periodic)\n");
+  out << format_text(
+      "rep%%: FIT of each recording's own mean cycle on its steady cycles, the most a model "
+      "answering a periodic drive with a periodic output reaches there (- : drive not "
+      "periodic)\n");
 }
 
 nlohmann::json family_fit_json(const FamilyFit& r, const lumped::RecordingMeta& meta,

@@ -11,11 +11,11 @@
 #include <span>
 
 #include "core/error.hpp"
+#include "core/format_text.hpp"
 #include "identify/black_box_fit.hpp"
 #include "identify/fit_model_json.hpp"
 #include "identify/fit_plot.hpp"
 #include "identify/greybox.hpp"
-#include "core/format_text.hpp"
 #include "identify/repeatability.hpp"
 #include "identify/valve_chain_fit.hpp"
 
@@ -286,19 +286,19 @@ void write_fit_run_text(const FitRun& run, std::ostream& out) {
   auto line = [&out](const std::string& what, const Metrics& m,
                      const std::optional<StabilityVerdict>& s) {
     if (s && !s->stable) {
-      out << format_text("%-34s UNSTABLE in free-run simulation: %s (no FIT reported)\n", what.c_str(),
-               s->reason.c_str());
+      out << format_text("%-34s UNSTABLE in free-run simulation: %s (no FIT reported)\n",
+                         what.c_str(), s->reason.c_str());
       return;
     }
-    out << format_text("%-34s FIT %7.2f %%   RMSE %7.2f %%   RE %.4f\n", what.c_str(), m.fit_percent,
-             m.rmse_percent, m.re);
+    out << format_text("%-34s FIT %7.2f %%   RMSE %7.2f %%   RE %.4f\n", what.c_str(),
+                       m.fit_percent, m.rmse_percent, m.re);
   };
   out << format_text("model %s (%s mode)\n", r.model.c_str(),
-           o.mode == EvalMode::simulation ? "simulation" : "prediction");
+                     o.mode == EvalMode::simulation ? "simulation" : "prediction");
   const auto repeatability = [&out](const std::optional<double>& rep) {
     if (rep)
       out << format_text("%-34s FIT %7.2f %%   (its own mean cycle: no periodic model beats it)\n",
-               "  repeatability", *rep);
+                         "  repeatability", *rep);
   };
   line("train " + range_text(train), r.train, r.train_stability);
   repeatability(run.train_repeatability);
