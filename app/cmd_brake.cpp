@@ -28,7 +28,7 @@ void run_brake(const BrakeCli& o) {
     std::cout << valve::brake_text(report);
 }
 
-const bool registered = rheomag::app::register_command([](CLI::App& root) {
+const bool brake_registered = rheomag::app::register_command([](CLI::App& root) {
   auto o = std::make_shared<BrakeCli>();
   CLI::App* cmd = root.add_subcommand(
       "brake",

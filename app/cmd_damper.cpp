@@ -29,7 +29,7 @@ void run_damper(const DamperCli& o) {
     std::cout << valve::damper_text(report);
 }
 
-const bool registered = rheomag::app::register_command([](CLI::App& root) {
+const bool damper_registered = rheomag::app::register_command([](CLI::App& root) {
   auto o = std::make_shared<DamperCli>();
   CLI::App* cmd = root.add_subcommand(
       "damper",

@@ -87,7 +87,7 @@ void print_summary(const diagnose::Diagnosis& d) {
   for (const auto& note : d.notes) std::cout << "note: " << note << "\n";
 }
 
-const bool registered = app::register_command([](CLI::App& root) {
+const bool diagnose_registered = app::register_command([](CLI::App& root) {
   auto o = std::make_shared<DiagnoseCliOptions>();
   CLI::App* cmd = root.add_subcommand(
       "diagnose",

@@ -25,7 +25,7 @@ void run(const ExportCommandOptions& o) {
   std::cout << "wrote " << o.fem << " (FEMM 4.2 magnetostatic model)\n";
 }
 
-const bool registered = rheomag::app::register_command([](CLI::App& root) {
+const bool export_registered = rheomag::app::register_command([](CLI::App& root) {
   auto o = std::make_shared<ExportCommandOptions>();
   CLI::App* cmd = root.add_subcommand(
       "export",

@@ -34,7 +34,7 @@ void run_fit_command(const FitOptions& o) {
     write_fit_run_text(run, std::cout);
 }
 
-const bool registered = rheomag::app::register_command([](CLI::App& root) {
+const bool fit_registered = rheomag::app::register_command([](CLI::App& root) {
   auto o = std::make_shared<FitOptions>();
   CLI::App* cmd = root.add_subcommand(
       "fit",

@@ -67,7 +67,7 @@ void run_fit_family(const FamilyOptions& o) {
     write_family_fit_text(r, training.size(), o.decimation, std::cout);
 }
 
-const bool registered = rheomag::app::register_command([](CLI::App& root) {
+const bool fit_family_registered = rheomag::app::register_command([](CLI::App& root) {
   auto o = std::make_shared<FamilyOptions>();
   CLI::App* cmd = root.add_subcommand(
       "fit-family",

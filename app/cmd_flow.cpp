@@ -52,7 +52,7 @@ void run_flow(const CLI::App& cmd, const FlowOptions& o) {
     std::cout << rheomag::fluid::gap_flow_text(result);
 }
 
-const bool registered = rheomag::app::register_command([](CLI::App& root) {
+const bool flow_registered = rheomag::app::register_command([](CLI::App& root) {
   auto options = std::make_shared<FlowOptions>();
   CLI::App* cmd = root.add_subcommand(
       "flow",

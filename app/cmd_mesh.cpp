@@ -44,7 +44,7 @@ void run(const MeshCommandOptions& o) {
   if (!o.vtk.empty()) std::cout << "wrote " << o.vtk << "\n";
 }
 
-const bool registered = rheomag::app::register_command([](CLI::App& root) {
+const bool mesh_registered = rheomag::app::register_command([](CLI::App& root) {
   auto o = std::make_shared<MeshCommandOptions>();
   CLI::App* cmd = root.add_subcommand(
       "mesh",

@@ -107,7 +107,7 @@ int run_optimise(const OptimiseCli& o) {
   return r.optimal.feasible ? 0 : 1;
 }
 
-const bool registered = rheomag::app::register_command([](CLI::App& root) {
+const bool optimise_registered = rheomag::app::register_command([](CLI::App& root) {
   auto o = std::make_shared<OptimiseCli>();
   CLI::App* cmd = root.add_subcommand(
       "optimise",

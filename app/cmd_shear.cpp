@@ -41,7 +41,7 @@ void run_shear(const CLI::App& cmd, const ShearOptions& o) {
   std::cout << (o.json ? shear_device_json(o.device, t) : shear_device_text(o.device, t));
 }
 
-const bool registered = rheomag::app::register_command([](CLI::App& root) {
+const bool shear_registered = rheomag::app::register_command([](CLI::App& root) {
   auto options = std::make_shared<ShearOptions>();
   CLI::App* cmd = root.add_subcommand(
       "shear",

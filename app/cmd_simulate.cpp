@@ -100,7 +100,7 @@ void print_written(const SimulateOptions& o, const rheomag::lumped::Recording& r
   }
 }
 
-bool registered = rheomag::app::register_command([](CLI::App& root) {
+bool simulate_registered = rheomag::app::register_command([](CLI::App& root) {
   auto opts = std::make_shared<SimulateOptions>();
   CLI::App* cmd = root.add_subcommand(
       "simulate",

@@ -113,7 +113,7 @@ void run(const SolveCommandOptions& o) {
   if (!o.vtk.empty()) std::cout << "\nwrote " << o.vtk << " (open it in ParaView)\n";
 }
 
-const bool registered = rheomag::app::register_command([](CLI::App& root) {
+const bool solve_registered = rheomag::app::register_command([](CLI::App& root) {
   auto o = std::make_shared<SolveCommandOptions>();
   CLI::App* cmd = root.add_subcommand(
       "solve",

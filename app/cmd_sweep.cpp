@@ -84,7 +84,7 @@ void run(const SweepCommandOptions& o) {
   }
 }
 
-const bool registered = rheomag::app::register_command([](CLI::App& root) {
+const bool sweep_registered = rheomag::app::register_command([](CLI::App& root) {
   auto options = std::make_shared<SweepCommandOptions>();
   CLI::App* cmd = root.add_subcommand(
       "sweep",

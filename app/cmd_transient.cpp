@@ -103,7 +103,7 @@ void run(const TransientCliOptions& o) {
   if (series) std::cout << "wrote " << o.vtk_series << "/series.pvd (open it in ParaView)\n";
 }
 
-const bool registered = app::register_command([](CLI::App& root) {
+const bool transient_registered = app::register_command([](CLI::App& root) {
   auto o = std::make_shared<TransientCliOptions>();
   CLI::App* cmd = root.add_subcommand(
       "transient",

@@ -44,7 +44,7 @@ void run_valve(const ValveCli& o) {
     std::cout << valve::valve_text(report);
 }
 
-const bool registered = rheomag::app::register_command([](CLI::App& root) {
+const bool valve_registered = rheomag::app::register_command([](CLI::App& root) {
   auto o = std::make_shared<ValveCli>();
   CLI::App* cmd = root.add_subcommand(
       "valve",

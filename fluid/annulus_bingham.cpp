@@ -28,7 +28,8 @@ namespace rheomag::fluid {
 
 namespace {
 
-constexpr boost::uintmax_t kMaxIterations = 300;
+/// Iteration cap of the plug-position root search.
+constexpr boost::uintmax_t kPlugRootIterations = 300;
 
 /// mu (u_inner(r1) - u_outer(r2)) / G with r1 = Ri + x, r2 = r1 + t.
 double plug_velocity_mismatch(double ri, double ro, double t, double x) {
@@ -60,10 +61,10 @@ AnnulusPlug annulus_plug(const AnnulusGeometry& g, double tau_y, double viscosit
     if (!(f_lo <= 0.0 && f_hi >= 0.0))
       throw ConvergenceError(
           "annulus plug position not bracketed (delta = " + std::to_string(plug_fraction) + ")");
-    boost::uintmax_t iterations = kMaxIterations;
+    boost::uintmax_t iterations = kPlugRootIterations;
     auto [lo, hi] = boost::math::tools::toms748_solve(
         f, 0.0, span, f_lo, f_hi, boost::math::tools::eps_tolerance<double>(50), iterations);
-    if (iterations >= kMaxIterations)
+    if (iterations >= kPlugRootIterations)
       throw ConvergenceError("annulus plug position did not converge");
     x = 0.5 * (lo + hi);
   }
@@ -101,10 +102,10 @@ GapPressureDrop annulus_bingham(const AnnulusGeometry& g, double tau_y, double v
     lo *= 0.5;
     f_lo = excess(lo);
   }
-  boost::uintmax_t iterations = kMaxIterations;
+  boost::uintmax_t iterations = kPlugRootIterations;
   auto [a, b] = boost::math::tools::toms748_solve(
       excess, lo, 1.0, f_lo, -flow, boost::math::tools::eps_tolerance<double>(50), iterations);
-  if (iterations >= kMaxIterations)
+  if (iterations >= kPlugRootIterations)
     throw ConvergenceError(
         "annulus plug fraction did not converge (Bi = " + std::to_string(out.bingham_number) + ")");
   out.plug_fraction = 0.5 * (a + b);

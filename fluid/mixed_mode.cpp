@@ -38,7 +38,8 @@ namespace rheomag::fluid {
 
 namespace {
 
-constexpr boost::uintmax_t kMaxIterations = 200;
+/// Iteration cap of the root searches in the moving-wall gap.
+constexpr boost::uintmax_t kMixedRootIterations = 200;
 
 /// The stress field and flow area of one gap, measured from the moving wall.
 struct GapShape {
@@ -181,9 +182,9 @@ class MixedSolver {
                         std::max(std::abs(a), std::abs(b)) ||
              gap <= 1e-15 * width;
     };
-    boost::uintmax_t iterations = kMaxIterations;
+    boost::uintmax_t iterations = kMixedRootIterations;
     auto [a, b] = boost::math::tools::toms748_solve(f, lo, hi, f_lo, f_hi, tol, iterations);
-    if (iterations >= kMaxIterations)
+    if (iterations >= kMixedRootIterations)
       throw ConvergenceError(std::string("mixed-mode gap: ") + what + " did not converge");
     return 0.5 * (a + b);
   }

@@ -37,7 +37,8 @@ namespace rheomag::fluid {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr boost::uintmax_t kMaxIterations = 200;
+/// Iteration cap of the shear-mode root searches.
+constexpr boost::uintmax_t kShearRootIterations = 200;
 
 void require(bool ok, const char* what, double value) {
   if (!ok) {
@@ -86,10 +87,11 @@ double drum_bingham_torque(const DrumGeometry& g, double tau_y, double mu, doubl
     return full;
   }
   auto f = [&](double e) { return speed_of(e) - target; };
-  boost::uintmax_t iterations = kMaxIterations;
+  boost::uintmax_t iterations = kShearRootIterations;
   auto [a, b] = boost::math::tools::toms748_solve(
       f, 0.0, e_out, -target, f(e_out), boost::math::tools::eps_tolerance<double>(50), iterations);
-  if (iterations >= kMaxIterations) throw ConvergenceError("drum yield radius did not converge");
+  if (iterations >= kShearRootIterations)
+    throw ConvergenceError("drum yield radius did not converge");
   yield_radius = g.r_in * (1.0 + 0.5 * (a + b));
   return 2.0 * kPi * g.length * tau_y * yield_radius * yield_radius;
 }
@@ -126,10 +128,10 @@ double drum_hb_torque(const DrumGeometry& g, const GapRheology& f, double omega,
   }
   const double width = hi - lo;
   auto tol = [width](double a, double b) { return std::abs(b - a) <= 1e-14 * width; };
-  boost::uintmax_t iterations = kMaxIterations;
+  boost::uintmax_t iterations = kShearRootIterations;
   auto [a, b] =
       boost::math::tools::toms748_solve(residual, lo, hi, residual(lo), f_hi, tol, iterations);
-  if (iterations >= kMaxIterations) throw ConvergenceError("drum torque did not converge");
+  if (iterations >= kShearRootIterations) throw ConvergenceError("drum torque did not converge");
   const double torque = 0.5 * (a + b);
   yield_radius = edge(torque);
   return torque;

@@ -5,10 +5,10 @@
 #include <limits>
 #include <numbers>
 
+#include "core/constants.hpp"
+
 namespace rheomag::magnetostatics3d {
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 /// Running weighted average with minimum and maximum.
 struct Accumulator {

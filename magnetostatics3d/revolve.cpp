@@ -4,12 +4,11 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 
 namespace rheomag::magnetostatics3d {
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 bool contains_angle(const std::vector<double>& list, double phi) {
   return std::any_of(list.begin(), list.end(),

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "magnetostatics/domain.hpp"
 #include "magnetostatics3d/coil_source.hpp"
@@ -17,8 +18,6 @@
 
 namespace rheomag::magnetostatics3d {
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 /// Volume of a regular tetrahedron of edge h.
 double tet_volume(double h) {

@@ -5,6 +5,7 @@
 #include <set>
 #include <utility>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 
 namespace rheomag::magnetostatics3d {
@@ -179,7 +180,6 @@ std::vector<double> ring_area_factors(const Revolution& rev) {
 void restore_ring_areas(std::vector<Eigen::Vector3d>& nodes,
                         const std::vector<Eigen::Vector3d>& swept, const Revolution& rev) {
   const std::vector<double> c = ring_area_factors(rev);
-  constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
   for (std::size_t n = 0; n < nodes.size(); ++n) {
     if (swept[n][0] == 0.0 && swept[n][1] == 0.0) continue;  // on the axis
     double phi = std::atan2(swept[n][1], swept[n][0]);

@@ -7,7 +7,9 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace rheomag::mesh::detail {
 
@@ -32,5 +34,14 @@ using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 /// Constrained Delaunay triangulation with exact predicates.
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>;
 using CgalPoint = Kernel::Point_2;
+
+/// Distance from p to the segment [a, b] (to a when the segment has zero length).
+inline double segment_distance(const CgalPoint& p, const CgalPoint& a, const CgalPoint& b) {
+  const double dr = b.x() - a.x(), dz = b.y() - a.y();
+  const double length_sq = dr * dr + dz * dz;
+  double t = length_sq > 0.0 ? ((p.x() - a.x()) * dr + (p.y() - a.y()) * dz) / length_sq : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  return std::hypot(a.x() + t * dr - p.x(), a.y() + t * dz - p.y());
+}
 
 }  // namespace rheomag::mesh::detail

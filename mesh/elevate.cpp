@@ -5,16 +5,9 @@
 #include <cstdint>
 #include <unordered_map>
 
-namespace rheomag::mesh {
+#include "mesh/edge_key.hpp"
 
-namespace {
-/// Key of the undirected edge (a, b).
-std::uint64_t edge_key(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-         static_cast<std::uint32_t>(b);
-}
-}  // namespace
+namespace rheomag::mesh {
 
 Mesh elevate_to_p2(const Mesh& linear) {
   if (linear.order == 2) return linear;

@@ -15,15 +15,7 @@ constexpr double kClearance = 0.45;
 /// Lattice spacing as a fraction of the target edge length.
 constexpr double kSpacing = 0.95;
 /// Number of grid cells along the longer side of the bounding box.
-constexpr int kGridCells = 64;
-
-double distance(const CgalPoint& p, const CgalPoint& a, const CgalPoint& b) {
-  const double dr = b.x() - a.x(), dz = b.y() - a.y();
-  const double length_sq = dr * dr + dz * dz;
-  double t = length_sq > 0.0 ? ((p.x() - a.x()) * dr + (p.y() - a.y()) * dz) / length_sq : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  return std::hypot(a.x() + t * dr - p.x(), a.y() + t * dz - p.y());
-}
+constexpr int kConstraintGridCells = 64;
 
 /// Constrained edges of the coarse triangulation bucketed on a uniform grid, for "is any
 /// constraint closer than d to p" queries.
@@ -36,7 +28,7 @@ class ConstraintGrid {
       r0_ = std::min(r0_, v->point().x()), r_hi = std::max(r_hi, v->point().x());
       z0_ = std::min(z0_, v->point().y()), z_hi = std::max(z_hi, v->point().y());
     }
-    cell_ = std::max(r_hi - r0_, z_hi - z0_) / kGridCells;
+    cell_ = std::max(r_hi - r0_, z_hi - z0_) / kConstraintGridCells;
     columns_ = static_cast<int>((r_hi - r0_) / cell_) + 1;
     rows_ = static_cast<int>((z_hi - z0_) / cell_) + 1;
     buckets_.assign(static_cast<std::size_t>(columns_ * rows_), {});
@@ -64,7 +56,7 @@ class ConstraintGrid {
     for (int w = row(p.y() - d); w <= row(p.y() + d); ++w)
       for (int c = column(p.x() - d); c <= column(p.x() + d); ++c)
         for (int id : buckets_[static_cast<std::size_t>(w * columns_ + c)])
-          if (distance(p, edges_[id].first, edges_[id].second) < d) return true;
+          if (segment_distance(p, edges_[id].first, edges_[id].second) < d) return true;
     return false;
   }
 

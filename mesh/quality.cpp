@@ -9,6 +9,7 @@
 #include <numbers>
 #include <unordered_map>
 
+#include "mesh/edge_key.hpp"
 #include "mesh/triangle.hpp"
 
 namespace rheomag::mesh {
@@ -23,12 +24,6 @@ double length(const Point& a, const Point& b) {
 double angle(const Point& at, const Point& p, const Point& q) {
   const double ur = p.r - at.r, uz = p.z - at.z, vr = q.r - at.r, vz = q.z - at.z;
   return std::atan2(std::abs(ur * vz - uz * vr), ur * vr + uz * vz) * 180.0 / std::numbers::pi;
-}
-
-std::uint64_t edge_key(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-         static_cast<std::uint32_t>(b);
 }
 
 const char* gap_name(GapKind gap) {

@@ -11,15 +11,7 @@ namespace rheomag::mesh::detail {
 namespace {
 
 /// Number of grid cells along the longer side of the bounding box.
-constexpr int kGridCells = 64;
-
-double distance(const CgalPoint& p, const CgalPoint& a, const CgalPoint& b) {
-  const double dr = b.x() - a.x(), dz = b.y() - a.y();
-  const double length_sq = dr * dr + dz * dz;
-  double t = length_sq > 0.0 ? ((p.x() - a.x()) * dr + (p.y() - a.y()) * dz) / length_sq : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  return std::hypot(a.x() + t * dr - p.x(), a.y() + t * dz - p.y());
-}
+constexpr int kSizeGridCells = 64;
 
 }  // namespace
 
@@ -50,7 +42,7 @@ SizeField::SizeField(const Cdt& coarse, std::vector<double> region_size, double 
     z_lo = std::min(z_lo, v->point().y()), z_hi = std::max(z_hi, v->point().y());
   }
   r0_ = r_lo, z0_ = z_lo;
-  cell_ = std::max(r_hi - r_lo, z_hi - z_lo) / kGridCells;
+  cell_ = std::max(r_hi - r_lo, z_hi - z_lo) / kSizeGridCells;
   columns_ = static_cast<int>((r_hi - r_lo) / cell_) + 1;
   rows_ = static_cast<int>((z_hi - z_lo) / cell_) + 1;
   buckets_.assign(static_cast<std::size_t>(columns_ * rows_), {});
@@ -90,7 +82,7 @@ double SizeField::at(const CgalPoint& p) const {
   for (int s : buckets_[static_cast<std::size_t>(w * columns_ + c)]) {
     const Source& source = sources_[static_cast<std::size_t>(s)];
     if (source.size >= h) continue;
-    h = std::min(h, source.size + grading_ * distance(p, source.a, source.b));
+    h = std::min(h, source.size + grading_ * segment_distance(p, source.a, source.b));
   }
   return h;
 }
