@@ -1,11 +1,19 @@
 #!/bin/bash
-# Configures rheomag (Release) into build/ and builds the given targets, or everything when none
-# is given; installs missing packages first. `scripts/build.sh rheomag` builds the executable
-# and the libraries it links, nothing else (the main job).
+# Configures rheomag (Release, unity batches) into build/ and builds it; installs missing Debian
+# packages first.
+#   scripts/build.sh          everything: the executable, the tests, the benchmarks, the fuzz targets
+#   scripts/build.sh --main   only the rheomag executable and the libraries it links (the main job);
+#                             needs neither the test nor the benchmark packages
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-targets=()
-for t in "$@"; do targets+=(--target "$t"); done
-cmake --build build -j"$(nproc)" "${targets[@]}"
+if [ "${1:-}" = --main ]; then
+  scripts/install-deps.sh
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DRHEOMAG_UNITY=ON -DRHEOMAG_TESTS=OFF \
+    -DRHEOMAG_BENCH=OFF >/dev/null
+  cmake --build build -j"$(nproc)" --target rheomag
+else
+  scripts/install-deps.sh --tests
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DRHEOMAG_UNITY=ON -DRHEOMAG_TESTS=ON \
+    -DRHEOMAG_BENCH=ON >/dev/null
+  cmake --build build -j"$(nproc)"
+fi

@@ -1,13 +1,15 @@
 #!/bin/bash
 # Installs the Debian 12 packages rheomag builds against (idempotent; needs root or sudo).
-# With --tests, also what only the test suite uses.
+# Without options, what building and running the rheomag executable needs (the main job); with
+# --tests, also what only the test suite, the benchmarks and the format check use.
 set -euo pipefail
-pkgs=(build-essential cmake pkg-config git ca-certificates clang-format
+pkgs=(build-essential cmake pkg-config git ca-certificates
   libeigen3-dev libsuitesparse-dev libcgal-dev libvtk9-dev
-  libtomlplusplus-dev nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libtomlplusplus-dev nlohmann-json3-dev libcli11-dev
   libboost-dev libtet1.5-dev libmuparser-dev libopenblas0-pthread coinor-libipopt-dev libceres-dev libsvm-dev gnuplot-nox)
 pkgs+=(libopenmpi-dev openmpi-bin)  # rheomag sweep under mpirun (optional at build time)
 if [ "${1:-}" = --tests ]; then
+  pkgs+=(libgtest-dev libgmock-dev libbenchmark-dev clang-format)
   pkgs+=(chromium)  # headless screenshot test of the diagnosis report (skipped when absent)
 fi
 missing=()

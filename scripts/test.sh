@@ -3,8 +3,7 @@
 # (CTest).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh --tests
-scripts/build.sh
+scripts/build.sh  # installs the test packages too (install-deps.sh --tests)
 scripts/check-format.sh
 # Tests run two at a time on the two cores: keep BLAS/OpenMP single-threaded in each, or the
 # threads of parallel tests oversubscribe the cores (measured 20x slower solves under load).
