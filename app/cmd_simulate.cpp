@@ -9,6 +9,7 @@
 
 #include "app/command.hpp"
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "coupling/simulation_spec.hpp"
 #include "identify/fit_model_json.hpp"
 #include "lumped/recording_io.hpp"
@@ -50,6 +51,7 @@ bool is_fitted_model_file(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (extension == ".json") return true;
+  rheomag::require_regular_input_file(path, "spec or model file");
   std::ifstream in(path, std::ios::binary);
   char c = 0;
   while (in.get(c))

@@ -10,6 +10,7 @@
 #include "app/command.hpp"
 #include "case/case_file.hpp"
 #include "core/error.hpp"
+#include "core/memory_limit.hpp"
 #include "magnetostatics/field_probe.hpp"
 #include "magnetostatics/report.hpp"
 #include "magnetostatics/solve_problem.hpp"
@@ -33,6 +34,7 @@ struct SolveCommandOptions {
   bool three_d = false;
   bool full = false;
   std::string mesher = "tetgen";
+  std::string max_memory;  // --max-memory text ("8G"); empty: the default limit
 };
 
 void check_current(double current, const char* option) {
@@ -49,6 +51,8 @@ void run_3d(const SolveCommandOptions& o, const Case& c) {
   m3::Solve3dOptions options =
       mesher == m3::Mesher3d::swept ? m3::swept_options() : m3::Solve3dOptions{};
   options.force_full = o.full;
+  if (!o.max_memory.empty())
+    options.max_memory = rheomag::parse_memory_size(o.max_memory, "--max-memory");
   if (!o.json) {
     options.progress = [](const rheomag::ProgressEvent& e) {
       std::cerr << "3d: " << e.stage << " (" << e.elapsed << " s)"
@@ -84,6 +88,8 @@ void run(const SolveCommandOptions& o) {
     run_3d(o, c);
     return;
   }
+  if (!o.max_memory.empty())
+    throw rheomag::InputError("--max-memory bounds the 3D mesh; it is available with --3d");
   if (o.order) problem.order = *o.order;
   for (double i : o.sweep) check_current(i, "--sweep");
   if (!o.sweep.empty() && problem.circuits.empty())
@@ -149,6 +155,11 @@ const bool solve_registered = rheomag::app::register_command([](CLI::App& root) 
                   "With --3d: \"tetgen\" (isotropic tetrahedra, default) or \"swept\" (the "
                   "meridian mesh swept through angles graded towards the features: much faster "
                   "for half and full models)")
+      ->check(rheomag::app::non_empty());
+  cmd->add_option("--max-memory", o->max_memory,
+                  "With --3d: refuse, before meshing, a mesh whose solve is estimated to need "
+                  "more memory than this: bytes with a K, M, G or T suffix (powers of 1024), "
+                  "e.g. 8G (default: 3/4 of the physical memory)")
       ->check(rheomag::app::non_empty());
   cmd->callback([o] { run(*o); });
 });

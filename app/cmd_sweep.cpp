@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -79,8 +80,9 @@ void run(const SweepCommandOptions& o) {
   }
   print_summary(summary, o.json);
   if (summary.interrupted) {
+    // 128 + the signal, as a shell reports a process ended by it (130 SIGINT, 143 SIGTERM).
     std::cout.flush();
-    std::exit(130);
+    std::exit(128 + (summary.interrupt_signal > 0 ? summary.interrupt_signal : SIGINT));
   }
 }
 

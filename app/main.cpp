@@ -8,12 +8,14 @@
 #include <CLI/CLI.hpp>
 #include <cstdlib>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
 #include "app/command.hpp"
 #include "app/finite_stdout.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "lumped/recording_io.hpp"
 #include "magnetostatics/assembly.hpp"
 
@@ -109,6 +111,8 @@ int main(int argc, char** argv) {
       "dynamics,\nidentification, diagnosis and optimisation. Run 'rheomag COMMAND --help' "
       "for each command."};
   root.require_subcommand(1);
+  // SIGINT/SIGTERM end any command with 130/143, temporaries removed (core/interrupt.hpp).
+  rheomag::install_interrupt_handling();
   rheomag::app::prefer_single_threaded_blas();
   rheomag::app::silence_third_party_logging();
   // Element assembly on OpenMP threads only when OMP_NUM_THREADS is set (the library default is
@@ -139,6 +143,15 @@ int main(int argc, char** argv) {
   } catch (const rheomag::ConvergenceError& e) {
     std::cerr << "rheomag: solver did not converge: " << e.what() << "\n";
     return 3;
+  } catch (const std::bad_alloc&) {
+    // Bounds are checked before the work where they can be estimated (input file sizes, mesh
+    // sizes, --max-memory); what still runs out is the input's size, not a defect: exit 2.
+    std::cerr << "rheomag: error: out of memory: the input needs more memory than is available "
+                 "here ("
+              << command_line
+              << "); expected a smaller input (coarser mesh, fewer samples or designs) or a "
+                 "machine with more memory\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "rheomag: internal error: " << e.what() << "\n";
     return 1;

@@ -271,17 +271,6 @@ toml::table parse_toml(std::string_view text, const std::string& file) {
   }
 }
 
-std::string read_input_file(const std::string& path) {
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) throw InputError(path + ": is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(path + ": cannot read file");
-  return text.str();
-}
-
 std::string_view without_byte_order_mark(std::string_view text) {
   constexpr std::string_view bom = "\xEF\xBB\xBF";
   if (text.substr(0, bom.size()) == bom) text.remove_prefix(bom.size());

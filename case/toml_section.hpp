@@ -10,6 +10,7 @@
 
 #include "core/closest_key.hpp"
 #include "core/enum_names.hpp"
+#include "core/input_file.hpp"
 #include "core/quantity_domain.hpp"
 
 namespace rheomag::cases {
@@ -106,8 +107,8 @@ toml::table parse_toml(std::string_view text, const std::string& file);
 /// Reads and parses a TOML file; InputError if it cannot be read or parsed.
 toml::table parse_toml_file(const std::string& path);
 
-/// The whole content of a text file; InputError if it cannot be read.
-std::string read_input_file(const std::string& path);
+/// The whole content of an input file (core/input_file.hpp: regular files only, bounded size).
+using ::rheomag::read_input_file;
 
 /// `text` without a leading UTF-8 byte-order mark (what many Windows tools write first).
 std::string_view without_byte_order_mark(std::string_view text);

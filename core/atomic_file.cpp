@@ -12,6 +12,7 @@
 
 #include "core/error.hpp"
 #include "core/finite_output.hpp"
+#include "core/interrupt.hpp"
 
 namespace rheomag {
 namespace {
@@ -81,6 +82,7 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
   check_output_path(path, "output");
   require_finite_text(content, path.string());
   const std::filesystem::path temporary = temporary_beside(path);
+  const InterruptCleanupFile removed_if_interrupted(temporary);
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw InputError(path.string() + ": cannot write: " + reason(errno));
   bool ok = write_all(fd, content) && ::fsync(fd) == 0;
@@ -100,6 +102,7 @@ void write_file_atomically_with(const std::filesystem::path& path,
                                 const std::function<bool(const std::filesystem::path&)>& produce) {
   check_output_path(path, "output");
   const std::filesystem::path temporary = temporary_beside(path);
+  const InterruptCleanupFile removed_if_interrupted(temporary);
   // A writer that takes a file name (VTK) says only that it failed: create the temporary first
   // so that a missing or read-only directory is reported with the system's reason.
   const int probe = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);

@@ -1,6 +1,7 @@
 #pragma once
 // The one way rheomag writes an output file: a temporary file beside the target, checked
-// writes, fsync, rename into place; the temporary removed on any failure.
+// writes, fsync, rename into place; the temporary removed on any failure and when the process
+// is interrupted (SIGINT/SIGTERM, core/interrupt.hpp).
 
 #include <filesystem>
 #include <functional>

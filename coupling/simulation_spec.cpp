@@ -1,6 +1,7 @@
 // Parsing of simulation specs (TOML) and their simulation.
 
 #include "coupling/simulation_spec.hpp"
+#include "core/input_file.hpp"
 
 #include <toml++/toml.h>
 
@@ -319,9 +320,10 @@ PhenoSpec read_pheno(const TableReader& model, lumped::PhenoKind kind) {
 
 SimulationSpec read_simulation_spec(const std::string& path) {
   if (!std::filesystem::exists(path)) throw InputError(path + ": spec not found");
+  const std::string text = read_input_file(path);
   toml::table doc;
   try {
-    doc = toml::parse_file(path);
+    doc = toml::parse(text, path);
   } catch (const toml::parse_error& e) {
     std::ostringstream msg;
     msg << path << ":" << e.source().begin.line << ": " << e.description();

@@ -1,6 +1,7 @@
 // Reader of the [rheology] table of a materials TOML file; the format is in docs/fluid.md.
 
 #include "fluid/fluid.hpp"
+#include "core/input_file.hpp"
 
 #include <toml++/toml.h>
 #include <cmath>
@@ -139,11 +140,7 @@ Fluid parse_fluid(std::string_view toml_text, const std::string& origin) {
 }
 
 Fluid read_fluid(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(file.string() + ": cannot open materials file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parse_fluid(text.str(), file.string());
+  return parse_fluid(read_input_file(file), file.string());
 }
 
 }  // namespace rheomag::fluid

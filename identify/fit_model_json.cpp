@@ -2,6 +2,7 @@
 // is in fit_model_run.cpp, so this reader links without the fitting code (its fuzz test does).
 
 #include "identify/fit_model_json.hpp"
+#include "core/input_file.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -325,11 +326,7 @@ FitModel parse_fit_model_json(std::string_view text, const std::string& file) {
 }
 
 FitModel read_fit_model_json(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string() + ": cannot open the fitted-model JSON file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_fit_model_json(text.str(), path.string());
+  return parse_fit_model_json(read_input_file(path), path.string());
 }
 
 }  // namespace rheomag::identify

@@ -7,10 +7,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "identify/black_box_model.hpp"
 
 extern char** environ;
@@ -33,11 +35,13 @@ struct ScratchDir {
     std::string pattern = (std::filesystem::temp_directory_path() / "rheomag-plot-XXXXXX").string();
     if (!mkdtemp(pattern.data())) throw InputError("--plot: cannot create a temporary folder");
     path = pattern;
+    removed_if_interrupted.emplace(path);
   }
   ~ScratchDir() {
     std::error_code ignored;
     std::filesystem::remove_all(path, ignored);
   }
+  std::optional<InterruptCleanupFile> removed_if_interrupted;
 };
 
 }  // namespace

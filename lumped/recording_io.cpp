@@ -19,6 +19,7 @@
 #include "core/closest_key.hpp"
 #include "core/error.hpp"
 #include "core/finite_output.hpp"
+#include "core/input_file.hpp"
 #include "core/quantity_domain.hpp"
 
 namespace rheomag::lumped {
@@ -385,14 +386,13 @@ Recording parse_csv_samples(std::string_view text, const std::string& csv_path) 
 }
 
 Recording read_csv_samples(const std::string& csv_path) {
-  std::error_code error;
-  if (!fs::is_regular_file(csv_path, error) && fs::exists(csv_path, error))
-    throw InputError(csv_path + ": not a regular file; expected a recording CSV");
+  require_regular_input_file(csv_path, "recording CSV");
   return parse_csv_samples(cases::read_input_file(csv_path), csv_path);
 }
 
 Recording read_recording(const std::string& csv_path) {
   if (!fs::exists(csv_path)) throw InputError(csv_path + ": recording not found");
+  require_regular_input_file(csv_path, "recording CSV");
   std::string sidecar = sidecar_path_for(csv_path);
   // A recording exported on Windows may come as REC.CSV + REC.TOML: the same stem, the
   // extension in capitals.

@@ -7,9 +7,11 @@
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
+#include "core/memory_limit.hpp"
 #include "magnetostatics/domain.hpp"
 #include "magnetostatics3d/coil_source.hpp"
 #include "magnetostatics3d/features.hpp"
+#include "magnetostatics3d/mesh_estimate.hpp"
 #include "magnetostatics3d/plc.hpp"
 #include "magnetostatics3d/region_box.hpp"
 #include "magnetostatics3d/revolve.hpp"
@@ -58,6 +60,51 @@ std::vector<double> volume_limits(const std::vector<double>& sizes) {
   for (std::size_t r = 0; r < sizes.size(); ++r)
     if (sizes[r] > 0) limit[r] = tet_volume(sizes[r]);
   return limit;
+}
+
+/// What set each region's element size (for the refusal of a mesh too large to solve).
+std::vector<std::string> size_reasons_3d(const cases::Problem& closed,
+                                         const std::vector<double>& sizes,
+                                         const std::vector<double>& cut_sizes,
+                                         const std::vector<Feature>& features,
+                                         const Solve3dOptions& options) {
+  std::vector<std::string> why(sizes.size());
+  for (std::size_t r = 0; r < sizes.size(); ++r) {
+    const mesh::RegionSeed& region = closed.geometry.regions[r];
+    if (r < cut_sizes.size() && cut_sizes[r] > 0 && (sizes[r] <= 0 || cut_sizes[r] <= sizes[r])) {
+      for (const Feature& f : features)
+        if (f.region == region.name && (f.kind == FeatureKind::hole || f.kind == FeatureKind::port))
+          if (std::abs(f.radius / 2.0 - cut_sizes[r]) <= 1e-12 * f.radius) {
+            why[r] = "half the radius of " + f.label + ", which cuts this region";
+            break;
+          }
+    } else if (sizes[r] <= 0) {
+      why[r] = "the default size, 1/30 of the domain";
+    } else if (region.gap != mesh::GapKind::none) {
+      why[r] = "the fluid gap's thickness / " + std::to_string(options.gap_layers) + " layers";
+    } else if (region.mesh_size > 0 && sizes[r] >= region.mesh_size * (1 - 1e-12)) {
+      why[r] = "its mesh_size";
+    } else {
+      why[r] = "a fraction of its smaller side, no finer than the finest gap";
+    }
+  }
+  return why;
+}
+
+/// Largest side of the meridian domain / 30: the 2D mesher's size of regions without one.
+double default_meridian_size(const mesh::Mesh& meridian) {
+  double r0 = INFINITY, r1 = -INFINITY, z0 = INFINITY, z1 = -INFINITY;
+  for (const mesh::Point& p : meridian.nodes) {
+    r0 = std::min(r0, p.r), r1 = std::max(r1, p.r), z0 = std::min(z0, p.z), z1 = std::max(z1, p.z);
+  }
+  return std::max(r1 - r0, z1 - z0) / 30.0;
+}
+
+std::string part_text(ModelPart part, std::size_t steps) {
+  const char* name = part == ModelPart::full   ? "full model"
+                     : part == ModelPart::half ? "half model"
+                                               : "wedge";
+  return std::string(name) + ", " + std::to_string(steps) + " angular steps";
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -125,6 +172,8 @@ Solve3dResult solve_problem_3d(const cases::Problem& problem, const std::vector<
   }
   const std::vector<double> walls = feature_walls(features, closed, boxes, span);
   const std::vector<double> sizes = region_sizes(closed, boxes, options);
+  const double max_memory = options.max_memory > 0 ? options.max_memory : default_memory_limit();
+  const double default_size = default_meridian_size(meridian);
   mesh::Mesh swept_meridian;
   Revolution swept_revolution;
   if (options.mesher == Mesher3d::swept) {
@@ -132,22 +181,40 @@ Solve3dResult solve_problem_3d(const cases::Problem& problem, const std::vector<
     // Regions holding cuts are refined so the cuts' staircase is a third of their size.
     mesh::Pslg sized = closed.geometry;
     const std::vector<double> cut_sizes = feature_cell_sizes(features, closed);
+    std::vector<double> swept_sizes = sizes;
     for (std::size_t r = 0; r < sizes.size(); ++r) {
       double h = sizes[r];
       if (cut_sizes[r] > 0) h = h > 0 ? std::min(h, cut_sizes[r]) : cut_sizes[r];
       if (h > 0) sized.regions[r].mesh_size = h;
+      swept_sizes[r] = h;
     }
-    mesh::MeshOptions sweep_options = meridian_options;
-    sweep_options.min_gap_elements = options.gap_layers;
-    sweep_options.grading = options.meridian_grading;
-    swept_meridian = mesh::generate_mesh(sized, sweep_options);
     swept_revolution = part == ModelPart::wedge
                            ? make_revolution(span, span)
                            : graded_revolution(span, walls, options.fine_angle, options.facet_angle,
                                                options.angle_growth);
+    const std::size_t steps = swept_revolution.angles.size() - 1;
+    const std::vector<std::string> why =
+        size_reasons_3d(closed, sizes, cut_sizes, features, options);
+    // Refused before the meridian is meshed at the 3D sizes, then again on its exact count.
+    MeshEstimate3d estimate = estimate_swept_mesh(meridian, swept_sizes, default_size, steps);
+    estimate.mesher = "swept, " + part_text(part, steps);
+    estimate.spread = 2.0;  // from areas, up to 1.4x the count on the bundled valves
+    require_mesh_within_memory(estimate, max_memory, closed, swept_sizes, why);
+    mesh::MeshOptions sweep_options = meridian_options;
+    sweep_options.min_gap_elements = options.gap_layers;
+    sweep_options.grading = options.meridian_grading;
+    swept_meridian = mesh::generate_mesh(sized, sweep_options);
+    MeshEstimate3d counted = count_swept_mesh(swept_meridian, sizes.size(), steps);
+    counted.mesher = estimate.mesher;
+    require_mesh_within_memory(counted, max_memory, closed, swept_sizes, why);
     out.mesh = std::make_unique<TetMesh>(sweep_mesh(swept_meridian, swept_revolution));
   } else {
     const Revolution rev = make_revolution(span, options.facet_angle, walls);
+    MeshEstimate3d estimate = estimate_tetgen_mesh(meridian, sizes, default_size, span);
+    estimate.mesher = "TetGen, " + part_text(part, rev.angles.size() - 1);
+    estimate.spread = 2.0;
+    require_mesh_within_memory(estimate, max_memory, closed, sizes,
+                               size_reasons_3d(closed, sizes, {}, features, options));
     out.mesh = std::make_unique<TetMesh>(
         tetrahedralize(revolve(closed, rev, volume_limits(sizes), walls)));
   }

@@ -45,6 +45,8 @@ struct Solve3dOptions {
   bool ring_areas = true;         ///< swept: move the nodes out radially so that the facetted
                                   ///< rings keep their true areas (restore_ring_areas)
   bool force_full = false;        ///< mesh the whole revolution even when a symmetry allows less
+  double max_memory = 0.0;        ///< refuse (InputError, before meshing) a mesh whose solve is
+                                  ///< estimated to need more [bytes]; 0 = default_memory_limit()
   magnetostatics::NewtonOptions newton;
   ProgressCallback progress;  ///< stages "mesh", "solve" (optional)
 };
@@ -73,8 +75,9 @@ struct Solve3dResult {
 /// 0 <= phi <= pi (unless options.force_full). The outer boundary of the 2D case becomes a sphere
 /// of the same radius with tangential A = 0 (the 2D open condition is not carried over: for the
 /// bundled valves the difference at outer_radius_factor 5 is below 1e-4 in lambda and the gap
-/// |B|, docs/magnetostatics3d.md). Throws InputError for bad input (including TetGen failures)
-/// and ConvergenceError if Newton fails.
+/// |B|, docs/magnetostatics3d.md). Throws InputError for bad input (including TetGen failures
+/// and a mesh whose solve is estimated to need more than options.max_memory, refused before the
+/// 3D mesh is made: mesh_estimate.hpp) and ConvergenceError if Newton fails.
 Solve3dResult solve_problem_3d(const cases::Problem& problem,
                                const std::vector<Feature>& features = {},
                                const Solve3dOptions& options = {});

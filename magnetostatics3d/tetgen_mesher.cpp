@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "magnetostatics3d/plc.hpp"
 
 namespace rheomag::magnetostatics3d {
@@ -154,7 +155,8 @@ TetMesh tetrahedralize(const Plc& plc, const TetMeshOptions& options) {
   int channel[2];
   if (pipe(channel) != 0) throw InputError(plc.source + ": cannot start the tetrahedral mesher");
   std::fflush(nullptr);
-  const pid_t child = fork();
+  // A worker process: killed with rheomag when it is interrupted (core/interrupt.hpp).
+  const pid_t child = fork_worker_process();
   if (child < 0) throw InputError(plc.source + ": cannot start the tetrahedral mesher");
   if (child == 0) {
     close(channel[0]);
@@ -179,6 +181,7 @@ TetMesh tetrahedralize(const Plc& plc, const TetMeshOptions& options) {
   int status = 0;
   while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
   }
+  release_worker_process(child);
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     throw InputError(plc.source + ": the tetrahedral mesher (TetGen) failed: " +
                      (WIFEXITED(status) ? tetgen_error(WEXITSTATUS(status))

@@ -7,6 +7,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "optimise/problem.hpp"
 
 namespace rheomag::optimise {
@@ -104,6 +105,7 @@ std::vector<std::filesystem::path> write_pareto(const std::filesystem::path& dir
   // gnuplot writes the picture to the atomic writer's temporary file.
   const auto png = dir / "pareto.png";
   const auto script = dir / ("pareto.gp.tmp-" + std::to_string(::getpid()));
+  const InterruptCleanupFile script_removed_if_interrupted(script);
   const std::string second = design::quantity_name(front.pareto.quantity);
   try {
     write_file_atomically_with(png, [&](const std::filesystem::path& png_tmp) {

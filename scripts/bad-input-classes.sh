@@ -74,6 +74,21 @@ run "empty option value (diagnose --out '')"  2 $B diagnose ok.csv --quiet --out
 run "--vtk into a missing folder"             2 $B mesh $C --vtk nowhere/field.vtu
 run "solve --current 1e300 (source overflow)" 3 $B solve $S/tests/data/pot_core_equivalent.toml --current 1e300
 run "transient step to the same current"      2 $B transient $S/tests/data/pot_core_equivalent.toml --current 1 --from 1 --duration 0.01 --quiet
+ln -sf /dev/zero zero.fem
+run "solve of a .fem link to /dev/zero"       2 $B solve zero.fem
+run "sweep /dev/zero"                         2 $B sweep /dev/zero -q -o sweep_out
+run "diagnose --meta /dev/zero"               2 $B diagnose ok.csv --quiet --meta /dev/zero
+mkfifo fifo.toml
+run "solve of a FIFO without a writer"        2 timeout 10 $B solve fifo.toml
+cp $S/tests/data/magnetostatics3d/small_valve.toml holed.toml
+printf '\n[[feature]]\nkind = "hole"\nregion = "air"\nradius = 1.0\nposition = 20.0\nangle = 30\n' >> holed.toml
+run "3D mesh beyond the memory limit"         2 $B solve holed.toml --3d --full --mesher swept --max-memory 16G
+printf '\n[[feature]]\nkind = "hole"\nregion = "air"\nradius = 6.0\nposition = 20.0\nangle = 30\n' > hole6.part
+sed '/^\[\[feature\]\]/,$d' holed.toml > big3d.toml; cat hole6.part >> big3d.toml
+$B solve big3d.toml --3d --full --mesher swept >out.txt 2>err.txt & P=$!
+for k in $(seq 100); do grep -q "3d: solve" err.txt && break; sleep 0.1; done; sleep 4; kill -TERM $P; wait $P
+rc=$?; [ "$rc" = 143 ] || MISMATCHES=$((MISMATCHES + 1))
+printf '%-42s want %s got %s  %s\n' "SIGTERM during a 3D factorisation" 143 "$rc" "$(tail -1 err.txt | head -c 150)"
 mkdir -p full
 if mount -t tmpfs -o size=16k tmpfs full 2>/dev/null; then
   head -c 12000 /dev/zero > full/fill; echo old > full/field.vtu

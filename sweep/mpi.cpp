@@ -42,9 +42,10 @@ namespace {
 constexpr int kTagRow = 1;   // worker -> rank 0: the row of the last design ("" at first)
 constexpr int kTagWork = 2;  // rank 0 -> worker: next design id, -1 = stop
 
-std::atomic<bool> g_mpi_stop{false};
-extern "C" void request_mpi_stop(int) {
-  g_mpi_stop.store(true);
+std::atomic<int> g_mpi_stop{0};  // the signal that asked the run to stop (0: none)
+extern "C" void request_mpi_stop(int signal_number) {
+  int expected = 0;
+  g_mpi_stop.compare_exchange_strong(expected, signal_number);
 }
 
 /// Ends MPI on every path out of run_sweep_mpi.
@@ -105,7 +106,7 @@ SweepSummary run_root(const SweepSpec& spec, const SweepRunOptions& options, int
       }
     }
     long long id = -1;
-    if (!failed && !g_mpi_stop.load() && next < prepared.pending.size()) {
+    if (!failed && g_mpi_stop.load() == 0 && next < prepared.pending.size()) {
       id = prepared.pending[next++];
     }
     MPI_Send(&id, 1, MPI_LONG_LONG, probe.MPI_SOURCE, kTagWork, MPI_COMM_WORLD);
@@ -117,6 +118,7 @@ SweepSummary run_root(const SweepSpec& spec, const SweepRunOptions& options, int
   summary.errors = progress.errors();
   summary.designs_per_minute = progress.rate_per_minute();
   summary.interrupted = static_cast<long long>(prepared.rows.size()) < summary.designs;
+  if (summary.interrupted) summary.interrupt_signal = g_mpi_stop.load();
   if (!summary.interrupted) write_sorted(prepared.csv, layout.header(), prepared.rows);
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;
@@ -157,7 +159,7 @@ SweepSummary run_sweep_mpi(const SweepSpec& spec, const SweepRunOptions& options
   }
   if (options.handle_signals) {
     // Finish the running designs, keep their rows, stop handing out new ones.
-    g_mpi_stop.store(false);
+    g_mpi_stop.store(0);
     std::signal(SIGINT, request_mpi_stop);
     std::signal(SIGTERM, request_mpi_stop);
   }

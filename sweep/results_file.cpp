@@ -1,4 +1,5 @@
 #include "sweep/results_file.hpp"
+#include "core/input_file.hpp"
 
 #include "core/atomic_file.hpp"
 
@@ -50,11 +51,7 @@ std::string human_bytes(double bytes) {
 RowsById read_finished_rows(const std::filesystem::path& path, const std::string& header,
                             const RowPrefix& prefix, bool& repaired) {
   repaired = false;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(system_error("cannot read the results file", path));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
+  const std::string text = read_input_file(path);
   const std::string file = path.string();
   if (text.compare(0, header.size(), header) != 0) {
     throw InputError(file +

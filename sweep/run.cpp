@@ -17,35 +17,37 @@ namespace rheomag::sweep {
 
 namespace {
 
-std::atomic<bool> g_stop{false};
+std::atomic<int> g_stop{0};  // the signal that asked the run to stop (0: none)
+struct sigaction g_sweep_old_int {};
+struct sigaction g_sweep_old_term {};
 
-extern "C" void request_stop(int) {
-  g_stop.store(true);
+extern "C" void request_stop(int signal_number) {
+  int expected = 0;
+  g_stop.compare_exchange_strong(expected, signal_number);
+  // A second signal gets the actions from before the run (the CLI's clean exit, which removes
+  // temporaries; or the default), so a stuck design can still be stopped.
+  sigaction(SIGINT, &g_sweep_old_int, nullptr);
+  sigaction(SIGTERM, &g_sweep_old_term, nullptr);
 }
 
-/// Installs the stop handler for SIGINT and SIGTERM for its lifetime; a second signal of the
-/// same kind gets the default action (SA_RESETHAND), so a stuck design can still be killed.
+/// Installs the stop handler for SIGINT and SIGTERM for its lifetime.
 class StopSignals {
  public:
   StopSignals() {
-    g_stop.store(false);
+    g_stop.store(0);
     struct sigaction action {};
     action.sa_handler = request_stop;
     sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESETHAND;
-    sigaction(SIGINT, &action, &old_int_);
-    sigaction(SIGTERM, &action, &old_term_);
+    action.sa_flags = SA_RESTART;
+    sigaction(SIGINT, &action, &g_sweep_old_int);
+    sigaction(SIGTERM, &action, &g_sweep_old_term);
   }
   ~StopSignals() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
+    sigaction(SIGINT, &g_sweep_old_int, nullptr);
+    sigaction(SIGTERM, &g_sweep_old_term, nullptr);
   }
   StopSignals(const StopSignals&) = delete;
   StopSignals& operator=(const StopSignals&) = delete;
-
- private:
-  struct sigaction old_int_ {};
-  struct sigaction old_term_ {};
 };
 
 bool is_ok_row(const std::string& row) {
@@ -60,6 +62,10 @@ constexpr double kVtuBytesPerElement = 80.0;
 }  // namespace
 
 bool stop_requested() {
+  return g_stop.load() != 0;
+}
+
+int stop_signal() {
   return g_stop.load();
 }
 
@@ -237,6 +243,7 @@ SweepSummary run_sweep(const SweepSpec& spec, const SweepRunOptions& options) {
   summary.errors = progress.errors();
   summary.designs_per_minute = progress.rate_per_minute();
   summary.interrupted = static_cast<long long>(prepared.rows.size()) < summary.designs;
+  if (summary.interrupted) summary.interrupt_signal = stop_signal();
   if (!summary.interrupted) write_sorted(prepared.csv, layout.header(), prepared.rows);
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;

@@ -46,6 +46,7 @@ struct SweepSummary {
   double seconds = 0.0;
   double designs_per_minute = 0.0;  ///< of the designs solved now
   bool interrupted = false;         ///< stopped by a signal: rows kept, the CSV not yet sorted
+  int interrupt_signal = 0;         ///< the signal that stopped it (SIGINT, SIGTERM; 0: unknown)
 };
 
 /// The results file of a run: spec.csv in out_dir, or "<stem>.part-<i>-of-<N><ext>" for a shard.
@@ -88,5 +89,8 @@ long long mesh_sharing_block(const SweepSpec& spec);
 
 /// True once SIGINT or SIGTERM arrived during a run with handle_signals.
 bool stop_requested();
+
+/// The signal that asked the current or last run to stop (0: none).
+int stop_signal();
 
 }  // namespace rheomag::sweep
