@@ -74,6 +74,16 @@ run "empty option value (diagnose --out '')"  2 $B diagnose ok.csv --quiet --out
 run "--vtk into a missing folder"             2 $B mesh $C --vtk nowhere/field.vtu
 run "solve --current 1e300 (source overflow)" 3 $B solve $S/tests/data/pot_core_equivalent.toml --current 1e300
 run "transient step to the same current"      2 $B transient $S/tests/data/pot_core_equivalent.toml --current 1 --from 1 --duration 0.01 --quiet
+run "valve --temperature -250 (below copper)" 2 $B valve $C --temperature -250
+$B fit ok.csv --model bingham --json > model.json 2>/dev/null
+for edit in "viscous=-1e308" "transition=-0.1" "output_smoothing=5"; do
+  py "
+import json; k, v = '$edit'.split('='); j = json.load(open('model.json'))
+for p in j['parameters']:
+  if p['name'] == k: p['value'] = float(v)
+json.dump(j, open('bad_model.json', 'w'))"
+  run "model JSON $edit"                     2 $B simulate bad_model.json --input ok.csv --out sim.csv
+done
 ln -sf /dev/zero zero.fem
 run "solve of a .fem link to /dev/zero"       2 $B solve zero.fem
 run "sweep /dev/zero"                         2 $B sweep /dev/zero -q -o sweep_out
