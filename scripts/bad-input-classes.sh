@@ -84,6 +84,8 @@ for p in j['parameters']:
 json.dump(j, open('bad_model.json', 'w'))"
   run "model JSON $edit"                     2 $B simulate bad_model.json --input ok.csv --out sim.csv
 done
+run "sweep -j -1 (range named readably)"   2 $B sweep idx.toml -j -1
+[ "$(wc -c < err.txt)" -lt 200 ] && echo "   message under 200 bytes"
 ln -sf /dev/zero zero.fem
 run "solve of a .fem link to /dev/zero"       2 $B solve zero.fem
 run "sweep /dev/zero"                         2 $B sweep /dev/zero -q -o sweep_out

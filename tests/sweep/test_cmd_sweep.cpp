@@ -94,6 +94,17 @@ TEST(SweepCliErrors, UnknownKeyExitsTwoWithTheSuggestionAndWritesNothing) {
   EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }
 
+// Issue 36: `-j -1` printed the largest double in full (309 digits) as the range's upper end.
+TEST(SweepCliErrors, NegativeJobsNamesTheRangeReadably) {
+  const auto dir = scratch_dir("cli-jobs");
+  const auto sweep = write_file(dir, "sweep.toml", sweep_text("", ""));
+  const CliRun run = run_cli({"sweep", sweep.string(), "-j", "-1"}, dir);
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("--jobs: expected a whole number >= 0, got -1"), std::string::npos)
+      << run.err;
+  EXPECT_LT(run.err.size(), 200u) << run.err;
+}
+
 // A design outside a key's domain is an error row citing the key's line of the base case (the
 // probe found the line of a comment above it): comments precede both keys here.
 TEST(SweepCliErrors, ErrorRowsCiteTheKeyLineOfTheBaseCase) {
