@@ -86,6 +86,12 @@ json.dump(j, open('bad_model.json', 'w'))"
 done
 run "sweep -j -1 (range named readably)"   2 $B sweep idx.toml -j -1
 [ "$(wc -c < err.txt)" -lt 200 ] && echo "   message under 200 bytes"
+mkdir -p esc_out esc_elsewhere; ln -sfn ../esc_elsewhere esc_out/link
+for csv in "$D/abs.csv" "../x.csv" "link/x.csv"; do
+  printf '[sweep]\nbase = "%s"\n[[axis]]\nkey = "circuit.0.current"\nvalues = [1.0]\n[output]\ncsv = "%s"\nvtu = true\n' "$C" "$csv" > esc.toml
+  run "sweep [output] csv = $csv"           2 $B sweep esc.toml -q -o esc_out
+done
+echo "   files written outside --out: $(ls esc_elsewhere | wc -l) $(ls abs.csv ../x.csv 2>/dev/null | wc -l)"
 ln -sf /dev/zero zero.fem
 run "solve of a .fem link to /dev/zero"       2 $B solve zero.fem
 run "sweep /dev/zero"                         2 $B sweep /dev/zero -q -o sweep_out
