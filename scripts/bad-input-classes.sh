@@ -92,6 +92,9 @@ for csv in "$D/abs.csv" "../x.csv" "link/x.csv"; do
   run "sweep [output] csv = $csv"           2 $B sweep esc.toml -q -o esc_out
 done
 echo "   files written outside --out: $(ls esc_elsewhere | wc -l) $(ls abs.csv ../x.csv 2>/dev/null | wc -l)"
+cp ok.csv dup.csv; cp ok.toml dup.toml
+run "fit-family, one recording twice"       2 $B fit-family ok.csv ./ok.csv --model bingham --quiet
+run "fit-family, a copy of a recording"     2 $B fit-family ok.csv dup.csv --model bingham --quiet
 ln -sf /dev/zero zero.fem
 run "solve of a .fem link to /dev/zero"       2 $B solve zero.fem
 run "sweep /dev/zero"                         2 $B sweep /dev/zero -q -o sweep_out
