@@ -82,11 +82,12 @@ const bool fit_family_registered = rheomag::app::register_command([](CLI::App& r
       ->check(rheomag::app::non_empty());
   cmd->add_option("--decimation", o->decimation,
                   "Keep every n-th sample of each training recording in the joint fit")
-      ->check(CLI::Range(1, 100));
-  cmd->add_option("--starts", o->starts, "Multi-start count of the fit")->check(CLI::Range(1, 16));
+      ->check(rheomag::app::in_domain(rheomag::Domain::between(1, 100).whole()));
+  cmd->add_option("--starts", o->starts, "Multi-start count of the fit")
+      ->check(rheomag::app::in_domain(rheomag::Domain::between(1, 16).whole()));
   cmd->add_option("--max-substep", o->max_substep,
                   "[s] longest RK4 substep inside the fit (stiff states shorten it further)")
-      ->check(CLI::Range(1e-6, 1.0));
+      ->check(rheomag::app::in_domain(rheomag::Domain::between(1e-6, 1.0, "s")));
   cmd->add_option("--report", o->report,
                   "Write DIR/report.html: measured vs model loops of every recording, parameters "
                   "with standard errors and their field dependence, FIT per recording")

@@ -55,7 +55,7 @@ const bool mesh_registered = rheomag::app::register_command([](CLI::App& root) {
   cmd->add_option("--vtk", o->vtk, "Write the mesh with region ids and names to this .vtu file")
       ->check(rheomag::app::output_file());
   cmd->add_option("--order", o->order, "Lagrange element order, 1 or 2 (default: the case's)")
-      ->check(CLI::Range(1, 2));
+      ->check(rheomag::app::in_domain(rheomag::Domain::between(1, 2).whole()));
   cmd->add_flag("--json", o->json, "Print the mesh statistics as one JSON object");
   cmd->callback([o] { run(*o); });
 });

@@ -143,7 +143,7 @@ const bool solve_registered = rheomag::app::register_command([](CLI::App& root) 
   cmd->add_option("--vtk", o->vtk, "Write mesh and fields (A, B, |B|, H, mu_r) to this .vtu file")
       ->check(rheomag::app::output_file());
   cmd->add_option("--order", o->order, "Lagrange element order, 1 or 2 (default: the case's, 2)")
-      ->check(CLI::Range(1, 2));
+      ->check(rheomag::app::in_domain(rheomag::Domain::between(1, 2).whole()));
   cmd->add_flag("--json", o->json, "Print one JSON object (SI units) instead of the summary");
   cmd->add_flag("--3d", o->three_d,
                 "Revolve the case about z and solve in 3D with its [[feature]] cuts (lead_slot, "

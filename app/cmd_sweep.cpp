@@ -100,7 +100,7 @@ const bool sweep_registered = rheomag::app::register_command([](CLI::App& root) 
       "Under 'mpirun -n K' rank 0 hands designs to the other ranks and writes one CSV.");
   cmd->add_option("sweep", options->sweep_path, "sweep file (.toml)")->required();
   cmd->add_option("--jobs,-j", options->jobs, "designs solved at once (default: all cores)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(rheomag::app::in_domain(rheomag::Domain::non_negative().whole()));
   cmd->add_option("--out,-o", options->out,
                   "output directory (created if missing; default: current directory)");
   cmd->add_option("--shard", options->shard,

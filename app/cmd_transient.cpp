@@ -123,15 +123,15 @@ const bool transient_registered = app::register_command([](CLI::App& root) {
   cmd->add_option("--from", o->from, "Current before the step (steady state) [A]");
   cmd->add_option("--duration", o->duration, "Simulated time after the step [s]")->required();
   cmd->add_option("--steps", o->steps, "Equal time steps (default: adaptive steps)")
-      ->check(CLI::PositiveNumber);
+      ->check(rheomag::app::in_domain(rheomag::Domain::count()));
   cmd->add_option("--tolerance", o->tolerance,
                   "Adaptive steps: local error of the flux linkage per step, relative to its "
                   "change (default 1e-4)")
-      ->check(CLI::PositiveNumber);
+      ->check(rheomag::app::in_domain(rheomag::Domain::positive()));
   cmd->add_option("--newton-iterations", o->newton_iterations,
                   "Newton iterations per time step before it is repeated smaller (adaptive) or the "
                   "run stops with exit 3 (default 50)")
-      ->check(CLI::PositiveNumber);
+      ->check(rheomag::app::in_domain(rheomag::Domain::count()));
   cmd->add_option("--scheme", o->scheme, "midpoint (default, 2nd order) or backward_euler")
       ->check(rheomag::app::non_empty());
   cmd->add_option("--resistance", o->resistance, "Coil resistance [Ohm] (overrides the case)");

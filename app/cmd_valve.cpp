@@ -12,6 +12,7 @@
 #include "app/command.hpp"
 #include "case/case_file.hpp"
 #include "core/error.hpp"
+#include "valve/coil.hpp"
 #include "valve/valve_report.hpp"
 
 namespace {
@@ -36,7 +37,12 @@ void run_valve(const ValveCli& o) {
     }
     options.wire = o.wire;
   }
-  if (!std::isnan(o.temperature)) options.temperature = o.temperature;
+  if (!std::isnan(o.temperature)) {
+    const std::string why = valve::kCoilTemperature.violation(o.temperature);
+    if (!why.empty())
+      throw InputError("--temperature: " + why + " (where the linear resistivity of copper holds)");
+    options.temperature = o.temperature;
+  }
   const valve::ValveReport report = valve::evaluate_valve(c, options, o.currents, o.flows);
   if (o.json)
     app::print_json(valve::valve_json(report), 2);
@@ -65,7 +71,8 @@ const bool valve_registered = rheomag::app::register_command([](CLI::App& root) 
       ->delimiter(',');
   cmd->add_option("--wire", o->wire, "Wire, e.g. \"AWG 24\" or \"0.5 mm\" (default: [valve] wire)")
       ->check(rheomag::app::non_empty());
-  cmd->add_option("--temperature", o->temperature, "Coil temperature [C] (default 20)");
+  cmd->add_option("--temperature", o->temperature,
+                  "Coil temperature [C], -200 to 250 (default 20)");
   cmd->add_flag("--json", o->json, "Print one JSON object to stdout");
   cmd->callback([o] { run_valve(*o); });
 });

@@ -2,12 +2,14 @@
 // Registry of CLI subcommands: each app/cmd_*.cpp registers itself at start-up.
 
 #include <CLI/CLI.hpp>
+#include <cstdlib>
 #include <functional>
 #include <string>
 
 #include "app/finite_stdout.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/quantity_domain.hpp"
 #include "lumped/recording.hpp"
 
 namespace rheomag::app {
@@ -37,6 +39,20 @@ inline CLI::Validator output_file() {
         return std::string();
       },
       "FILE");
+}
+
+/// Validator of a numeric option's domain, worded as every reader's ("--jobs: expected a whole
+/// number >= 0, got -1"). CLI11's own range checks (CLI::Range, PositiveNumber, NonNegativeNumber)
+/// print an open end as the largest double in full, 309 digits; app/ uses this one instead.
+inline CLI::Validator in_domain(const Domain& domain) {
+  return CLI::Validator(
+      [domain](std::string& value) {
+        char* end = nullptr;
+        const double v = std::strtod(value.c_str(), &end);
+        if (end == value.c_str() || *end != '\0') return std::string();  // the conversion says it
+        return domain.violation(v);
+      },
+      domain.describe());
 }
 
 /// Validator of an option whose value names a file, folder, range or choice: an empty value (a

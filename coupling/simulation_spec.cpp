@@ -14,10 +14,12 @@
 
 #include "case/case_file.hpp"
 #include "core/error.hpp"
+#include "core/quantity_domain.hpp"
 #include "coupling/field_lag_prediction.hpp"
 #include "coupling/rig_chain_map.hpp"
 #include "lumped/lugre_paper001.hpp"
 #include "lumped/transfer_function.hpp"
+#include "valve/coil.hpp"
 
 namespace rheomag::coupling {
 
@@ -44,6 +46,14 @@ class TableReader {
   }
   double positive(const std::string& key, double fallback) const {
     return number(key, fallback, 0.0, true);
+  }
+  /// A number in `domain`, or `fallback` when absent; `why` says where the domain comes from.
+  double within(const std::string& key, const Domain& domain, double fallback,
+                const std::string& why) const {
+    const double v = number(key, fallback);
+    const std::string violation = domain.violation(v);
+    if (!violation.empty()) fail(key, violation + " (" + why + ")");
+    return v;
   }
   std::string text(const std::string& key, const std::string& fallback) const {
     if (!has(key)) return fallback;
@@ -138,7 +148,10 @@ lumped::RigSpec read_rig(const toml::table& doc, const std::string& file) {
   coil.only(
       {"resistance", "temperature_coefficient", "inductance", "flux_current", "flux_linkage"});
   s.coil.resistance_20c = coil.positive("resistance", s.coil.resistance_20c);
-  s.coil.temperature_coefficient = coil.number("temperature_coefficient", lumped::kCopperAlpha);
+  // R(T) = R20 (1 + alpha (T - 20)) stays > 0 over the whole coil temperature domain.
+  s.coil.temperature_coefficient =
+      coil.within("temperature_coefficient", Domain::between(0.0, 0.0045, "1/K"),
+                  lumped::kCopperAlpha, "copper 0.00393, aluminium 0.00403; R > 0 down to -200 C");
   s.coil.inductance = coil.number("inductance", 0.0, 0.0);
   s.coil.table_current = coil.numbers("flux_current");
   s.coil.table_flux = coil.numbers("flux_linkage");
@@ -271,7 +284,8 @@ lumped::RigSpec read_rig(const toml::table& doc, const std::string& file) {
     lumped::ThermalBlock th;
     th.thermal_resistance = e.positive("thermal_resistance", th.thermal_resistance);
     th.thermal_time_constant = e.positive("thermal_time_constant", th.thermal_time_constant);
-    th.ambient_c = e.number("ambient", 20.0);
+    th.ambient_c = e.within("ambient", valve::kCoilTemperature, 20.0,
+                            "where the linear resistivity of copper holds");
     s.coil_heating = th;
   }
   if (auto e = effect("mr_response_time"); effect_on(e)) {

@@ -5,6 +5,7 @@
 #include "core/input_file.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -144,6 +145,15 @@ std::vector<FittedParameter> read_parameters(const Field& list) {
   return params;
 }
 
+/// "" if `value` is in `domain` up to the rounding of a fit that ended on a bound (the solver works
+/// on scaled parameters: 0.25 comes back as 0.25000000000000006), else the domain's violation.
+std::string outside_fit_bounds(const Domain& domain, double value) {
+  Domain rounded = domain;
+  rounded.lower -= 1e-9 * std::abs(domain.lower);
+  rounded.upper += 1e-9 * std::abs(domain.upper);
+  return rounded.contains(value) ? std::string() : domain.violation(value);
+}
+
 /// Strictly increasing values (the grid of a static map).
 void require_increasing(const Field& f, const std::vector<double>& v) {
   for (std::size_t k = 1; k < v.size(); ++k)
@@ -193,6 +203,17 @@ GreyboxFit read_greybox(const Field& root, const std::string& model) {
       list[k].at("name").fail("expected \"" + expected[k].name + "\" (parameter " +
                               std::to_string(k + 1) + " of " + model + "), got \"" +
                               fit.params[k].name + "\"");
+  // Each value in its physical domain (the fit's own bounds where they do not scale with the data):
+  // a negative viscosity or transition would be simulated, not refused, further on.
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    const std::string why =
+        outside_fit_bounds(lumped::pheno_param_domain(fit.setup.kind, k), fit.params[k].value);
+    if (why.empty()) continue;
+    for (std::size_t j = 0; j < list.size(); ++j)
+      if (list[j].at("name").text() == expected[k].name)
+        list[j].at("value").fail("parameter " + expected[k].name + " of " + model + ": " + why +
+                                 " (the bound a fit of " + model + " keeps it in)");
+  }
   return fit;
 }
 
@@ -227,6 +248,22 @@ ValveChainFit read_valve_chain(const Field& root) {
   fit.params = read_parameters(list);
   if (fit.params.size() != 4)
     list.fail("model valve-chain has 4 parameters, got " + std::to_string(fit.params.size()));
+  // The fit's bounds (identify/valve_chain_fit.cpp), by position as the fit writes them.
+  static const std::array<std::pair<const char*, Domain>, 4> bounds = {
+      {{"yield_scale", Domain::between(1e-2, 1e2)},
+       {"viscous_scale", Domain::between(1e-2, 1e3)},
+       {"field_time_constant", Domain::between(1e-4, 10.0, "s")},
+       {"hydraulic_capacitance", Domain::non_negative("m^3/Pa")}}};
+  for (std::size_t k = 0; k < bounds.size(); ++k) {
+    if (fit.params[k].name != bounds[k].first)
+      list[k].at("name").fail("expected \"" + std::string(bounds[k].first) + "\" (parameter " +
+                              std::to_string(k + 1) + " of valve-chain), got \"" +
+                              fit.params[k].name + "\"");
+    const std::string why = outside_fit_bounds(bounds[k].second, fit.params[k].value);
+    if (!why.empty())
+      list[k].at("value").fail("parameter " + fit.params[k].name + " of valve-chain: " + why +
+                               " (the bound a fit of valve-chain keeps it in)");
+  }
   return fit;
 }
 

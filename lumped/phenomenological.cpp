@@ -141,6 +141,59 @@ const std::vector<PhenoParam>& pheno_params(PhenoKind kind) {
   return bingham;
 }
 
+Domain pheno_param_domain(PhenoKind kind, std::size_t index) {
+  const std::vector<PhenoParam>& params = pheno_params(kind);
+  if (index >= params.size()) return Domain::finite();
+  const std::string& n = params[index].name;
+  const auto named = [&](std::initializer_list<const char*> names) {
+    return std::any_of(names.begin(), names.end(), [&](const char* x) { return n == x; });
+  };
+  if (n == "output_smoothing") return Domain::between(0.0, 0.25);
+  switch (kind) {
+    case PhenoKind::bingham:
+      if (n == "transition") return Domain::positive();
+      if (named({"yield", "viscous"})) return Domain::non_negative();
+      break;
+    case PhenoKind::lugre:
+      if (n == "exponent") return Domain::between(0.2, 2.0);
+      if (n == "rate") return Domain::positive();
+      if (named({"stiffness", "viscous"})) return Domain::non_negative();
+      break;
+    case PhenoKind::bouc_wen:
+      if (n == "eta") return Domain::between(1.0, 5000.0);
+      if (n == "A") return Domain::positive();
+      if (named({"alpha_a", "c0_a", "c1_a", "k0", "gamma", "beta"})) return Domain::non_negative();
+      break;
+    case PhenoKind::maxwell:
+      if (n == "time_constant") return Domain::between(1e-5, 2.0);
+      if (n == "shape") return Domain::positive();
+      if (named({"viscous", "field_force"})) return Domain::non_negative();
+      break;
+    case PhenoKind::dahl:
+      if (n == "sigma") return Domain::positive();
+      if (named({"viscous", "dahl_force"})) return Domain::non_negative();
+      break;
+    case PhenoKind::biviscous:
+      if (n == "pre_yield") return Domain::positive();
+      if (named({"yield", "post_yield"})) return Domain::non_negative();
+      break;
+    case PhenoKind::tanh:
+      if (n == "lag") return Domain::between(-5.0, 5.0);
+      if (n == "shape") return Domain::positive();
+      if (named({"viscous", "hysteretic"})) return Domain::non_negative();
+      break;
+    case PhenoKind::damper:
+      if (n == "flow_index") return Domain::between(0.2, 2.0);
+      if (n == "field_time_constant") return Domain::between(1e-4, 1.0);
+      if (named({"consistency", "pre_yield_viscous", "compliance_stiffness", "seal_presliding"}))
+        return Domain::positive();
+      if (named({"yield", "stiffening", "seal_friction", "field_saturation"}))
+        return Domain::non_negative();
+      break;
+  }
+  return Domain::finite();
+}
+
 std::size_t pheno_smoothing_index(PhenoKind kind) {
   return pheno_params(kind).size() - 1;
 }

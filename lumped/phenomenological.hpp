@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "core/quantity_domain.hpp"
 #include "lumped/smooth.hpp"
 
 namespace rheomag::lumped {
@@ -58,6 +59,13 @@ std::string pheno_name(PhenoKind kind);
 
 /// Parameters of a model, in the order of the parameter vector.
 const std::vector<PhenoParam>& pheno_params(PhenoKind kind);
+
+/// The values parameter `index` of `kind` may physically take, the scale-free part of the fit's
+/// bounds (identify/greybox.cpp): a sign (a yield force, a viscosity, a stiffness of the damper
+/// model, a rate >= 0 or > 0) or a fixed interval (an exponent in [0.2, 2], output_smoothing in
+/// [0, 0.25] of a drive period, a time constant). Any finite number where the fit allows either
+/// sign (offsets, field terms). A model file is read only with every value in its domain.
+Domain pheno_param_domain(PhenoKind kind, std::size_t index);
 
 /// Number of internal states of a model.
 std::size_t pheno_state_count(PhenoKind kind);

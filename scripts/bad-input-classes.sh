@@ -74,6 +74,27 @@ run "empty option value (diagnose --out '')"  2 $B diagnose ok.csv --quiet --out
 run "--vtk into a missing folder"             2 $B mesh $C --vtk nowhere/field.vtu
 run "solve --current 1e300 (source overflow)" 3 $B solve $S/tests/data/pot_core_equivalent.toml --current 1e300
 run "transient step to the same current"      2 $B transient $S/tests/data/pot_core_equivalent.toml --current 1 --from 1 --duration 0.01 --quiet
+run "valve --temperature -250 (below copper)" 2 $B valve $C --temperature -250
+$B fit ok.csv --model bingham --json > model.json 2>/dev/null
+for edit in "viscous=-1e308" "transition=-0.1" "output_smoothing=5"; do
+  py "
+import json; k, v = '$edit'.split('='); j = json.load(open('model.json'))
+for p in j['parameters']:
+  if p['name'] == k: p['value'] = float(v)
+json.dump(j, open('bad_model.json', 'w'))"
+  run "model JSON $edit"                     2 $B simulate bad_model.json --input ok.csv --out sim.csv
+done
+run "sweep -j -1 (range named readably)"   2 $B sweep idx.toml -j -1
+[ "$(wc -c < err.txt)" -lt 200 ] && echo "   message under 200 bytes"
+mkdir -p esc_out esc_elsewhere; ln -sfn ../esc_elsewhere esc_out/link
+for csv in "$D/abs.csv" "../x.csv" "link/x.csv"; do
+  printf '[sweep]\nbase = "%s"\n[[axis]]\nkey = "circuit.0.current"\nvalues = [1.0]\n[output]\ncsv = "%s"\nvtu = true\n' "$C" "$csv" > esc.toml
+  run "sweep [output] csv = $csv"           2 $B sweep esc.toml -q -o esc_out
+done
+echo "   files written outside --out: $(ls esc_elsewhere | wc -l) $(ls abs.csv ../x.csv 2>/dev/null | wc -l)"
+cp ok.csv dup.csv; cp ok.toml dup.toml
+run "fit-family, one recording twice"       2 $B fit-family ok.csv ./ok.csv --model bingham --quiet
+run "fit-family, a copy of a recording"     2 $B fit-family ok.csv dup.csv --model bingham --quiet
 ln -sf /dev/zero zero.fem
 run "solve of a .fem link to /dev/zero"       2 $B solve zero.fem
 run "sweep /dev/zero"                         2 $B sweep /dev/zero -q -o sweep_out

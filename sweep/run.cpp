@@ -1,5 +1,6 @@
 #include "sweep/run.hpp"
 
+#include <algorithm>
 #include <csignal>
 #include <exception>
 #include <mutex>
@@ -95,6 +96,23 @@ std::filesystem::path results_path(const SweepSpec& spec, const std::filesystem:
   if (shard.count > 1) {
     csv.replace_filename(csv.stem().string() + ".part-" + std::to_string(shard.index) + "-of-" +
                          std::to_string(shard.count) + csv.extension().string());
+  }
+  // The spec reader refused absolute paths and ".."; a symbolic link on the way (a folder, the
+  // file, the _vtu folder) may still lead out of --out: resolve it and refuse what lands outside.
+  std::error_code ec;
+  std::filesystem::path root = std::filesystem::weakly_canonical(out_dir, ec);
+  if (!root.empty() && root.filename().empty()) root = root.parent_path();  // "out/"
+  std::vector<std::filesystem::path> written = {csv};
+  if (spec.write_vtu) written.push_back(vtu_directory(csv));
+  for (const std::filesystem::path& path : written) {
+    const std::filesystem::path real = std::filesystem::weakly_canonical(path, ec);
+    if (ec || root.empty()) continue;  // unreadable: the writers name the path
+    const auto [r, p] = std::mismatch(root.begin(), root.end(), real.begin(), real.end());
+    if (r != root.end())
+      throw InputError(spec.csv_where + ": \"" + spec.csv + "\" writes " + path.string() +
+                       ", which resolves through a symbolic link to " + real.string() +
+                       ", outside the output folder " + root.string() +
+                       " (--out); expected a path inside it");
   }
   return csv;
 }

@@ -196,8 +196,22 @@ SweepSpec parse_sweep(std::string_view text, const std::filesystem::path& source
     if (spec.csv.empty() || std::filesystem::path(spec.csv).filename().empty()) {
       output->fail("csv", "expected a file name such as \"results.csv\"");
     }
+    // Outputs stay inside --out: no root, no "..". Links are resolved when the run starts
+    // (results_path), where the output folder is known.
+    const std::filesystem::path csv(spec.csv);
+    if (csv.has_root_name() || csv.has_root_directory())
+      output->fail("csv", "\"" + spec.csv +
+                              "\" is an absolute path; expected a path inside the output folder "
+                              "(--out), such as \"results.csv\"");
+    for (const auto& part : csv)
+      if (part == "..")
+        output->fail("csv", "\"" + spec.csv +
+                                "\" leaves the output folder through '..'; expected a path inside "
+                                "it (--out), such as \"results.csv\"");
+    spec.csv_where = output->where("csv");
     spec.write_vtu = output->boolean_or("vtu", false);
   }
+  if (spec.csv_where.empty()) spec.csv_where = file + ": output.csv (default \"results.csv\")";
   if (design_count(spec) > kMaxDesigns) {
     throw InputError(file + ": the sweep has more than " + std::to_string(kMaxDesigns) +
                      " designs; split it");

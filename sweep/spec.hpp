@@ -38,7 +38,9 @@ struct SweepSpec {
   std::uint64_t seed = 1;  ///< Latin hypercube seed (std::mt19937_64)
   std::vector<SweepAxis> axes;
   std::string csv = "results.csv";  ///< results file, relative to the output directory
-  bool write_vtu = false;           ///< one .vtu per design in <out>/<csv stem>_vtu/
+  /// "sweep.toml:12: output.csv" (or the file and the default) for messages about the results path.
+  std::string csv_where;
+  bool write_vtu = false;  ///< one .vtu per design in <out>/<csv stem>_vtu/
 };
 
 /// Most designs a sweep may have.

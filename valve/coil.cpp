@@ -8,15 +8,21 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "core/error.hpp"
 
 namespace rheomag::valve {
 
 double copper_resistivity(double temperature) {
-  if (!(temperature > -273.15 && temperature < 400.0))
-    throw InputError("coil temperature must be in (-273.15, 400) deg C");
-  return 1.7241e-8 * (1.0 + 0.00393 * (temperature - 20.0));
+  const std::string why = kCoilTemperature.violation(temperature);
+  if (!why.empty())
+    throw InputError("coil temperature: " + why +
+                     " (where the linear resistivity of copper holds)");
+  const double rho = 1.7241e-8 * (1.0 + 0.00393 * (temperature - 20.0));
+  if (!(rho > 0.0)) throw std::logic_error("copper resistivity <= 0 inside its domain");
+  return rho;
 }
 
 CoilProperties coil_properties(const CoilSpec& spec, double current, double inductance) {

@@ -32,7 +32,7 @@ ValveOptions read_valve_options(const cases::Case& c) {
     options.wire = *wire;
     options.wire_diameter = diameter;
   }
-  options.temperature = valve->number_or("temperature", 20.0);
+  options.temperature = valve->quantity_or("temperature", kCoilTemperature, 20.0);
   options.inlet_radius = valve->non_negative_or("inlet_radius", 0.0);
   if (auto flow = valve->number("flow")) {
     if (!(*flow > 0.0)) throw InputError(c.source.string() + ": [valve].flow must be > 0 m^3/s");

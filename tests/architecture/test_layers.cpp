@@ -132,3 +132,20 @@ TEST_F(ScratchTree, TransitiveDependenciesAreAllowed) {
 }
 
 }  // namespace
+
+// Issue 36: `sweep -j -1` said "Value -1 not in range 0.000000 to 1797693134862315…" (309 digits):
+// CLI11's range validators print an open end as the largest double. Every numeric option of app/
+// checks its range with app::in_domain (the readers' wording); this scan fails on a CLI11 one.
+TEST(AppOptions, NoCli11RangeValidatorPrintsTheLargestDouble) {
+  std::string found;
+  for (const auto& entry : fs::directory_iterator(kRoot / "app")) {
+    std::ifstream in(entry.path());
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n)
+      for (const char* v : {"CLI::Range", "CLI::Bound", "CLI::PositiveNumber",
+                            "CLI::NonNegativeNumber", "CLI::Number"})
+        if (line.find(v) != std::string::npos && line.find("//") == std::string::npos)
+          found += entry.path().filename().string() + ":" + std::to_string(n) + ": " + line + "\n";
+  }
+  EXPECT_EQ(found, "") << "use rheomag::app::in_domain (app/command.hpp)";
+}

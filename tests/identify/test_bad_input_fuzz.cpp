@@ -45,7 +45,8 @@ std::vector<std::string> fit_model_documents() {
   grey.setup.field_column = "current";
   grey.setup.output_column = "force";
   for (const PhenoParam& p : pheno_params(PhenoKind::bingham))
-    grey.params.push_back({p.name, p.unit, 1.5, 0.1, false, false});
+    grey.params.push_back(  // in every parameter's domain (output_smoothing in [0, 0.25])
+        {p.name, p.unit, p.name == "output_smoothing" ? 0.1 : 1.5, 0.1, false, false});
   ValveChainFit chain;
   auto map = std::make_shared<ChainMapTable>();
   map->case_file = "valve.toml";
@@ -58,7 +59,8 @@ std::vector<std::string> fit_model_documents() {
   chain.setup.field_column = "current";
   chain.setup.output_column = "force";
   chain.setup.piston_area = 1e-3;
-  for (const char* name : {"yield_scale", "viscous_scale", "field_time_constant", "capacitance"})
+  for (const char* name : {"yield_scale", "viscous_scale", "field_time_constant",
+                           "hydraulic_capacitance"})  // the names the fit writes
     chain.params.push_back({name, "1", 0.5, std::nullopt, false, false});
   return {fit_model_json(grey, meta).dump(2), fit_model_json(chain, meta).dump(2)};
 }

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <random>
 #include <string>
 
@@ -149,6 +150,38 @@ TEST(CurrentDependent, CrossValidationPredictsEachRecordingFromTheOthers) {
   options.cross_validate = true;
   EXPECT_THROW(fit_current_dependent({training[0], training[1]}, "lugre", {}, options),
                rheomag::InputError);  // leaving one of two out leaves no family
+}
+
+// Issue 36: a recording given twice counted as two tests (between-recording standard errors
+// 23 -> 13.2). The same file under another name (./a.csv, a link) and the same samples under
+// another file are refused before any fit, naming both.
+TEST(CurrentDependent, DuplicateTrainingRecordingIsRefusedByName) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "rheomag_test_family_duplicate";
+  fs::create_directories(dir);
+  std::ofstream(dir / "a.csv") << "t\n";
+  fs::remove(dir / "link.csv");
+  fs::create_symlink("a.csv", dir / "link.csv");
+  Recording a = sine_recording(0.1, 0.0), b = sine_recording(0.25, 1.0);
+  a.csv_path = (dir / "a.csv").string();
+  b.csv_path = (dir / "link.csv").string();
+  b.t = a.t;  // same file: its data would be the same too; here only the path decides
+  const auto refusal = [](const std::vector<Recording>& training) {
+    try {
+      fit_current_dependent(training, "lugre", {}, FamilyFitOptions{});
+    } catch (const rheomag::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(none)");
+  };
+  EXPECT_NE(refusal({a, b}).find("link.csv: the same file as " + a.csv_path), std::string::npos)
+      << refusal({a, b});
+  Recording copy = a;
+  copy.csv_path = (dir / "copy.csv").string();
+  EXPECT_NE(refusal({a, sine_recording(0.25, 1.0), copy})
+                .find("copy.csv: the same samples as " + a.csv_path + " (every column equal)"),
+            std::string::npos);
+  fs::remove_all(dir);
 }
 
 // Joining keeps every n-th sample, shifts time so it increases, and rejects mixed recordings.

@@ -204,7 +204,8 @@ TEST(FitModelJson, MalformedDocumentsNamed) {
   fit.model = "bingham";
   fit.setup = greybox_setup_for(rec, PhenoKind::bingham);
   for (const PhenoParam& p : pheno_params(PhenoKind::bingham))
-    fit.params.push_back({p.name, p.unit, 1.0, std::nullopt, false, false});
+    fit.params.push_back(
+        {p.name, p.unit, p.name == "output_smoothing" ? 0.1 : 1.0, std::nullopt, false, false});
   const nlohmann::json good = fit_model_json(fit, rec.meta);
   EXPECT_EQ(refusal(good.dump()), "(none)");
   auto with = [&](const std::function<void(nlohmann::json&)>& edit) {
@@ -255,11 +256,31 @@ TEST(FitModelJson, MalformedDocumentsNamed) {
                 std::to_string(pheno_params(PhenoKind::bingham).size()) + " parameters, got " +
                 std::to_string(pheno_params(PhenoKind::bingham).size() - 1));
 
+  // Issue 36: parameters outside their physical domain (the fit's scale-free bounds) were read
+  // and simulated (viscous = -1e308 gave -1.26e307 N with exit 0).
+  EXPECT_EQ(with([](auto& j) { j["parameters"][2]["value"] = -1e308; }),
+            "model.json: key 'parameters[2].value': parameter viscous of bingham: expected a "
+            "number >= 0, got -1e+308 (the bound a fit of bingham keeps it in)");
+  EXPECT_EQ(with([](auto& j) { j["parameters"][4]["value"] = -0.1; }),
+            "model.json: key 'parameters[4].value': parameter transition of bingham: expected a "
+            "positive number, got -0.1 (the bound a fit of bingham keeps it in)");
+  EXPECT_EQ(with([](auto& j) { j["parameters"][6]["value"] = 5; }),
+            "model.json: key 'parameters[6].value': parameter output_smoothing of bingham: "
+            "expected a number in [0, 0.25], got 5 (the bound a fit of bingham keeps it in)");
+  // A fit that ended on a bound comes back with the rounding of its scaled parameter: read.
+  EXPECT_EQ(with([](auto& j) { j["parameters"][6]["value"] = 0.25000000000000006; }), "(none)");
+
   RecordingMeta meta;
   meta.drive = {"flow", "current"};
   meta.output = "pressure";
   const nlohmann::json chain = fit_model_json(chain_model(), meta);
   nlohmann::json j = chain;
+  j["parameters"][0]["value"] = -2.0;
+  EXPECT_EQ(refusal(j.dump()),
+            "model.json: key 'parameters[0].value': parameter yield_scale of valve-chain: "
+            "expected a number in [0.01, 100], got -2 (the bound a fit of valve-chain keeps it "
+            "in)");
+  j = chain;
   j["static_map"]["flow"][2] = 1e-7;
   EXPECT_EQ(refusal(j.dump()),
             "model.json: key 'static_map.flow[2]': expected a value above the previous one "

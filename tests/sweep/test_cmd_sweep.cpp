@@ -95,6 +95,55 @@ TEST(SweepCliErrors, UnknownKeyExitsTwoWithTheSuggestionAndWritesNothing) {
   EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }
 
+// Issue 36: `-j -1` printed the largest double in full (309 digits) as the range's upper end.
+TEST(SweepCliErrors, NegativeJobsNamesTheRangeReadably) {
+  const auto dir = scratch_dir("cli-jobs");
+  const auto sweep = write_file(dir, "sweep.toml", sweep_text("", ""));
+  const CliRun run = run_cli({"sweep", sweep.string(), "-j", "-1"}, dir);
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("--jobs: expected a whole number >= 0, got -1"), std::string::npos)
+      << run.err;
+  EXPECT_LT(run.err.size(), 200u) << run.err;
+}
+
+// Issue 36, a security defect: `[output] csv` wrote where it named, `/abs.csv`, `../x.csv` or a
+// folder linked out of --out (its _vtu/ folder too). Every way out is refused with exit 2 at the
+// spec's line and key, before anything is written; a subfolder inside --out stays allowed.
+TEST(SweepCliErrors, OutputsOutsideTheOutputFolderAreRefused) {
+  namespace fs = std::filesystem;
+  const auto dir = scratch_dir("cli-escape");
+  fs::create_directories(dir / "out" / "sub");
+  fs::create_directories(dir / "elsewhere");
+  fs::create_symlink("../elsewhere", dir / "out" / "link");
+  fs::create_symlink("../elsewhere", dir / "out" / "r_vtu");
+  const std::string axes = "[[axis]]\nkey = \"circuit.0.current\"\nvalues = [1.0]\n";
+  const struct {
+    std::string csv, expected;
+  } cases[] = {
+      {(dir / "abs.csv").string(), "is an absolute path"},
+      {"../x.csv", "leaves the output folder through '..'"},
+      {"sub/../../x.csv", "leaves the output folder through '..'"},
+      {"link/x.csv", "resolves through a symbolic link to " + (dir / "elsewhere").string()},
+      {"r.csv", "writes " + (dir / "out" / "r_vtu").string()},  // vtu = true: r_vtu/ is a link
+  };
+  for (const auto& c : cases) {
+    const auto sweep = write_file(dir, "sweep.toml",
+                                  sweep_text("", axes, "csv = \"" + c.csv + "\"\nvtu = true\n"));
+    const CliRun run =
+        run_cli({"sweep", sweep.string(), "-q", "--out", (dir / "out").string()}, dir);
+    EXPECT_EQ(run.exit_code, 2) << c.csv << ": " << run.err;
+    EXPECT_NE(run.err.find("sweep.toml:9: output.csv: "), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find(c.expected), std::string::npos) << run.err;
+  }
+  EXPECT_TRUE(fs::is_empty(dir / "elsewhere"));
+  EXPECT_FALSE(fs::exists(dir / "abs.csv"));
+  EXPECT_FALSE(fs::exists(dir / "x.csv"));
+  const auto inside = write_file(dir, "sweep.toml", sweep_text("", axes, "csv = \"sub/r.csv\"\n"));
+  const CliRun ok = run_cli({"sweep", inside.string(), "-q", "--out", (dir / "out").string()}, dir);
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_TRUE(fs::exists(dir / "out" / "sub" / "r.csv"));
+}
+
 // A design outside a key's domain is an error row citing the key's line of the base case (the
 // probe found the line of a comment above it): comments precede both keys here.
 TEST(SweepCliErrors, ErrorRowsCiteTheKeyLineOfTheBaseCase) {

@@ -65,6 +65,24 @@ TEST(Coil, BadInputThrows) {
   EXPECT_THROW(copper_resistivity(-300.0), rheomag::InputError);
 }
 
+// Issue 36: -250 C was accepted and gave a negative resistivity (R = -0.291 Ohm, exit 0). The
+// linear model is positive over its whole domain [-200, 250] C (exactly: 1 + 0.00393 (T - 20) at
+// -200 C is 0.1354) and refused outside it, at both ends, with the domain named.
+TEST(Coil, TemperatureOutsideTheCopperModelIsRefused) {
+  EXPECT_NEAR(copper_resistivity(-200.0), 1.7241e-8 * 0.1354, 1e-15);
+  EXPECT_GT(copper_resistivity(kCoilTemperature.lower), 0.0);
+  for (const double t : {-250.0, -273.15, -300.0, 250.5, 400.0, std::nan("")}) {
+    try {
+      copper_resistivity(t);
+      ADD_FAILURE() << t << " C accepted";
+    } catch (const rheomag::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("expected a number in [-200, 250] (deg C)"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 namespace {
 
 std::string annular_case_with(const std::string& from, const std::string& to) {

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -93,6 +96,31 @@ TEST(CmdValve, JsonKeysAndValues) {
   const auto bad = cli_test::run_rheomag("valve " + std::string(RHEOMAG_SOURCE_DIR) +
                                          "/cases/radial_valve.toml --current 1");  // no flow rate
   EXPECT_EQ(bad.code, 2);
+}
+
+// Issue 36: `--temperature -250` printed R = -0.291 Ohm with exit 0; the option and the
+// `[valve] temperature` key are read in the copper model's domain, refused with exit 2 naming it.
+TEST(CmdValve, TemperatureOutsideTheCopperModelIsExit2) {
+  const auto cold = cli_test::run_rheomag(std::string("valve ") + kCase + " --temperature -250");
+  EXPECT_EQ(cold.code, 2);
+  EXPECT_NE(cold.err.find("--temperature: expected a number in [-200, 250] (deg C), got -250"),
+            std::string::npos)
+      << cold.err;
+  EXPECT_EQ(cold.out, "");
+  const auto dir = std::filesystem::temp_directory_path() / "rheomag_test_valve_temperature";
+  std::filesystem::create_directories(dir);
+  std::ifstream in(kCase);
+  std::string text((std::istreambuf_iterator<char>(in)), {});
+  const std::size_t at = text.find("[valve]");
+  ASSERT_NE(at, std::string::npos);
+  text.insert(text.find('\n', at) + 1, "temperature = 300.0\n");
+  std::ofstream(dir / "hot.toml") << text;
+  const auto hot = cli_test::run_rheomag("valve '" + (dir / "hot.toml").string() + "'");
+  EXPECT_EQ(hot.code, 2);
+  EXPECT_NE(hot.err.find("valve.temperature: expected a number in [-200, 250] (deg C), got 300"),
+            std::string::npos)
+      << hot.err;
+  std::filesystem::remove_all(dir);
 }
 
 // L(I) table of `rheomag valve --json`. References: lambda = L I by definition of the secant
