@@ -10,7 +10,9 @@
 #include "app/command.hpp"
 #include "case/case_file.hpp"
 #include "core/error.hpp"
+#include "magnetostatics/block_integrals.hpp"
 #include "magnetostatics/field_probe.hpp"
+#include "magnetostatics/line_integral.hpp"
 #include "magnetostatics/report.hpp"
 #include "magnetostatics/solve_problem.hpp"
 #include "magnetostatics/sweep_report.hpp"
@@ -28,7 +30,10 @@ struct SolveCommandOptions {
   std::vector<double> sweep;
   std::string vtk;
   std::optional<int> order;
-  std::vector<double> points;  // r1, z1, r2, z2, ... [m]
+  std::vector<double> points;          // r1, z1, r2, z2, ... [m]
+  std::vector<std::string> integrals;  // REGION:KIND
+  std::vector<std::string> lines;      // x1,y1:x2,y2
+  int line_points = 101;
   bool json = false;
   bool three_d = false;
   bool full = false;
@@ -42,8 +47,9 @@ void check_current(double current, const char* option) {
 
 /// `solve --3d`: the case revolved about z with its [[feature]] cuts (magnetostatics3d).
 void run_3d(const SolveCommandOptions& o, const Case& c) {
-  if (!o.sweep.empty() || o.order)
-    throw rheomag::InputError("--sweep and --order are not available with --3d");
+  if (!o.sweep.empty() || o.order || !o.integrals.empty() || !o.lines.empty())
+    throw rheomag::InputError(
+        "--sweep, --order, --integral and --line are not available with --3d");
   namespace m3 = rheomag::magnetostatics3d;
   const m3::Mesher3d mesher = m3::kMesher3dNames.parse(o.mesher, "--mesher");
   m3::Solve3dOptions options =
@@ -94,6 +100,11 @@ void run(const SolveCommandOptions& o) {
   if (!o.sweep.empty()) table = solved.solver->sweep(0, o.sweep);
   if (!o.vtk.empty()) write_results_vtu(o.vtk, *solved.solver, solved.solution, solved.results);
   const std::vector<FieldProbe> probes = probe_field(*solved.solver, solved.solution, o.points);
+  const std::vector<BlockIntegral> integrals =
+      block_integrals(*solved.solver, solved.solution, o.integrals);
+  std::vector<LineField> lines;
+  for (const std::string& line : o.lines)
+    lines.push_back(line_field(*solved.solver, solved.solution, line, o.line_points));
 
   if (o.json) {
     nlohmann::json j = results_json(*solved.solver, solved.results);
@@ -102,6 +113,8 @@ void run(const SolveCommandOptions& o) {
     if (!o.vtk.empty()) j["vtk"] = o.vtk;
     if (!probes.empty()) j["points"] = probes_json(probes);
     if (!table.empty()) j["sweep"] = sweep_json(table);
+    if (!integrals.empty()) j["integrals"] = integrals_json(integrals);
+    if (!lines.empty()) j["lines"] = lines_json(lines);
     rheomag::app::print_json(j, 2);
     return;
   }
@@ -109,7 +122,8 @@ void run(const SolveCommandOptions& o) {
   if (!c.description.empty()) std::cout << c.description << "\n";
   std::cout << results_summary(*solved.solver, solved.results);
   if (!table.empty()) std::cout << sweep_text(table, problem.circuits.front().name);
-  std::cout << probes_text(probes);
+  std::cout << probes_text(probes) << integrals_text(integrals)
+            << lines_text(lines, problem.symmetry);
   if (!o.vtk.empty()) std::cout << "\nwrote " << o.vtk << " (open it in ParaView)\n";
 }
 
@@ -134,6 +148,15 @@ const bool solve_registered = rheomag::app::register_command([](CLI::App& root) 
                   "Also print the flux density at these points, r,z pairs in metres "
                   "(x,y for planar models), e.g. --point 0.01,0.02,0.015,0")
       ->delimiter(',');
+  cmd->add_option("--integral", o->integrals,
+                  "Also print a block integral REGION:KIND (repeatable; REGION+REGION for a body "
+                  "of several): a_dot_j, energy, coenergy, area, volume, average_b, flux, force, "
+                  "torque (docs/femm.md)");
+  cmd->add_option("--line", o->lines,
+                  "Also print B_n, B_t, |B|, H along the line x1,y1:x2,y2 [m] and the flux "
+                  "through it (repeatable)");
+  cmd->add_option("--points", o->line_points, "Points along each --line (default 101)")
+      ->check(CLI::Range(2, 100000));
   cmd->add_option("--vtk", o->vtk, "Write mesh and fields (A, B, |B|, H, mu_r) to this .vtu file")
       ->check(rheomag::app::output_file());
   cmd->add_option("--order", o->order, "Lagrange element order, 1 or 2 (default: the case's, 2)")
