@@ -9,8 +9,10 @@
 
 #include "app/command.hpp"
 #include "case/case_file.hpp"
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "magnetostatics/block_integrals.hpp"
+#include "magnetostatics/femm_ans.hpp"
 #include "magnetostatics/field_probe.hpp"
 #include "magnetostatics/line_integral.hpp"
 #include "magnetostatics/report.hpp"
@@ -29,6 +31,7 @@ struct SolveCommandOptions {
   std::optional<double> current;
   std::vector<double> sweep;
   std::string vtk;
+  std::string ans;  // FEMM solution file
   std::optional<int> order;
   std::vector<double> points;          // r1, z1, r2, z2, ... [m]
   std::vector<std::string> integrals;  // REGION:KIND
@@ -47,9 +50,9 @@ void check_current(double current, const char* option) {
 
 /// `solve --3d`: the case revolved about z with its [[feature]] cuts (magnetostatics3d).
 void run_3d(const SolveCommandOptions& o, const Case& c) {
-  if (!o.sweep.empty() || o.order || !o.integrals.empty() || !o.lines.empty())
+  if (!o.sweep.empty() || o.order || !o.integrals.empty() || !o.lines.empty() || !o.ans.empty())
     throw rheomag::InputError(
-        "--sweep, --order, --integral and --line are not available with --3d");
+        "--sweep, --order, --integral, --line and --ans are not available with --3d");
   namespace m3 = rheomag::magnetostatics3d;
   const m3::Mesher3d mesher = m3::kMesher3dNames.parse(o.mesher, "--mesher");
   m3::Solve3dOptions options =
@@ -99,6 +102,8 @@ void run(const SolveCommandOptions& o) {
   std::vector<SweepPoint> table;
   if (!o.sweep.empty()) table = solved.solver->sweep(0, o.sweep);
   if (!o.vtk.empty()) write_results_vtu(o.vtk, *solved.solver, solved.solution, solved.results);
+  if (!o.ans.empty())
+    rheomag::write_file_atomically(o.ans, femm_ans_text(*solved.solver, solved.solution));
   const std::vector<FieldProbe> probes = probe_field(*solved.solver, solved.solution, o.points);
   const std::vector<BlockIntegral> integrals =
       block_integrals(*solved.solver, solved.solution, o.integrals);
@@ -111,6 +116,7 @@ void run(const SolveCommandOptions& o) {
     j["case"] = c.name;
     j["mesh_seconds"] = solved.mesh_seconds;
     if (!o.vtk.empty()) j["vtk"] = o.vtk;
+    if (!o.ans.empty()) j["ans"] = o.ans;
     if (!probes.empty()) j["points"] = probes_json(probes);
     if (!table.empty()) j["sweep"] = sweep_json(table);
     if (!integrals.empty()) j["integrals"] = integrals_json(integrals);
@@ -125,6 +131,7 @@ void run(const SolveCommandOptions& o) {
   std::cout << probes_text(probes) << integrals_text(integrals)
             << lines_text(lines, problem.symmetry);
   if (!o.vtk.empty()) std::cout << "\nwrote " << o.vtk << " (open it in ParaView)\n";
+  if (!o.ans.empty()) std::cout << "wrote " << o.ans << " (FEMM 4.2 solution)\n";
 }
 
 const bool solve_registered = rheomag::app::register_command([](CLI::App& root) {
@@ -159,6 +166,10 @@ const bool solve_registered = rheomag::app::register_command([](CLI::App& root) 
       ->check(CLI::Range(2, 100000));
   cmd->add_option("--vtk", o->vtk, "Write mesh and fields (A, B, |B|, H, mu_r) to this .vtu file")
       ->check(rheomag::app::output_file());
+  cmd->add_option("--ans", o->ans,
+                  "Write FEMM 4.2's solution file (.ans: the model and A at the nodes, P2 "
+                  "triangles split in four) for FEMM's or xfemm's post-processor")
+      ->check(rheomag::app::output_file_in_writable_folder());
   cmd->add_option("--order", o->order, "Lagrange element order, 1 or 2 (default: the case's, 2)")
       ->check(CLI::Range(1, 2));
   cmd->add_flag("--json", o->json, "Print one JSON object (SI units) instead of the summary");
