@@ -440,6 +440,8 @@ Case load_case(const std::filesystem::path& path, const MaterialLibrary& library
     result.source = path;
     result.name = path.stem().string();
     result.problem = read_femm_file(path);
+    result.femm = true;
+    result.input.library = std::make_shared<const MaterialLibrary>(library);
     const std::filesystem::path sidecar = femm_sidecar_path(path);
     if (is_femm_sidecar(sidecar)) apply_femm_sidecar(result, sidecar, library);
     return result;

@@ -78,6 +78,10 @@ std::filesystem::path femm_sidecar_path(const std::filesystem::path& fem) {
   return out.replace_extension(".toml");
 }
 
+std::string case_document_source(const Case& c) {
+  return (c.femm ? femm_sidecar_path(c.source) : c.source).string();
+}
+
 bool is_femm_sidecar(const std::filesystem::path& path) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) return false;

@@ -14,6 +14,10 @@ namespace rheomag::cases {
 /// The sidecar path of a .fem model: the same name with the extension .toml.
 std::filesystem::path femm_sidecar_path(const std::filesystem::path& fem);
 
+/// The file a case's document (`Case::table`) was read from, for messages: the sidecar of a
+/// .fem model, else the case file itself.
+std::string case_document_source(const Case& c);
+
 /// True when `path` is a TOML file with a top-level [fem] table (a sidecar, not a case).
 bool is_femm_sidecar(const std::filesystem::path& path);
 
