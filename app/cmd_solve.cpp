@@ -9,9 +9,13 @@
 
 #include "app/command.hpp"
 #include "case/case_file.hpp"
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/memory_limit.hpp"
+#include "magnetostatics/block_integrals.hpp"
+#include "magnetostatics/femm_ans.hpp"
 #include "magnetostatics/field_probe.hpp"
+#include "magnetostatics/line_integral.hpp"
 #include "magnetostatics/report.hpp"
 #include "magnetostatics/solve_problem.hpp"
 #include "magnetostatics/sweep_report.hpp"
@@ -28,8 +32,12 @@ struct SolveCommandOptions {
   std::optional<double> current;
   std::vector<double> sweep;
   std::string vtk;
+  std::string ans;  // FEMM solution file
   std::optional<int> order;
-  std::vector<double> points;  // r1, z1, r2, z2, ... [m]
+  std::vector<double> points;          // r1, z1, r2, z2, ... [m]
+  std::vector<std::string> integrals;  // REGION:KIND
+  std::vector<std::string> lines;      // x1,y1:x2,y2
+  int line_points = 101;
   bool json = false;
   bool three_d = false;
   bool full = false;
@@ -44,8 +52,9 @@ void check_current(double current, const char* option) {
 
 /// `solve --3d`: the case revolved about z with its [[feature]] cuts (magnetostatics3d).
 void run_3d(const SolveCommandOptions& o, const Case& c) {
-  if (!o.sweep.empty() || o.order)
-    throw rheomag::InputError("--sweep and --order are not available with --3d");
+  if (!o.sweep.empty() || o.order || !o.integrals.empty() || !o.lines.empty() || !o.ans.empty())
+    throw rheomag::InputError(
+        "--sweep, --order, --integral, --line and --ans are not available with --3d");
   namespace m3 = rheomag::magnetostatics3d;
   const m3::Mesher3d mesher = m3::kMesher3dNames.parse(o.mesher, "--mesher");
   m3::Solve3dOptions options =
@@ -99,15 +108,25 @@ void run(const SolveCommandOptions& o) {
   std::vector<SweepPoint> table;
   if (!o.sweep.empty()) table = solved.solver->sweep(0, o.sweep);
   if (!o.vtk.empty()) write_results_vtu(o.vtk, *solved.solver, solved.solution, solved.results);
+  if (!o.ans.empty())
+    rheomag::write_file_atomically(o.ans, femm_ans_text(*solved.solver, solved.solution));
   const std::vector<FieldProbe> probes = probe_field(*solved.solver, solved.solution, o.points);
+  const std::vector<BlockIntegral> integrals =
+      block_integrals(*solved.solver, solved.solution, o.integrals);
+  std::vector<LineField> lines;
+  for (const std::string& line : o.lines)
+    lines.push_back(line_field(*solved.solver, solved.solution, line, o.line_points));
 
   if (o.json) {
     nlohmann::json j = results_json(*solved.solver, solved.results);
     j["case"] = c.name;
     j["mesh_seconds"] = solved.mesh_seconds;
     if (!o.vtk.empty()) j["vtk"] = o.vtk;
+    if (!o.ans.empty()) j["ans"] = o.ans;
     if (!probes.empty()) j["points"] = probes_json(probes);
     if (!table.empty()) j["sweep"] = sweep_json(table);
+    if (!integrals.empty()) j["integrals"] = integrals_json(integrals);
+    if (!lines.empty()) j["lines"] = lines_json(lines);
     rheomag::app::print_json(j, 2);
     return;
   }
@@ -115,8 +134,10 @@ void run(const SolveCommandOptions& o) {
   if (!c.description.empty()) std::cout << c.description << "\n";
   std::cout << results_summary(*solved.solver, solved.results);
   if (!table.empty()) std::cout << sweep_text(table, problem.circuits.front().name);
-  std::cout << probes_text(probes);
+  std::cout << probes_text(probes) << integrals_text(integrals)
+            << lines_text(lines, problem.symmetry);
   if (!o.vtk.empty()) std::cout << "\nwrote " << o.vtk << " (open it in ParaView)\n";
+  if (!o.ans.empty()) std::cout << "wrote " << o.ans << " (FEMM 4.2 solution)\n";
 }
 
 const bool solve_registered = rheomag::app::register_command([](CLI::App& root) {
@@ -140,17 +161,28 @@ const bool solve_registered = rheomag::app::register_command([](CLI::App& root) 
                   "Also print the flux density at these points, r,z pairs in metres "
                   "(x,y for planar models), e.g. --point 0.01,0.02,0.015,0")
       ->delimiter(',');
+  cmd->add_option("--integral", o->integrals,
+                  "Also print a block integral REGION:KIND (repeatable; REGION+REGION for a body "
+                  "of several): a_dot_j, energy, coenergy, area, volume, average_b, flux, force, "
+                  "torque (docs/femm.md)");
+  cmd->add_option("--line", o->lines,
+                  "Also print B_n, B_t, |B|, H along the line x1,y1:x2,y2 [m] and the flux "
+                  "through it (repeatable)");
+  cmd->add_option("--points", o->line_points, "Points along each --line (default 101)")
+      ->check(rheomag::app::in_domain(rheomag::Domain::between(2, 100000).whole()));
   cmd->add_option("--vtk", o->vtk, "Write mesh and fields (A, B, |B|, H, mu_r) to this .vtu file")
       ->check(rheomag::app::output_file());
+  cmd->add_option("--ans", o->ans,
+                  "Write FEMM 4.2's solution file (.ans: the model and A at the nodes, P2 "
+                  "triangles split in four) for FEMM's or xfemm's post-processor")
+      ->check(rheomag::app::output_file_in_writable_folder());
   cmd->add_option("--order", o->order, "Lagrange element order, 1 or 2 (default: the case's, 2)")
       ->check(rheomag::app::in_domain(rheomag::Domain::between(1, 2).whole()));
   cmd->add_flag("--json", o->json, "Print one JSON object (SI units) instead of the summary");
   cmd->add_flag("--3d", o->three_d,
                 "Revolve the case about z and solve in 3D with its [[feature]] cuts (lead_slot, "
                 "hole, port, eccentricity; docs/magnetostatics3d.md)");
-  cmd->add_flag("--full", o->full,
-                "With --3d: mesh the whole revolution even where a symmetry allows a wedge or "
-                "half model");
+  cmd->add_flag("--full", o->full, "With --3d: mesh the whole revolution, no wedge or half model");
   cmd->add_option("--mesher", o->mesher,
                   "With --3d: \"tetgen\" (isotropic tetrahedra, default) or \"swept\" (the "
                   "meridian mesh swept through angles graded towards the features: much faster "

@@ -1,8 +1,11 @@
 #pragma once
 // Registry of CLI subcommands: each app/cmd_*.cpp registers itself at start-up.
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <cstdlib>
+#include <filesystem>
 #include <functional>
 #include <string>
 
@@ -53,6 +56,23 @@ inline CLI::Validator in_domain(const Domain& domain) {
         return domain.violation(v);
       },
       domain.describe());
+}
+
+/// Validator of an output file that is written only after long work: output_file, plus a folder
+/// that exists and can be written to, so a typo fails at once rather than after the solve.
+inline CLI::Validator output_file_in_writable_folder() {
+  return output_file() & CLI::Validator(
+                             [](std::string& path) {
+                               std::filesystem::path folder =
+                                   std::filesystem::path(path).parent_path();
+                               if (folder.empty()) folder = ".";
+                               if (!std::filesystem::is_directory(folder))
+                                 return "folder " + folder.string() + " does not exist";
+                               if (::access(folder.c_str(), W_OK) != 0)
+                                 return "folder " + folder.string() + " is not writable";
+                               return std::string();
+                             },
+                             "");
 }
 
 /// Validator of an option whose value names a file, folder, range or choice: an empty value (a

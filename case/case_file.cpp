@@ -9,6 +9,7 @@
 
 #include "case/case_sections.hpp"
 #include "case/femm_import.hpp"
+#include "case/femm_sidecar.hpp"
 #include "case/region_pslg.hpp"
 #include "case/templates.hpp"
 #include "case/toml_section.hpp"
@@ -439,6 +440,10 @@ Case load_case(const std::filesystem::path& path, const MaterialLibrary& library
     result.source = path;
     result.name = path.stem().string();
     result.problem = read_femm_file(path);
+    result.femm = true;
+    result.input.library = std::make_shared<const MaterialLibrary>(library);
+    const std::filesystem::path sidecar = femm_sidecar_path(path);
+    if (is_femm_sidecar(sidecar)) apply_femm_sidecar(result, sidecar, library);
     return result;
   }
   if (extension == ".toml") return read_case_file(path, library);

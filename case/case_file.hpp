@@ -49,9 +49,10 @@ struct Case {
   std::filesystem::path source;   ///< the file read
   std::string fluid;              ///< MR fluid material of the gaps ("" if no gap)
   Problem problem;                ///< SI units; the background region is named "air"
-  toml::table table;              ///< the document (empty for a .fem): later layers' sections
+  toml::table table;              ///< the document (a .fem: its sidecar, else empty)
   std::string geometry_template;  ///< template name, "" for general regions or a .fem
   CaseInput input;                ///< the typed values `problem` was built from
+  bool femm = false;  ///< read from a FEMM .fem: `problem` is the model, `input` holds no geometry
 };
 
 /// Parses a case document (`source` names it in messages); InputError on any bad input. The

@@ -131,11 +131,60 @@ KeyType type_of(const toml::node& node) {
   return KeyType::text;
 }
 
+/// The key of a .fem model's circuit current: "circuit.N.current", or "circuit.current" when
+/// the model has one circuit. A .fem has no circuit document, so the path is resolved against
+/// the model's circuits.
+CaseKey femm_circuit_key(const Case& base, const std::vector<std::string>& parts,
+                         const std::string& key, const std::string& where,
+                         const std::string& label) {
+  const std::size_t n = base.problem.circuits.size();
+  std::size_t index = 0;
+  if (parts.size() == 3 && is_index(parts[1]) && parts[2] == "current") {
+    index = index_of(parts[1]);
+    if (index >= n)
+      unknown_key(base, key, where, label,
+                  "indexes circuit " + parts[1] + " of a model with " + std::to_string(n));
+  } else if (!(parts.size() == 2 && parts[1] == "current" && n == 1)) {
+    unknown_key(base, key, where, label,
+                "is not a circuit current of the .fem model (it has " + std::to_string(n) +
+                    " circuit(s); only their currents are design keys)");
+  }
+  CaseKey resolved;
+  resolved.written = key;
+  resolved.path = {"circuit", std::to_string(index), "current"};
+  resolved.target = KeyTarget::circuit_current;
+  resolved.circuit = static_cast<int>(index);
+  return resolved;
+}
+
+/// A .fem model with its MR fluid changed to `name` of `library`: every block of the old fluid
+/// (the gaps and any other fluid block) takes the new fluid's magnetic properties.
+void change_femm_fluid(Case& c, const std::string& name, const std::string& written) {
+  const MaterialLibrary& library = c.input.library ? *c.input.library : MaterialLibrary::standard();
+  if (c.fluid.empty())
+    throw InputError("key '" + written + "': " + c.source.string() +
+                     " has no fluid gaps (no sidecar .toml with a [fem] table beside it)");
+  const LibraryMaterial& m = library.get(name, "key '" + written + "'");
+  if (!m.rheology)
+    throw InputError("key '" + written + "': '" + name + "' is not an MR fluid of the library");
+  const std::string old = normalised_material_name(c.fluid);
+  for (Material& material : c.problem.materials)
+    if (!old.empty() && normalised_material_name(material.name) == old) material = m.magnetic;
+  c.fluid = m.magnetic.name;
+  c.input.fluid = name;
+}
+
 }  // namespace
 
 std::vector<std::string> value_keys(const Case& c) {
   std::vector<std::string> keys;
   collect_keys(c.table, "", keys);
+  if (c.femm) {
+    std::erase_if(keys, [](const std::string& k) { return k.rfind("fem.", 0) == 0; });
+    for (std::size_t i = 0; i < c.problem.circuits.size(); ++i)
+      keys.push_back(c.problem.circuits.size() == 1 ? "circuit.current"
+                                                    : "circuit." + std::to_string(i) + ".current");
+  }
   if (c.input.valve)
     for (const TemplateParameter& p : c.input.valve->parameters)
       keys.push_back("geometry." + p.key);
@@ -188,6 +237,18 @@ CaseKey resolve_case_key(const Case& base, const std::string& key, const std::st
   if (std::any_of(parts.begin(), parts.end(), [](const std::string& p) { return p.empty(); }))
     throw InputError(where + ": " + label + " '" + key +
                      "' has an empty component; expected a dotted path like 'geometry.gap_width'");
+  if (base.femm && parts.front() == "geometry")
+    throw InputError(where + ": " + label + " '" + key + "' cannot be applied to " +
+                     base.source.string() +
+                     ": a .fem model has no named dimensions (its geometry is FEMM's points, "
+                     "segments and arcs); edit the geometry in FEMM, or vary a TOML case's "
+                     "[geometry] template parameters");
+  if (base.femm && parts.front() == "fem")
+    throw InputError(where + ": " + label + " '" + key +
+                     "' is part of the [fem] gap list of the .fem's sidecar; which blocks are "
+                     "gaps is not a design value");
+  if (base.femm && parts.front() == "circuit")
+    return femm_circuit_key(base, parts, key, where, label);
   const toml::node* node = &base.table;
   for (std::size_t i = 0; i < parts.size();) {
     if (const toml::table* t = node->as_table()) {
@@ -263,6 +324,8 @@ KeyValue case_value(const Case& c, const CaseKey& key) {
     return std::abs(n - std::round(n)) < 1e-6 ? std::round(n) : n;
   }
   if (key.target == KeyTarget::fluid) return c.fluid;
+  if (key.target == KeyTarget::circuit_current && c.femm)
+    return c.problem.circuits.at(static_cast<std::size_t>(key.circuit)).current;
   if (const toml::node* node = node_at(c.table, key.path)) {
     if (auto i = node->value_exact<int64_t>()) return static_cast<long long>(*i);
     if (auto d = node->value_exact<double>()) return *d;
@@ -309,7 +372,7 @@ Case with(const Case& base, const std::vector<CaseEdit>& edits) {
       case KeyTarget::circuit_current:
         c.problem.circuits.at(static_cast<std::size_t>(key.circuit)).current =
             as_number(edit.value, key.written);
-        set_document_value(c.table, key.path, edit.value);
+        if (!c.femm) set_document_value(c.table, key.path, edit.value);
         break;
       case KeyTarget::wire_gauge: {
         const double n = as_number(edit.value, key.written);
@@ -323,6 +386,10 @@ Case with(const Case& base, const std::vector<CaseEdit>& edits) {
       }
       case KeyTarget::fluid: {
         const std::string& name = as_text(edit.value, key.written);
+        if (c.femm) {
+          change_femm_fluid(c, name, key.written);
+          break;
+        }
         c.input.fluid = name;
         set_document_value(c.table, {"case", "fluid"}, name);
         if (c.input.valve) {
@@ -333,10 +400,11 @@ Case with(const Case& base, const std::vector<CaseEdit>& edits) {
       }
       case KeyTarget::document:
         set_document_value(c.table, key.path, edit.value);
-        reread = true;
+        reread = !c.femm;  // a .fem's document is its sidecar: only later layers read it
         break;
     }
   }
+  if (c.femm) return c;
   if (reread) return parse_case(std::move(c.table), c.source.string(), *base.input.library);
   if (!only_currents(edits)) build_case(c);
   return c;

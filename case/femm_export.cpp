@@ -66,8 +66,10 @@ bool on_segment(const mesh::Pslg& g, mesh::Point p, mesh::Point q, double tolera
 }
 
 /// A label for each seed, plus one per further connected area of the default region, with the
-/// mean edge length of each region in `m` as the size of regions without a mesh size.
-std::vector<Label> block_labels(const Problem& problem, const mesh::Mesh& m) {
+/// mean edge length of each region in `m` as the size of regions without a mesh size; the index
+/// into the returned labels of every triangle of `m` goes to `triangle_label`.
+std::vector<Label> block_labels(const Problem& problem, const mesh::Mesh& m,
+                                std::vector<int>& triangle_label) {
   const mesh::Pslg& g = problem.geometry;
   const int regions = static_cast<int>(g.regions.size());
   std::vector<double> edge_sum(regions, 0.0);
@@ -96,9 +98,14 @@ std::vector<Label> block_labels(const Problem& problem, const mesh::Mesh& m) {
     if (g.regions[region].mesh_size > 0.0) return g.regions[region].mesh_size;
     return edge_count[region] > 0 ? edge_sum[region] / edge_count[region] : 0.0;
   };
+  std::vector<int> label_of_region(regions, -1);
   for (int r = 0; r < regions; ++r) {
-    if (r != g.default_region) labels.push_back({g.regions[r].seed, r, size_of(r)});
+    if (r == g.default_region) continue;
+    label_of_region[r] = static_cast<int>(labels.size());
+    labels.push_back({g.regions[r].seed, r, size_of(r)});
   }
+  triangle_label.assign(triangles, -1);
+  for (int e = 0; e < triangles; ++e) triangle_label[e] = label_of_region[m.region[e]];
   if (g.default_region < 0) return labels;
   // One label per connected area of the default region, at the centroid of its largest
   // triangle (strictly inside the area).
@@ -111,18 +118,32 @@ std::vector<Label> block_labels(const Problem& problem, const mesh::Mesh& m) {
     auto& best = largest[root(parent, e)];
     if (area > best.first) best = {area, e};
   }
+  std::map<int, int> label_of_component;
   for (const auto& [component, best] : largest) {
     const auto& t = m.triangles[best.second];
     const mesh::Point centroid =
         mesh::triangle_centroid(m.nodes[t[0]], m.nodes[t[1]], m.nodes[t[2]]);
+    label_of_component[component] = static_cast<int>(labels.size());
     labels.push_back({centroid, g.default_region, size_of(g.default_region)});
   }
+  for (int e = 0; e < triangles; ++e)
+    if (m.region[e] == g.default_region) triangle_label[e] = label_of_component[root(parent, e)];
   return labels;
 }
 
 }  // namespace
 
 std::string write_femm(const Problem& problem, const mesh::MeshOptions& mesh_options) {
+  if (problem.outer != OuterBoundary::none)
+    throw InputError(problem.geometry.source +
+                     ": the outer boundary must be closed before a .fem is written");
+  mesh::MeshOptions options = mesh_options;
+  options.order = 1;
+  options.min_gap_elements = problem.min_gap_elements;
+  return write_femm_for_mesh(problem, mesh::generate_mesh(problem.geometry, options)).text;
+}
+
+FemmModel write_femm_for_mesh(const Problem& problem, const mesh::Mesh& m) {
   const mesh::Pslg& g = problem.geometry;
   if (problem.outer != OuterBoundary::none)
     throw InputError(g.source + ": the outer boundary must be closed before a .fem is written");
@@ -154,10 +175,8 @@ std::string write_femm(const Problem& problem, const mesh::MeshOptions& mesh_opt
       throw InputError(g.source + ": boundary '" + b.name +
                        "' is (anti)periodic; export writes edges as straight pieces, which "
                        "FEMM cannot pair, so (anti)periodic models are not exported");
-  mesh::MeshOptions options = mesh_options;
-  options.order = 1;
-  options.min_gap_elements = problem.min_gap_elements;
-  const std::vector<Label> labels = block_labels(problem, mesh::generate_mesh(g, options));
+  std::vector<int> triangle_label;
+  const std::vector<Label> labels = block_labels(problem, m, triangle_label);
 
   // Length unit of the file: metres, or the unit of the magnet direction expressions (FEMM
   // evaluates them in the file's unit), which must then be one FEMM knows and the same for all.
@@ -255,8 +274,18 @@ std::string write_femm(const Problem& problem, const mesh::MeshOptions& mesh_opt
   for (const mesh::RegionSeed* h : holes)
     out << num(h->seed.r / u) << "\t" << num(h->seed.z / u) << "\t0\n";
   std::vector<const Label*> meshed;
-  for (const Label& l : labels)
-    if (!g.regions[l.region].hole) meshed.push_back(&l);
+  std::vector<int> written_index(labels.size(), -1);
+  for (std::size_t k = 0; k < labels.size(); ++k) {
+    if (g.regions[labels[k].region].hole) continue;
+    written_index[k] = static_cast<int>(meshed.size());
+    meshed.push_back(&labels[k]);
+  }
+  FemmModel model;
+  model.length_unit = u;
+  model.label_region.reserve(meshed.size());
+  for (const Label* l : meshed) model.label_region.push_back(l->region);
+  model.triangle_label.reserve(triangle_label.size());
+  for (int k : triangle_label) model.triangle_label.push_back(k < 0 ? -1 : written_index[k]);
   out << "[NumBlockLabels] = " << meshed.size() << "\n";
   for (const Label* l : meshed) {
     const RegionData& d = problem.regions[l->region];
@@ -269,7 +298,8 @@ std::string write_femm(const Problem& problem, const mesh::MeshOptions& mesh_opt
     if (!m.expression.empty()) out << "\t\"" << m.expression << "\"";
     out << "\n";
   }
-  return out.str();
+  model.text = out.str();
+  return model;
 }
 
 }  // namespace rheomag::cases

@@ -4,6 +4,7 @@
 // label per area with its material, circuit, turns, magnet direction and mesh size.
 
 #include <string>
+#include <vector>
 
 #include "case/problem.hpp"
 #include "mesh/mesher.hpp"
@@ -19,6 +20,18 @@ namespace rheomag::cases {
 /// as rheomag (fluid gaps included). InputError for what a .fem cannot hold (non-integer turns)
 /// and for a problem whose outer boundary is not closed yet.
 std::string write_femm(const Problem& problem, const mesh::MeshOptions& mesh_options);
+
+/// A .fem text with what a solution file needs to refer to it.
+struct FemmModel {
+  std::string text;                 ///< the .fem text
+  double length_unit = 1.0;         ///< the file's length unit [m]
+  std::vector<int> label_region;    ///< region (index into Problem::regions) of each block label
+  std::vector<int> triangle_label;  ///< written block label of each triangle of the mesh given
+};
+
+/// write_femm with the labels found on `mesh` (a mesh of the closed `problem`, order 1 or 2),
+/// returning also the block label of every triangle of `mesh` (FEMM's element `lbl`).
+FemmModel write_femm_for_mesh(const Problem& problem, const mesh::Mesh& mesh);
 
 /// Inverse of femm_mesh_size_to_edge: the FEMM block-label size for a target edge length.
 double edge_to_femm_mesh_size(double edge);

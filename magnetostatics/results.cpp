@@ -184,17 +184,26 @@ GapResult gap_result(const MagnetostaticSolver& solver, const Solution& solution
 
 }  // namespace
 
-bool flux_density_at(const MagnetostaticSolver& solver, const Solution& solution, mesh::Point p,
-                     int region, std::array<double, 2>& b) {
-  const mesh::Mesh& m = solver.mesh();
+std::optional<MeshLocation> locate_in_mesh(const mesh::Mesh& m, mesh::Point p, int region) {
   for (int e = 0; e < static_cast<int>(m.triangles.size()); ++e) {
     if (region >= 0 && m.region[e] != region) continue;
     double xi, eta;
-    if (!locate(vertices(m, e), p, xi, eta)) continue;
-    b = b_at(solver, solution, e, xi, eta);
-    return true;
+    if (locate(vertices(m, e), p, xi, eta)) return MeshLocation{e, xi, eta};
   }
-  return false;
+  return std::nullopt;
+}
+
+std::array<double, 2> flux_density_in(const MagnetostaticSolver& solver, const Solution& solution,
+                                      const MeshLocation& at) {
+  return b_at(solver, solution, at.element, at.xi, at.eta);
+}
+
+bool flux_density_at(const MagnetostaticSolver& solver, const Solution& solution, mesh::Point p,
+                     int region, std::array<double, 2>& b) {
+  const std::optional<MeshLocation> at = locate_in_mesh(solver.mesh(), p, region);
+  if (!at) return false;
+  b = flux_density_in(solver, solution, *at);
+  return true;
 }
 
 Results compute_results(const MagnetostaticSolver& solver, const Solution& solution) {

@@ -2,6 +2,7 @@
 // Post-processing of a magnetostatic solution: fields, fluid-gap flux densities, circuit
 // quantities (flux linkage, inductances) and energies.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,20 @@ inline constexpr int kGapLineSamples = 201;
 
 /// Evaluates all results of `solution` (computed by `solver`).
 Results compute_results(const MagnetostaticSolver& solver, const Solution& solution);
+
+/// A point of the mesh: its triangle and reference coordinates (xi, eta) there.
+struct MeshLocation {
+  int element = -1;
+  double xi = 0.0, eta = 0.0;
+};
+
+/// The first triangle of region `region` (-1: any region) containing `p` (boundary included),
+/// by a linear search; nothing if no such triangle contains it.
+std::optional<MeshLocation> locate_in_mesh(const mesh::Mesh& m, mesh::Point p, int region = -1);
+
+/// Flux density (B_r, B_z) [T] at a located point.
+std::array<double, 2> flux_density_in(const MagnetostaticSolver& solver, const Solution& solution,
+                                      const MeshLocation& at);
 
 /// Flux density (B_r, B_z) at a point of region `region` (-1: any region) [T], by point location;
 /// false if the point is in no such triangle.

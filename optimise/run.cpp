@@ -8,8 +8,11 @@
 #include <sstream>
 #include <string>
 
+#include "case/femm_export.hpp"
+#include "case/femm_sidecar.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "magnetostatics/domain.hpp"
 #include "magnetostatics/report.hpp"
 #include "optimise/continuous.hpp"
 
@@ -173,15 +176,23 @@ OptimiseResult run_optimisation(const cases::Case& c, const OptimiseOptions& opt
 
   std::filesystem::create_directories(options.out_dir);
   const std::string stem = c.name.empty() ? c.source.stem().string() : c.name;
-  result.case_file = options.out_dir / (stem + "_optimal.toml");
+  // A .fem base gives a .fem design (and its sidecar): a TOML case cannot hold a FEMM model.
+  result.case_file = options.out_dir / (stem + (c.femm ? "_optimal.fem" : "_optimal.toml"));
   result.history_file = options.out_dir / (stem + "_history.csv");
   result.vtu_file = options.out_dir / (stem + "_optimal.vtu");
   std::string header = "# Optimal design of " + c.source.filename().string() +
                        " by rheomag optimise (" + result.status + ")\n";
   if (!chosen.choice.empty()) header += "# Chosen: " + choice_text(chosen.choice) + "\n";
-  write_file_atomically(
-      result.case_file,
-      header + cases::case_file_text(best_evaluator->case_at(result.optimal.x)) + "\n");
+  const cases::Case best = best_evaluator->case_at(result.optimal.x);
+  if (c.femm) {
+    const cases::Problem closed = magnetostatics::close_domain(best.problem);
+    write_file_atomically(result.case_file, cases::write_femm(closed, {}));
+    const std::string sidecar = cases::femm_sidecar_text(best, closed);
+    if (!sidecar.empty())
+      write_file_atomically(cases::femm_sidecar_path(result.case_file), header + sidecar);
+  } else {
+    write_file_atomically(result.case_file, header + cases::case_file_text(best) + "\n");
+  }
   const auto& field = best_evaluator->last_field();
   magnetostatics::write_results_vtu(result.vtu_file.string(), *field.solver, field.solution,
                                     field.results);

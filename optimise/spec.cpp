@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "case/femm_sidecar.hpp"
 #include "case/material_library.hpp"
 #include "case/toml_section.hpp"
 #include "core/error.hpp"
@@ -152,7 +153,7 @@ void read_choices(const cases::Case& c, const cases::TomlSection& section, Optim
 }  // namespace
 
 OptimiseSpec read_optimise_spec(const cases::Case& c) {
-  const std::string file = c.source.string();
+  const std::string file = cases::case_document_source(c);
   const cases::TomlSection top(c.table, "", file);
   auto section = top.table("optimise");
   if (!section)

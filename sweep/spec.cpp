@@ -153,7 +153,7 @@ SweepSpec parse_sweep(std::string_view text, const std::filesystem::path& source
     sweep->fail("base", "base case '" + spec.base_case.string() + "' is not a readable file");
   }
   spec.base = cases::load_case(spec.base_case);
-  if (spec.base.table.empty()) {
+  if (spec.base.table.empty() && !spec.base.femm) {
     sweep->fail("base", "the base case must be a TOML case file (its keys are what is swept)");
   }
   const std::string method = sweep->string("method").value_or("factorial");

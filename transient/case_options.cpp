@@ -1,5 +1,6 @@
 #include "transient/case_options.hpp"
 
+#include "case/femm_sidecar.hpp"
 #include "case/toml_section.hpp"
 #include "core/error.hpp"
 
@@ -7,7 +8,7 @@ namespace rheomag::transient {
 
 TransientCaseOptions read_transient_case(const cases::Case& c) {
   TransientCaseOptions out;
-  const cases::TomlSection top(c.table, "", c.source.string());
+  const cases::TomlSection top(c.table, "", cases::case_document_source(c));
   const auto section = top.table("transient");
   if (!section) return out;
   section->allow_only({"resistance", "region"});

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <string>
 
+#include "case/femm_sidecar.hpp"
 #include "case/toml_section.hpp"
 #include "core/error.hpp"
 #include "valve/field_solve.hpp"
@@ -16,7 +17,7 @@ namespace rheomag::valve {
 
 BrakeOptions read_brake_options(const cases::Case& c) {
   BrakeOptions o;
-  const cases::TomlSection top(c.table, "", c.source.string());
+  const cases::TomlSection top(c.table, "", cases::case_document_source(c));
   const auto brake = top.table("brake");
   if (!brake) return o;
   brake->allow_only({"speed", "inner_radius"});

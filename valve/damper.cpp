@@ -15,6 +15,7 @@
 #include <numbers>
 #include <string>
 
+#include "case/femm_sidecar.hpp"
 #include "case/toml_section.hpp"
 #include "core/error.hpp"
 #include "valve/field_solve.hpp"
@@ -29,7 +30,7 @@ constexpr double kPi = std::numbers::pi;
 }  // namespace
 
 DamperOptions read_damper_options(const cases::Case& c) {
-  const cases::TomlSection top(c.table, "", c.source.string());
+  const cases::TomlSection top(c.table, "", cases::case_document_source(c));
   const auto damper = top.table("damper");
   if (!damper)
     throw InputError(c.source.string() +

@@ -2,6 +2,7 @@
 
 #include "valve/valve_options.hpp"
 
+#include "case/femm_sidecar.hpp"
 #include "case/toml_section.hpp"
 #include "core/error.hpp"
 #include "valve/coil.hpp"
@@ -10,7 +11,7 @@ namespace rheomag::valve {
 
 ValveOptions read_valve_options(const cases::Case& c) {
   ValveOptions options;
-  const cases::TomlSection top(c.table, "", c.source.string());
+  const cases::TomlSection top(c.table, "", cases::case_document_source(c));
   // A template case winding its coil from [geometry] wire + fill_factor has its wire there.
   options.wire = c.input.winding.wire;
   options.wire_diameter = c.input.winding.wire_diameter;
