@@ -30,6 +30,52 @@ FamilyMember evaluate_family_member(const lumped::Recording& rec, const GreyboxF
   return m;
 }
 
+/// Refuses a training recording given twice: the same file under two names (on disk), or the
+/// same samples under two names.
+static void refuse_duplicate_recordings(const std::vector<lumped::Recording>& training) {
+  // One test counted twice shrinks the between-recording standard errors (23 -> 13.2 in issue
+  // 36): the same file under two names, or the same samples under two files, is refused.
+  for (std::size_t j = 1; j < training.size(); ++j)
+    for (std::size_t i = 0; i < j; ++i) {
+      const lumped::Recording &a = training[i], &b = training[j];
+      std::error_code ec_a, ec_b;
+      const auto real_a = std::filesystem::weakly_canonical(a.csv_path, ec_a);
+      const auto real_b = std::filesystem::weakly_canonical(b.csv_path, ec_b);
+      const bool same_file = std::filesystem::is_regular_file(a.csv_path, ec_a) &&
+                             std::filesystem::is_regular_file(b.csv_path, ec_b) && real_a == real_b;
+      if (same_file || (a.t == b.t && a.columns == b.columns))
+        throw InputError(b.csv_path + ": " +
+                         (same_file
+                              ? "the same file as " + a.csv_path + " (" + real_a.string() + ")"
+                              : "the same samples as " + a.csv_path + " (every column equal)") +
+                         "; expected each training recording once (a duplicate counts one test "
+                         "twice and understates the spread between recordings)");
+    }
+}
+
+/// Refuses a current-dependent model on training recordings that all have one field level.
+static void check_field_levels(const std::vector<lumped::Recording>& training,
+                               const std::string& model) {
+  const lumped::Recording& first = training.front();
+  lumped::PhenoKind kind;
+  if (!lumped::parse_pheno_kind(model, kind)) return;  // fit_greybox_family names the unknown model
+  const lumped::GreyboxSetup setup = lumped::greybox_setup_for(first, kind);
+  if (setup.field_column.empty()) return;  // no field input: the model is not current-dependent
+  // The field terms are identifiable only if the field takes two or more values in the family.
+  double lo = 1e300, hi = -1e300;
+  for (const lumped::Recording& r : training)
+    for (double u : r.column(setup.field_column)) {
+      lo = std::min(lo, u);
+      hi = std::max(hi, u);
+    }
+  if (!(hi - lo > 1e-3 * std::max({std::abs(lo), std::abs(hi), 1e-12})))
+    throw InputError("fit-family --model " + model + ": the '" + setup.field_column +
+                     "' column is " + std::to_string(lo) + " in every training recording (" +
+                     first.csv_path +
+                     ", ...); the model's field terms need recordings at two or "
+                     "more field levels");
+}
+
 void check_family(const std::vector<lumped::Recording>& training,
                   const std::vector<lumped::Recording>& prediction, const std::string& model) {
   if (training.empty()) throw InputError("fit-family: no training recordings given");
@@ -49,40 +95,8 @@ void check_family(const std::vector<lumped::Recording>& training,
   };
   for (const lumped::Recording& r : training) same_kind(r);
   for (const lumped::Recording& r : prediction) same_kind(r);
-  // One test counted twice shrinks the between-recording standard errors (23 -> 13.2 in issue
-  // 36): the same file under two names, or the same samples under two files, is refused.
-  for (std::size_t j = 1; j < training.size(); ++j)
-    for (std::size_t i = 0; i < j; ++i) {
-      const lumped::Recording &a = training[i], &b = training[j];
-      std::error_code ec_a, ec_b;
-      const auto real_a = std::filesystem::weakly_canonical(a.csv_path, ec_a);
-      const auto real_b = std::filesystem::weakly_canonical(b.csv_path, ec_b);
-      const bool same_file = !a.csv_path.empty() && !ec_a && !ec_b && real_a == real_b;
-      if (same_file || (a.t == b.t && a.columns == b.columns))
-        throw InputError(b.csv_path + ": " +
-                         (same_file
-                              ? "the same file as " + a.csv_path + " (" + real_a.string() + ")"
-                              : "the same samples as " + a.csv_path + " (every column equal)") +
-                         "; expected each training recording once (a duplicate counts one test "
-                         "twice and understates the spread between recordings)");
-    }
-  lumped::PhenoKind kind;
-  if (!lumped::parse_pheno_kind(model, kind)) return;  // fit_greybox_family names the unknown model
-  const lumped::GreyboxSetup setup = lumped::greybox_setup_for(first, kind);
-  if (setup.field_column.empty()) return;  // no field input: the model is not current-dependent
-  // The field terms are identifiable only if the field takes two or more values in the family.
-  double lo = 1e300, hi = -1e300;
-  for (const lumped::Recording& r : training)
-    for (double u : r.column(setup.field_column)) {
-      lo = std::min(lo, u);
-      hi = std::max(hi, u);
-    }
-  if (!(hi - lo > 1e-3 * std::max({std::abs(lo), std::abs(hi), 1e-12})))
-    throw InputError("fit-family --model " + model + ": the '" + setup.field_column +
-                     "' column is " + std::to_string(lo) + " in every training recording (" +
-                     first.csv_path +
-                     ", ...); the model's field terms need recordings at two or "
-                     "more field levels");
+  check_field_levels(training, model);  // the model's own requirement is named first
+  refuse_duplicate_recordings(training);
 }
 
 lumped::Recording join_recordings(const std::vector<lumped::Recording>& recs, int decimation) {

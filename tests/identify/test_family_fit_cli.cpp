@@ -41,15 +41,16 @@ CliRun run_fit_family(const std::string& args) {
 /// A noise-free Bingham damper recording (2 cycles of a 20 mm sine at 0.5 Hz, 200 samples per
 /// cycle) at `current`; `kind` and `drive_current` vary the sidecar for the bad-input cases.
 std::string write_recording_at(const fs::path& dir, const std::string& name, double current,
-                               RigKind kind = RigKind::damper, bool drive_current = true) {
+                               RigKind kind = RigKind::damper, bool drive_current = true,
+                               double stroke = 0.02) {
   constexpr double kPi = 3.14159265358979323846;
   Recording rec;
   std::vector<double> x, v;
   for (int k = 0; k < 400; ++k) {
     const double t = k / 200.0 / 0.5;
     rec.t.push_back(t);
-    x.push_back(0.02 * std::sin(kPi * t));
-    v.push_back(0.02 * kPi * std::cos(kPi * t));
+    x.push_back(stroke * std::sin(kPi * t));
+    v.push_back(stroke * kPi * std::cos(kPi * t));
   }
   rec.columns["displacement"] = x;
   rec.columns["velocity"] = v;
@@ -138,7 +139,8 @@ TEST(FitFamilyCli, CrossValidationPredictsEachHeldOutRecording) {
     EXPECT_EQ(j["held_out"][k]["file"], j["train"][k]["file"]);
     EXPECT_GE(j["held_out"][k]["fit_percent"].get<double>(), 99.0) << j["held_out"][k];
   }
-  const std::string d = write_recording_at(dir, "d.csv", 0.0);
+  // d: a second test at a's current (another stroke, so not a duplicate of a).
+  const std::string d = write_recording_at(dir, "d.csv", 0.0, RigKind::damper, true, 0.03);
   const CliRun broken =
       run_fit_family(a + " " + d + " " + c + " --model bingham --cross-validate --quiet");
   EXPECT_EQ(broken.code, 2);
