@@ -51,6 +51,7 @@ OptimiseEvaluator::OptimiseEvaluator(cases::Case base, OptimiseSpec spec)
     const cases::CaseKey& key = spec_.variables[i].target;
     if (key.target == cases::KeyTarget::wire_gauge) gauge_index_ = static_cast<int>(i);
     if (!key.path.empty() && key.path.front() == "valve") valve_varies_ = true;
+    if (key.target == cases::KeyTarget::circuit_current && key.circuit == 0) current_varies_ = true;
   }
   fluid_ = valve::case_fluid(base_);
   if (base_.problem.circuits.empty()) throw InputError(where + ": the case has no coil circuit");
@@ -133,7 +134,9 @@ design::Quantities OptimiseEvaluator::evaluate(const std::vector<double>& x) {
   }
   std::vector<double> currents(c.problem.circuits.size(), 0.0);
   for (std::size_t k = 1; k < currents.size(); ++k) currents[k] = c.problem.circuits[k].current;
-  currents[0] = spec_.current;
+  // The on-state current: [optimise] current, or the design's own when it is a variable.
+  const double on_current = current_varies_ ? c.problem.circuits[0].current : spec_.current;
+  currents[0] = on_current;
   const design::EvaluatedField& field = designs_.solve(c, currents, false, relax);
   const magnetostatics::MagnetostaticSolver& solver = *field.solver;
   const magnetostatics::Results& results = field.results;
@@ -220,7 +223,7 @@ design::Quantities OptimiseEvaluator::evaluate(const std::vector<double>& x) {
 
   const valve::CoilSpec coil = valve::coil_spec(solver, valve);
   if (coil.wire_diameter > 0.0) {
-    const auto p = valve::coil_properties(coil, spec_.current, inductance);
+    const auto p = valve::coil_properties(coil, on_current, inductance);
     q[design::Quantity::resistance] = p.resistance;
     q[design::Quantity::time_constant] = p.time_constant;
     q[design::Quantity::power] = p.power;

@@ -53,10 +53,11 @@ class OptimiseEvaluator {
   cases::Case base_;
   OptimiseSpec spec_;
   fluid::Fluid fluid_;
-  valve::ValveOptions valve_;   ///< the base case's [valve] options (re-read if a variable is one)
-  bool valve_varies_ = false;   ///< a design variable is a [valve] key
-  int gauge_index_ = -1;        ///< index of the wire_gauge variable (-1: none)
-  bool exact_winding_ = false;  ///< whole turns as the case derives them (no relaxation)
+  valve::ValveOptions valve_;    ///< the base case's [valve] options (re-read if a variable is one)
+  bool valve_varies_ = false;    ///< a design variable is a [valve] key
+  bool current_varies_ = false;  ///< a design variable is the first circuit's (on-state) current
+  int gauge_index_ = -1;         ///< index of the wire_gauge variable (-1: none)
+  bool exact_winding_ = false;   ///< whole turns as the case derives them (no relaxation)
   std::optional<valve::DamperOptions> damper_;  ///< [damper] of a damper case ([optimise] velocity)
   std::optional<valve::BrakeOptions> brake_;    ///< [brake] of a brake case ([optimise] speed)
   std::vector<double> region_density_;  ///< per region of the base case [kg/m^3] (mass only)
