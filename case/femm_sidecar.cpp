@@ -126,6 +126,7 @@ void apply_femm_sidecar(Case& c, const std::filesystem::path& path,
                    "' is not an MR fluid of the material library (a gap's block names its fluid)");
     }
     if (fluid.empty()) fluid = m->magnetic.name;
+    problem.materials[material].fluid = true;  // every block of this material is fluid
     if (normalised_material_name(m->magnetic.name) != normalised_material_name(fluid)) {
       gap.fail("label", label + " holds '" + m->magnetic.name + "'; expected '" + fluid +
                             "': one fluid fills every gap");

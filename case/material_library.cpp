@@ -55,6 +55,7 @@ LibraryMaterial read_material(const TomlSection& section) {
     m.mu_r = section.positive_or("mu_r", 1.0);
   }
   if (auto rheology = section.table("rheology")) result.rheology = rheology->raw();
+  m.fluid = result.rheology.has_value();
   return result;
 }
 
@@ -75,6 +76,7 @@ MaterialLibrary MaterialLibrary::load(const std::filesystem::path& directory) {
     if (!material) top.fail("material", "missing [material] table");
     LibraryMaterial entry = read_material(*material);
     if (auto rheology = top.table("rheology")) entry.rheology = rheology->raw();
+    entry.magnetic.fluid = entry.rheology.has_value();
     entry.file = path.string();
     if (library.find(entry.magnetic.name))
       throw InputError(material->where("name") + ": material '" + entry.magnetic.name +

@@ -26,6 +26,7 @@ struct Material {
   std::optional<double> conductivity;  ///< electrical conductivity [S/m]; empty: not stated
   std::string source;                  ///< where the data come from
   double coercivity = 0.0;             ///< permanent magnet: H_c [A/m], B = mu0 mu_r (H + H_c m)
+  bool fluid = false;  ///< an MR fluid of the materials library: a medium a body moves through
 };
 
 /// A series circuit driving one or more coil regions.

@@ -107,6 +107,15 @@ BlockIntegral evaluate(const MagnetostaticSolver& solver, const Solution& soluti
       out.unit = "N", out.femm = "mo_blockintegral(19)";
       out.components = {{"f_z", f.force[1]}};
     }
+    if (!f.junctions.empty()) {
+      out.warning = format_text(
+          "the body meets an interface of two media (air, fluids) at %zu point(s), first "
+          "at (%.6g, %.6g) m, where the elements are up to %.3g mm: the %s there carries an error "
+          "of the order of that size (docs/femm.md); a smaller mesh_size for the regions there "
+          "reduces it",
+          f.junctions.size(), f.junctions[0].r, f.junctions[0].z, 1e3 * f.junction_size,
+          out.kind == IntegralKind::torque ? "torque" : "force");
+    }
     return out;
   }
   const RegionSums s = region_sums(solver, solution, regions);
@@ -169,6 +178,7 @@ nlohmann::json integrals_json(const std::vector<BlockIntegral>& integrals) {
                    {"unit", integral.unit},
                    {"femm", integral.femm},
                    {"values", values}});
+    if (!integral.warning.empty()) out.back()["warning"] = integral.warning;
   }
   return out;
 }
@@ -185,6 +195,7 @@ std::string integrals_text(const std::vector<BlockIntegral>& integrals) {
                          integral.unit.c_str());
     }
     out += "  [FEMM " + integral.femm + "]\n";
+    if (!integral.warning.empty()) out += "  warning: " + integral.warning + "\n";
   }
   return out;
 }

@@ -52,6 +52,7 @@ struct BlockIntegral {
   std::string unit;                           ///< SI unit of every component
   std::string femm;                           ///< FEMM's Lua call(s) giving the same number
   std::vector<IntegralComponent> components;  ///< one value, or the vector's components
+  std::string warning;  ///< what limits the accuracy of this value ("" = nothing known)
 };
 
 /// Evaluates `requests`, each "REGION:KIND" or "REGION+REGION...:KIND" (regions by name, as the

@@ -6,7 +6,6 @@
 #include <string>
 #include <unordered_map>
 
-#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "mesh/edge_key.hpp"
 #include "mesh/triangle.hpp"
@@ -53,6 +52,37 @@ std::vector<char> mesh_boundary_nodes(const mesh::Mesh& m) {
   return boundary;
 }
 
+/// True when region `region` carries no source: no coil, no fixed current density, no magnet.
+bool source_free(const cases::Problem& problem, int region) {
+  const cases::RegionData& data = problem.regions[region];
+  if (data.circuit >= 0 || data.current_density != 0.0 || data.material < 0) return false;
+  return problem.materials[data.material].coercivity == 0.0;
+}
+
+/// The medium of `region` a body can move through: -1 for free space, the material index for a
+/// source-free fluid, kSolid for anything else.
+constexpr int kSolid = -2;
+int medium_of(const cases::Problem& problem, int region) {
+  if (is_air_region(problem, region)) return -1;
+  const int material = problem.regions[region].material;
+  return source_free(problem, region) && problem.materials[material].fluid ? material : kSolid;
+}
+
+/// Fills out.junctions with the points of `junctions` and out.junction_size with the longest
+/// triangle edge at them.
+void junction_report(const mesh::Mesh& m, const std::vector<int>& junctions,
+                     StressTensorForce& out) {
+  std::vector<char> at(m.nodes.size(), 0);
+  for (int node : junctions) at[node] = 1, out.junctions.push_back(m.nodes[node]);
+  for (const auto& t : m.triangles) {
+    if (!at[t[0]] && !at[t[1]] && !at[t[2]]) continue;
+    for (int i = 0; i < 3; ++i) {
+      const mesh::Point a = m.nodes[t[i]], b = m.nodes[t[(i + 1) % 3]];
+      out.junction_size = std::max(out.junction_size, std::hypot(a.r - b.r, a.z - b.z));
+    }
+  }
+}
+
 }  // namespace
 
 bool is_air_region(const cases::Problem& problem, int region) {
@@ -63,7 +93,7 @@ bool is_air_region(const cases::Problem& problem, int region) {
 }
 
 Eigen::VectorXd stress_tensor_mask(const MagnetostaticSolver& solver,
-                                   const std::vector<int>& selected) {
+                                   const std::vector<int>& selected, std::vector<int>* junctions) {
   const mesh::Mesh& m = solver.mesh();
   const cases::Problem& problem = solver.problem();
   if (selected.empty()) throw InputError("force/torque: no region selected");
@@ -71,7 +101,7 @@ Eigen::VectorXd stress_tensor_mask(const MagnetostaticSolver& solver,
   std::vector<char> chosen(problem.regions.size(), 0);
   for (int region : selected) chosen[region] = 1;
 
-  // Prescribed values: outer boundary 0 (off the axis), selected 1, other non-air regions 0.
+  // Prescribed values: outer boundary 0 (off the axis), selected 1.
   std::vector<double> fixed(m.nodes.size(), kUnset);
   const std::vector<char> boundary = mesh_boundary_nodes(m);
   double extent = 0.0;
@@ -86,19 +116,35 @@ Eigen::VectorXd stress_tensor_mask(const MagnetostaticSolver& solver,
     for (int i = 0; i < k; ++i)
       fixed[m.triangles[e][i]] = 1.0, owner[m.triangles[e][i]] = m.region[e];
   }
+  // Every other region is a solid (0 on its nodes; a body touching one is refused) or a medium
+  // (air or a fluid): the mask is harmonic in each medium, and the interfaces between two media
+  // stay put (0) except where they meet the body.
+  std::vector<int> medium_at(m.nodes.size(), kSolid - 1);  // first medium seen at each node
+  std::vector<char> interface(m.nodes.size(), 0);
   for (std::size_t e = 0; e < m.triangles.size(); ++e) {
     const int region = m.region[e];
-    if (chosen[region] || is_air_region(problem, region)) continue;
+    if (chosen[region]) continue;
+    const int medium = medium_of(problem, region);
     for (int i = 0; i < k; ++i) {
       const int node = m.triangles[e][i];
+      if (medium != kSolid) {
+        if (medium_at[node] == kSolid - 1) medium_at[node] = medium;
+        if (medium_at[node] != medium) interface[node] = 1;
+        continue;
+      }
       if (owner[node] >= 0) {
         throw InputError("force/torque on region '" + problem.geometry.regions[owner[node]].name +
                          "': it touches region '" + problem.geometry.regions[region].name +
-                         "', which is not air; the stress tensor needs a layer of air around "
-                         "the selected regions (select both, or add an air region between)");
+                         "', which is neither air nor a fluid; the stress tensor needs a layer of "
+                         "air or fluid around the selected regions (select both, or add an air "
+                         "region between)");
       }
       fixed[node] = 0.0;
     }
+  }
+  for (std::size_t i = 0; i < m.nodes.size(); ++i) {
+    if (interface[i] && owner[i] < 0) fixed[i] = 0.0;
+    if (interface[i] && owner[i] >= 0 && junctions) junctions->push_back(static_cast<int>(i));
   }
 
   // Laplace's equation for the free nodes: sum_e integral grad N_i . grad N_j dA w_j = 0.
@@ -152,7 +198,8 @@ Eigen::VectorXd stress_tensor_mask(const MagnetostaticSolver& solver,
 
 StressTensorForce stress_tensor_force(const MagnetostaticSolver& solver, const Solution& solution,
                                       const std::vector<int>& selected) {
-  const Eigen::VectorXd w = stress_tensor_mask(solver, selected);
+  std::vector<int> junctions;
+  const Eigen::VectorXd w = stress_tensor_mask(solver, selected, &junctions);
   const mesh::Mesh& m = solver.mesh();
   const bool axisymmetric = solver.problem().symmetry == cases::Symmetry::axisymmetric;
   const int k = m.nodes_per_triangle();
@@ -173,11 +220,14 @@ StressTensorForce stress_tensor_force(const MagnetostaticSolver& solver, const S
       double gr = 0.0, gz = 0.0;
       for (int i = 0; i < k; ++i) gr += w[t[i]] * d_r[i], gz += w[t[i]] * d_z[i];
       const auto b = element_b(q, p, a_local);
-      const double half_b2 = 0.5 * (b[0] * b[0] + b[1] * b[1]);
-      // (T grad w)_i = nu0 (B_i (B . grad w) - |B|^2 / 2 (grad w)_i)
+      // (T grad w)_i = H_i (B . grad w) - w' (grad w)_i, H = nu B, w' = B . H - w(B): the
+      // stress tensor of any isotropic medium (nu0 B B - nu0 |B|^2 / 2 in free space).
+      const double b2 = b[0] * b[0] + b[1] * b[1];
+      const Reluctivity& law = solver.assembler().law(e);
+      const double nu = law.nu(b2), coenergy_density = nu * b2 - law.energy_density(b2);
       const double b_dot_g = b[0] * gr + b[1] * gz;
-      const double tr = kNu0 * (b[0] * b_dot_g - half_b2 * gr);
-      const double tz = kNu0 * (b[1] * b_dot_g - half_b2 * gz);
+      const double tr = nu * b[0] * b_dot_g - coenergy_density * gr;
+      const double tz = nu * b[1] * b_dot_g - coenergy_density * gz;
       out.force[1] -= q.weight[p] * tz;
       if (!axisymmetric) {
         out.force[0] -= q.weight[p] * tr;
@@ -185,6 +235,7 @@ StressTensorForce stress_tensor_force(const MagnetostaticSolver& solver, const S
       }
     }
   }
+  junction_report(m, junctions, out);
   return out;
 }
 
