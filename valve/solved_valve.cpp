@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "case/femm_sidecar.hpp"
 #include "case/material_library.hpp"
 #include "core/error.hpp"
 #include "fluid/newtonian.hpp"
@@ -74,6 +75,12 @@ fluid::Passage resolve_passage(const magnetostatics::MagnetostaticSolver& solver
 
 fluid::Fluid case_fluid(const cases::Case& c) {
   const std::string where = c.source.string();
+  if (c.fluid.empty() && c.femm) {
+    throw InputError(where + ": a FEMM model names its MR fluid and gaps in a sidecar beside it, " +
+                     cases::femm_sidecar_path(c.source).string() +
+                     " ([fem] fluid and [[fem.gap]] label or block, docs/femm.md); 'rheomag "
+                     "export CASE --fem MODEL.fem' writes both");
+  }
   if (c.fluid.empty()) throw InputError(where + ": the case names no MR fluid ([case] fluid)");
   return fluid::read_fluid(cases::MaterialLibrary::standard().get(c.fluid, where).file);
 }

@@ -159,6 +159,18 @@ TEST(FemmChain, SidecarErrorsNameTheLabel) {
   }
 }
 
+TEST(FemmChain, ModelWithoutSidecarNamesTheFileThatWouldFixIt) {
+  // Issue 34: an error about a missing sidecar says which file would fix it.
+  const fs::path dir = scratch("no_sidecar");
+  ASSERT_EQ(run_rheomag("export '" + kCase + "' --fem v.fem", dir).code, 0);
+  fs::remove(dir / "v.toml");
+  const auto run = run_rheomag("valve v.fem --flow 1e-6", dir);
+  EXPECT_EQ(run.code, 2);
+  EXPECT_NE(run.err.find("v.toml"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("[[fem.gap]]"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("rheomag export CASE --fem"), std::string::npos) << run.err;
+}
+
 TEST(FemmChain, SolveRefusesUnknownRegionAndLineOutside) {
   const auto region = run_rheomag("solve '" + kCase + "' --order 1 --integral plunger:force");
   EXPECT_EQ(region.code, 2);
