@@ -36,41 +36,56 @@ nlohmann::json transient_json(const TransientResult& r, const TransientOptions& 
                     {"t90", optional_time(g.t90)},
                     {"lags", lags_json(r, g.b_avg, g.final_b)}});
   const EnergyBalance& e = r.energy;
-  return {{"drive", kDriveNames.name(o.drive)},
-          {"value", o.value},
-          {"from", o.from_current},
-          {"resistance", o.resistance},
-          {"scheme", kTimeSchemeNames.name(o.scheme)},
-          {"duration", o.duration},
-          {"time", r.time},
-          {"current", r.current},
-          {"flux_linkage", r.flux_linkage},
-          {"eddy_power", r.eddy_power},
-          {"gaps", gaps},
-          {"final_current", r.final_current},
-          {"final_flux_linkage", r.final_flux_linkage},
-          {"t63", optional_time(r.t63)},
-          {"t90", optional_time(r.t90)},
-          {"lags", lags_json(r, r.flux_linkage, r.final_flux_linkage)},
-          {"eddy_loss", e.eddy_loss},
-          {"copper_loss", e.copper_loss},
-          {"energy",
-           {{"source", e.source},
-            {"field_work", e.field_work},
-            {"stored_change", e.stored_change},
-            {"numerical_dissipation", e.numerical_dissipation},
-            {"max_step_dissipation", e.max_step_dissipation},
-            {"eddy_loss", e.eddy_loss},
-            {"copper_loss", e.copper_loss},
-            {"step_energy", e.step_energy},
-            {"max_step_error", e.max_step_error},
-            {"total_error", e.total_error}}},
-          {"steps", r.steps},
-          {"rejected_steps", r.rejected_steps},
-          {"newton_iterations", r.newton_iterations},
-          {"factorizations", r.factorizations},
-          {"dofs", r.dofs},
-          {"seconds", r.seconds}};
+  nlohmann::json j = {{"drive", kDriveNames.name(o.drive)},
+                      {"value", o.value},
+                      {"from", o.from_current},
+                      {"resistance", o.resistance},
+                      {"scheme", kTimeSchemeNames.name(o.scheme)},
+                      {"duration", o.duration},
+                      {"time", r.time},
+                      {"current", r.current},
+                      {"flux_linkage", r.flux_linkage},
+                      {"eddy_power", r.eddy_power},
+                      {"gaps", gaps},
+                      {"final_current", r.final_current},
+                      {"final_flux_linkage", r.final_flux_linkage},
+                      {"t63", optional_time(r.t63)},
+                      {"t90", optional_time(r.t90)},
+                      {"lags", lags_json(r, r.flux_linkage, r.final_flux_linkage)},
+                      {"eddy_loss", e.eddy_loss},
+                      {"copper_loss", e.copper_loss},
+                      {"energy",
+                       {{"source", e.source},
+                        {"field_work", e.field_work},
+                        {"stored_change", e.stored_change},
+                        {"numerical_dissipation", e.numerical_dissipation},
+                        {"max_step_dissipation", e.max_step_dissipation},
+                        {"eddy_loss", e.eddy_loss},
+                        {"copper_loss", e.copper_loss},
+                        {"step_energy", e.step_energy},
+                        {"max_step_error", e.max_step_error},
+                        {"total_error", e.total_error}}},
+                      {"steps", r.steps},
+                      {"rejected_steps", r.rejected_steps},
+                      {"step_error", r.step_error},
+                      {"step_error_measured", r.step_error_measured},
+                      {"newton_iterations", r.newton_iterations},
+                      {"factorizations", r.factorizations},
+                      {"dofs", r.dofs},
+                      {"seconds", r.seconds}};
+  if (const std::string warning = step_warning(r, o); !warning.empty()) j["warnings"] = {warning};
+  return j;
+}
+
+std::string step_warning(const TransientResult& r, const TransientOptions& o) {
+  if (o.steps == 0 || !r.step_error_measured || !(r.step_error > kFixedStepErrorLimit)) return "";
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "the %d equal steps do not resolve the response: the flux linkage is off by up "
+                "to %.3g %% of its change (measured against a run of half the step); expected "
+                "below %.3g %%: use more --steps, or adaptive steps (leave --steps out)",
+                o.steps, 100.0 * r.step_error, 100.0 * kFixedStepErrorLimit);
+  return text;
 }
 
 std::string transient_summary(const TransientResult& r, const TransientOptions& o) {
@@ -98,7 +113,10 @@ std::string transient_summary(const TransientResult& r, const TransientOptions& 
                 r.energy.eddy_loss, r.energy.copper_loss, r.energy.max_step_error);
   out << line;
   out << r.steps << " steps (" << r.rejected_steps << " rejected), " << r.newton_iterations
-      << " Newton iterations, " << r.dofs << " dofs, " << r.seconds << " s\n\n";
+      << " Newton iterations, " << r.dofs << " dofs, " << r.seconds << " s\n";
+  if (const std::string warning = step_warning(r, o); !warning.empty())
+    out << "warning: " << warning << "\n";
+  out << "\n";
   out << "    t [ms]     i [A]  lambda [mWb]";
   for (const GapSeries& g : r.gaps) out << "  " << g.name << " |B| [mT]";
   out << "\n";

@@ -14,6 +14,14 @@ namespace rheomag::transient {
 /// factorizations, dofs, seconds (SI units).
 nlohmann::json transient_json(const TransientResult& result, const TransientOptions& options);
 
+/// Error of lambda measured against half steps (relative to its change) above which a run of
+/// equal steps is said not to resolve the response.
+inline constexpr double kFixedStepErrorLimit = 0.01;
+
+/// The warning of a run of equal steps whose estimated local error exceeds kFixedStepErrorLimit
+/// ("" for adaptive steps or a resolved run).
+std::string step_warning(const TransientResult& r, const TransientOptions& o);
+
 /// Plain-text summary (ms, mWb, mT) with a short table of the response.
 std::string transient_summary(const TransientResult& result, const TransientOptions& options);
 

@@ -44,6 +44,14 @@ struct TransientOptions {
   TimeScheme scheme = TimeScheme::midpoint;
   magnetostatics::NewtonOptions newton;  ///< Newton at every step (local corrections unused)
   ProgressCallback progress;             ///< one report per accepted step
+  /// Equal steps: when the local error indicator exceeds kStepCheckTrigger, measure the run's
+  /// error against a run of half the step (TransientResult::step_error).
+  bool check_steps = true;
 };
+
+/// Indicator of the local error (per step, relative to lambda's change) above which a run of
+/// equal steps is checked against half steps; the indicator over-estimates (3.6 % on a run whose
+/// t63 and t90 are within 0.7 % of the adaptive run's).
+inline constexpr double kStepCheckTrigger = 0.01;
 
 }  // namespace rheomag::transient

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/format_text.hpp"
 #include "magnetostatics/serial_openmp.hpp"
 #include "transient/gap_flux.hpp"
 #include "transient/step_system.hpp"
@@ -67,6 +69,19 @@ double extrapolate(const std::vector<double>& t, const std::vector<double>& v, i
     sum += l * v[j];
   }
   return sum;
+}
+
+/// InputError when the coil's L/R (`inductance` [H]) is below 1e-9 of the duration: the
+/// adaptive steps stop at 1e-10 of it, so such a run takes billions of steps.
+void check_time_constant(const TransientOptions& options, double inductance) {
+  const double tau = inductance / options.resistance, floor = 1e-9 * options.duration;
+  if (inductance > 0.0 && tau < floor) {
+    throw InputError(format_text(
+        "resistance %.6g Ohm: the coil's L/R would be %.3g s (L %.3g H), less than 1e-9 of the "
+        "duration %.3g s, so the current settles within the smallest time step; expected a "
+        "resistance up to %.3g Ohm (or a shorter --duration)",
+        options.resistance, tau, inductance, options.duration, inductance / floor));
+  }
 }
 
 }  // namespace
@@ -148,6 +163,16 @@ TransientResult TransientSolver::run(const TransientOptions& options,
   currents[0] = result.final_current;
   const magnetostatics::Solution after = statics_.solve(currents, &before.a);
   result.final_flux_linkage = after.flux_linkage[0];
+  if (voltage) {  // secant L of the step; at 1 A when the step is too small to give one
+    const double di = result.final_current - options.from_current;
+    double inductance = std::abs((result.final_flux_linkage - before.flux_linkage[0]) / di);
+    if (!(inductance > 0.0) || !std::isfinite(inductance)) {
+      std::vector<double> unit = currents;
+      unit[0] = 1.0;
+      inductance = std::abs(statics_.solve(unit).flux_linkage[0] - before.flux_linkage[0]);
+    }
+    check_time_constant(options, inductance);
+  }
 
   const std::vector<int> gap_ids = gap_regions(statics_);
   const std::vector<double> final_b = region_mean_b(statics_, gap_ids, after.a);
@@ -173,9 +198,12 @@ TransientResult TransientSolver::run(const TransientOptions& options,
   StepOperators::Factor factor;
   StepOperators ops{&statics_,    &damping_, &drive_source_, &other_source_,
                     &conducting_, &linear_,  &cholesky_,     &factor};
+  // Reference of Newton's relative residual: the drive's own size (a floor in amperes would
+  // call a tiny drive converged before its first iteration and print zeros).
   const double reference_current =
-      std::max({std::abs(options.from_current), std::abs(result.final_current), 1e-3});
-  const double scale = std::max(drive_source_.norm(), 1e-300) * reference_current;
+      std::max(std::abs(options.from_current), std::abs(result.final_current));
+  const double scale =
+      std::max(drive_source_.norm() * reference_current + other_source_.norm(), 1e-300);
   magnetostatics::NewtonOptions newton = options.newton;
   newton.local_iterations = 0;
 
@@ -259,11 +287,13 @@ TransientResult TransientSolver::run(const TransientOptions& options,
     const Eigen::VectorXd a = statics_.free_to_nodes(y.head(n));
     const double lambda = flux_linkage(a);
     double growth = 2.0;
+    const int count = static_cast<int>(hist_t.size());
+    const double error =
+        count >= order + 1
+            ? std::abs(lambda - extrapolate(hist_t, hist_lambda, order + 1, t + h)) / lambda_change
+            : 0.0;
     if (adaptive) {
-      const int count = static_cast<int>(hist_t.size());
       if (count >= order + 1) {
-        const double predicted = extrapolate(hist_t, hist_lambda, order + 1, t + h);
-        const double error = std::abs(lambda - predicted) / lambda_change;
         growth = std::clamp(
             0.9 * std::pow(options.tolerance / std::max(error, 1e-300), 1.0 / (order + 1)), 0.25,
             2.0);
@@ -311,11 +341,16 @@ TransientResult TransientSolver::run(const TransientOptions& options,
     for (int d = 0; d < n; ++d) rate[statics_.dofs().node_of_dof[d]] = delta[d] / h;
     record(t, a, rate, eddy / h);
     hist_t.push_back(t), hist_lambda.push_back(lambda);
+    result.step_error = std::max(result.step_error, error);
     if (options.progress) {
+      // Time left: the rate so far (simulated s per wall s); adaptive steps grow, so it errs
+      // on the long side.
+      const double elapsed = seconds_since(start), left = elapsed * (duration - t) / t;
       std::ostringstream detail;
-      detail << "t = " << t << " s, step " << h << " s, i = " << current << " A, Newton "
-             << report.iterations;
-      options.progress({"transient", t, duration, seconds_since(start), detail.str()});
+      detail << "t = " << t << " s of " << duration << " s (" << std::lround(100.0 * t / duration)
+             << " %), step " << h << " s, i = " << current << " A, Newton " << report.iterations
+             << ", about " << std::setprecision(2) << left << " s left";
+      options.progress({"transient", t, duration, elapsed, detail.str()});
     }
     // Growth below 25 % keeps h, and with it the factorised step matrix (linear materials).
     if (growth > 1.0 && growth < 1.25) growth = 1.0;
@@ -339,8 +374,40 @@ TransientResult TransientSolver::run(const TransientOptions& options,
     g.t63 = rise_time(result.time, g.b_avg, g.b_avg.front(), g.final_b, 1.0 - std::exp(-1.0));
     g.t90 = rise_time(result.time, g.b_avg, g.b_avg.front(), g.final_b, 0.9);
   }
+  if (!adaptive && options.check_steps && result.step_error > kStepCheckTrigger) {
+    result.step_error = half_step_error(options, result);
+    result.step_error_measured = true;
+  }
   result.seconds = seconds_since(start);
   return result;
+}
+
+double TransientSolver::half_step_error(const TransientOptions& options,
+                                        const TransientResult& coarse) {
+  TransientOptions half = options;
+  half.steps = 2 * options.steps;
+  half.check_steps = false;
+  if (options.progress) {
+    half.progress = [&](const ProgressEvent& e) {
+      options.progress({"transient check", e.done, e.total, e.elapsed,
+                        "checking the equal steps against half steps: " + e.detail});
+    };
+  }
+  const TransientResult fine = run(half, {});
+  // Both series start with the same t = 0 entries (two for a current step); then coarse step k
+  // ends where fine step 2k does.
+  const std::size_t head = coarse.time.size() - static_cast<std::size_t>(coarse.steps);
+  const double change =
+      std::max(std::abs(coarse.final_flux_linkage - coarse.flux_linkage.front()), 1e-300);
+  double largest = 0.0;
+  for (std::size_t k = head; k < coarse.time.size(); ++k) {
+    const std::size_t j = head + 2 * (k - head + 1) - 1;
+    if (j < fine.flux_linkage.size())
+      largest = std::max(largest, std::abs(coarse.flux_linkage[k] - fine.flux_linkage[j]));
+  }
+  // Richardson: the coarse run's error is 2^p / (2^p - 1) of the difference (p = 2 midpoint).
+  const double factor = options.scheme == TimeScheme::midpoint ? 4.0 / 3.0 : 2.0;
+  return factor * largest / change;
 }
 
 }  // namespace rheomag::transient

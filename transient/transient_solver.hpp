@@ -73,6 +73,11 @@ struct TransientResult {
   int factorizations = 0;     ///< CHOLMOD numeric factorisations of the step matrices
   int dofs = 0;
   double seconds = 0.0;  ///< wall time of the run (static solves included)
+  /// Largest local error of lambda per accepted step relative to its whole change, estimated
+  /// as the adaptive control does (the polynomial through the previous steps); for equal steps
+  /// whose estimate exceeds kStepCheckTrigger, the error measured against half steps instead.
+  double step_error = 0.0;
+  bool step_error_measured = false;  ///< step_error is the half-step measurement
 };
 
 /// Receives every accepted state (e.g. a field writer); may be empty.
@@ -101,6 +106,11 @@ class TransientSolver {
   const EddyCoefficients& eddy() const { return eddy_; }
 
  private:
+  /// The error of a run of equal steps (`coarse`, run with `options`): the largest difference
+  /// of lambda from a run of half the step at the coarse times, Richardson-scaled, relative to
+  /// lambda's change.
+  double half_step_error(const TransientOptions& options, const TransientResult& coarse);
+
   class Step;
   friend class Step;
 
