@@ -31,6 +31,16 @@ nlohmann::json stats_json(const FieldStats& s) {
   return {{"average", number(s.average)}, {"min", number(s.minimum)}, {"max", number(s.maximum)}};
 }
 
+/// A gap line's samples: {"s": [m], "B_n": [T], "B_t": [T]}.
+nlohmann::json profile_json(const GapProfile& p) {
+  auto numbers = [](const std::vector<double>& v) {
+    nlohmann::json a = nlohmann::json::array();
+    for (double x : v) a.push_back(number(x));
+    return a;
+  };
+  return {{"s", numbers(p.s)}, {"B_n", numbers(p.b_n)}, {"B_t", numbers(p.b_t)}};
+}
+
 std::vector<std::array<double, 3>> as_vectors(const std::vector<double>& x,
                                               const std::vector<double>& y) {
   std::vector<std::array<double, 3>> v(x.size());
@@ -60,6 +70,12 @@ nlohmann::json results_json(const MagnetostaticSolver& solver, const Results& re
                      {{"B", stats_json(g.line_b)},
                       {"Bn", stats_json(g.line_b_normal)},
                       {"samples", g.line_samples}}},
+                    {"profile",
+                     [&g] {
+                       nlohmann::json p = profile_json(g.profile);
+                       p["walls"] = {profile_json(g.walls[0]), profile_json(g.walls[1])};
+                       return p;
+                     }()},
                     {"area", number(g.area)}});
   }
   nlohmann::json circuits = nlohmann::json::array();
