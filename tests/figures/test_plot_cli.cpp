@@ -124,3 +124,25 @@ TEST(PlotCli, BadPictureNameOrSizeExitsTwoNamingTheOption) {
   EXPECT_TRUE(fs::is_empty(dir));
   fs::remove_all(dir);
 }
+
+// `valve --plot` and `transient --plot` write their pictures at the stated size (900 x 800,
+// 900 x 1000) and name them in the JSON.
+TEST(PlotCli, ValveAndTransientPlotsAreWritten) {
+  const fs::path dir = fresh_dir("valve");
+  const auto valve = run_rheomag("valve '" + kValve + "' --current 0,1 --flow 1e-5,4e-5 --json " +
+                                 "--plot '" + (dir / "dp.svg").string() + "'");
+  ASSERT_EQ(valve.code, 0) << valve.err;
+  EXPECT_EQ(nlohmann::json::parse(valve.out)["plot"], (dir / "dp.svg").string());
+  EXPECT_TRUE(fs::exists(dir / "dp.svg"));
+  const auto step = run_rheomag("transient '" + kValve +
+                                "' --current 1 --duration 0.02 --steps 4 --quiet --plot '" +
+                                (dir / "step.png").string() + "'");
+  ASSERT_EQ(step.code, 0) << step.err;
+  EXPECT_EQ(png_size(dir / "step.png"), std::make_pair(900, 1000));
+  const auto bad =
+      run_rheomag("transient '" + kValve + "' --current 1 --duration 0.02 --steps 4 --plot '" +
+                  (dir / "step.gif").string() + "'");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--plot"), std::string::npos) << bad.err;
+  fs::remove_all(dir);
+}
