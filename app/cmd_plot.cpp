@@ -1,6 +1,5 @@
 // rheomag plot: the pictures of a magnetostatic solve (field map, B along the gaps, lambda(I)).
 
-#include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -10,8 +9,7 @@
 #include "app/command.hpp"
 #include "case/case_file.hpp"
 #include "core/error.hpp"
-#include "figures/solve_pictures.hpp"
-#include "magnetostatics/solve_problem.hpp"
+#include "figures/picture_solve.hpp"
 
 namespace {
 
@@ -26,36 +24,10 @@ struct PlotCommandOptions {
   int sweep_points = 11;
 };
 
-/// The currents of the lambda(I) picture: those given, else sweep_points from 0 to 1.5 times
-/// the case's first current (1 A when that is 0).
-std::vector<double> sweep_currents(const PlotCommandOptions& o, const cases::Problem& problem) {
-  if (problem.circuits.empty()) return {};
-  if (!o.currents.empty()) return o.currents;
-  const double top =
-      problem.circuits.front().current != 0.0 ? 1.5 * problem.circuits.front().current : 1.0;
-  std::vector<double> currents;
-  for (int k = 0; k < o.sweep_points; ++k) currents.push_back(top * k / (o.sweep_points - 1));
-  return currents;
-}
-
 void run(const PlotCommandOptions& o) {
-  cases::Case c = cases::load_case(o.case_path);
-  for (double i : o.currents) {
-    if (!std::isfinite(i)) throw InputError("--currents: expected finite currents in A");
-  }
-  if (o.current) {
-    if (!std::isfinite(*o.current)) throw InputError("--current: expected a finite current in A");
-    if (c.problem.circuits.empty())
-      throw InputError(o.case_path + ": --current given but the case has no circuit");
-    for (cases::Circuit& circuit : c.problem.circuits) circuit.current = *o.current;
-  }
-  if (!o.currents.empty() && c.problem.circuits.empty())
-    throw InputError(o.case_path + ": --currents given but the case has no circuit");
-  const magnetostatics::SolveResult solved = magnetostatics::solve_problem(c.problem);
-  figures::SolvedCase picture{c.name, *solved.solver, solved.solution, solved.results, {}};
-  const std::vector<double> currents = sweep_currents(o, c.problem);
-  if (!currents.empty()) picture.sweep = solved.solver->sweep(0, currents);
-  for (const auto& path : figures::write_solve_pictures(o.out, picture, o.map))
+  const figures::PictureSolve solved = figures::solve_for_pictures(
+      cases::load_case(o.case_path), o.current, o.currents, o.sweep_points);
+  for (const auto& path : figures::write_solve_pictures(o.out, solved.view(), o.map))
     std::cout << "wrote " << path.string() << "\n";
 }
 

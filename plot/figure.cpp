@@ -100,8 +100,12 @@ void Figure::write(const std::filesystem::path& path, const std::string& what) c
   if (!is_picture_path(path))
     throw InputError(what + ": expected a file name ending in .png or .svg, got '" + path.string() +
                      "'");
-  const std::string bytes = lower_extension(path) == ".png" ? png() : svg();
+  if (lower_extension(path) == ".svg") {
+    write_file_atomically(path, svg());  // text: checked for non-finite numbers on the way
+    return;
+  }
   // Not write_file_atomically: PNG bytes may spell "nan" by chance, which its text check refuses.
+  const std::string bytes = png();
   write_file_atomically_with(path, [&bytes](const std::filesystem::path& temporary) {
     std::ofstream out(temporary, std::ios::binary);
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));

@@ -29,7 +29,11 @@ void fill_triangles(cairo_t* cr, const Axes& axes, const TriangleMesh& mesh,
       cairo_close_path(cr);
     }
     set_colour(cr, colours.bin_colour(bin));
-    cairo_fill(cr);
+    // A hairline of the same colour covers the seams a browser's anti-aliasing of the SVG would
+    // show between neighbouring triangles.
+    cairo_fill_preserve(cr);
+    cairo_set_line_width(cr, 0.5);
+    cairo_stroke(cr);
   }
   cairo_restore(cr);
 }

@@ -18,7 +18,8 @@ struct TriangleMesh {
 };
 
 /// Fills every triangle of `mesh` in the colour of its value (`values`, one per triangle), one
-/// path per colour bin and without anti-aliasing, so that neighbours show no seams.
+/// path per colour bin, without anti-aliasing and outlined in its own colour, so that
+/// neighbours show no seams.
 void fill_triangles(cairo_t* cr, const Axes& axes, const TriangleMesh& mesh,
                     const std::vector<double>& values, const ColourMap& colours);
 
