@@ -146,3 +146,22 @@ TEST(PlotCli, ValveAndTransientPlotsAreWritten) {
   EXPECT_NE(bad.err.find("--plot"), std::string::npos) << bad.err;
   fs::remove_all(dir);
 }
+
+// `damper --plot` and `brake --plot`: the picture is written at 900 x 600 and named in the JSON;
+// the curves' numbers are those of the same JSON (one run of each).
+TEST(PlotCli, DamperAndBrakePlotsAreWritten) {
+  const fs::path dir = fresh_dir("devices");
+  const std::string cases = std::string(RHEOMAG_SOURCE_DIR) + "/cases/";
+  const auto damper =
+      run_rheomag("damper '" + cases + "damper_paper004.toml' --current 0,1 " +
+                  "--velocity 0.05,0.15 --json --plot '" + (dir / "fv.png").string() + "'");
+  ASSERT_EQ(damper.code, 0) << damper.err;
+  EXPECT_EQ(nlohmann::json::parse(damper.out)["plot"], (dir / "fv.png").string());
+  EXPECT_EQ(png_size(dir / "fv.png"), std::make_pair(900, 600));
+  const auto brake = run_rheomag("brake '" + cases + "brake_drum.toml' --current 0,1 " +
+                                 "--speed 1,10 --plot '" + (dir / "ts.svg").string() + "'");
+  ASSERT_EQ(brake.code, 0) << brake.err;
+  EXPECT_TRUE(fs::exists(dir / "ts.svg"));
+  EXPECT_NE(brake.out.find("wrote " + (dir / "ts.svg").string()), std::string::npos);
+  fs::remove_all(dir);
+}
