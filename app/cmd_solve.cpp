@@ -12,6 +12,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/memory_limit.hpp"
+#include "figures/gap_theta.hpp"
 #include "figures/solve_pictures.hpp"
 #include "magnetostatics/femm_ans.hpp"
 #include "magnetostatics/report.hpp"
@@ -30,17 +31,13 @@ struct SolveCommandOptions {
   std::string case_path;
   std::optional<double> current;
   std::vector<double> sweep;
-  std::string vtk;
-  std::string ans;   // FEMM solution file
-  std::string plot;  // field map picture (.png / .svg)
+  std::string vtk, ans, plot;  // .vtu, FEMM .ans, picture (.png / .svg)
   std::optional<int> order;
   std::vector<double> points;          // r1, z1, r2, z2, ... [m]
   std::vector<std::string> integrals;  // REGION:KIND
   std::vector<std::string> lines;      // x1,y1:x2,y2
   int line_points = 101;
-  bool json = false;
-  bool three_d = false;
-  bool full = false;
+  bool json = false, three_d = false, full = false;
   std::string mesher = "tetgen";
   std::string max_memory;  // --max-memory text ("8G"); empty: the default limit
 };
@@ -70,11 +67,14 @@ void run_3d(const SolveCommandOptions& o, const Case& c) {
   }
   const m3::Solve3dResult solved = m3::solve_problem_3d(c.problem, m3::read_features(c), options);
   if (!o.vtk.empty()) m3::write_results_vtu_3d(o.vtk, solved);
+  if (!o.plot.empty())
+    rheomag::figures::gap_theta_figure(solved.results, c.name, 800, 700).write(o.plot, "--plot");
   if (o.json) {
     nlohmann::json j = m3::results_json_3d(solved.results);
     j["case"] = c.name;
     j["mesh_seconds"] = solved.mesh_seconds;
     if (!o.vtk.empty()) j["vtk"] = o.vtk;
+    if (!o.plot.empty()) j["plot"] = o.plot;
     rheomag::app::print_json(j, 2);
     return;
   }
@@ -82,6 +82,7 @@ void run_3d(const SolveCommandOptions& o, const Case& c) {
   if (!c.description.empty()) std::cout << c.description << "\n";
   std::cout << m3::results_summary_3d(solved.results);
   if (!o.vtk.empty()) std::cout << "\nwrote " << o.vtk << " (open it in ParaView)\n";
+  if (!o.plot.empty()) std::cout << "wrote " << o.plot << " (B_avg_theta of each gap)\n";
 }
 
 void run(const SolveCommandOptions& o) {
@@ -172,8 +173,8 @@ const bool solve_registered = rheomag::app::register_command([](CLI::App& root) 
                   "triangles split in four) for FEMM's or xfemm's post-processor")
       ->check(rheomag::app::output_file_in_writable_folder());
   cmd->add_option("--plot", o->plot,
-                  "Draw the field map (|B|, flux lines, gaps; docs/plots.md) to this .png or .svg "
-                  "file")
+                  "Draw the field map (|B|, flux lines, gaps; with --3d: each gap's B_avg_theta, "
+                  "polar; docs/plots.md) to this .png or .svg file")
       ->check(rheomag::app::output_file_in_writable_folder());
   cmd->add_option("--order", o->order, "Lagrange element order, 1 or 2 (default: the case's, 2)")
       ->check(rheomag::app::in_domain(rheomag::Domain::between(1, 2).whole()));

@@ -165,3 +165,14 @@ TEST(PlotCli, DamperAndBrakePlotsAreWritten) {
   EXPECT_NE(brake.out.find("wrote " + (dir / "ts.svg").string()), std::string::npos);
   fs::remove_all(dir);
 }
+
+// `solve --3d --plot`: the gaps' B_avg_theta as a polar plot at 800 x 700, named in the JSON.
+TEST(PlotCli, Solve3dPlotsTheCircumferentialFluxDensity) {
+  const fs::path dir = fresh_dir("3d");
+  const auto run = run_rheomag("solve '" + kValve + "' --3d --mesher swept --json --plot '" +
+                               (dir / "theta.png").string() + "'");
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_EQ(nlohmann::json::parse(run.out)["plot"], (dir / "theta.png").string());
+  EXPECT_EQ(png_size(dir / "theta.png"), std::make_pair(800, 700));
+  fs::remove_all(dir);
+}
