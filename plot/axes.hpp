@@ -25,13 +25,14 @@ struct Range {
 /// of them.
 std::vector<double> nice_ticks(double low, double high, int target);
 
-/// A range that holds every finite value of `values` (and `extra`), padded by `pad` of its
+/// A range that holds every finite value of `values`, padded by `pad` of its
 /// length on both sides; a unit range around a single value, [0, 1] when there is none.
 Range range_of(const std::vector<std::vector<double>>& values, double pad);
 
 /// Maps data (x, y) into a pixel rectangle, y up.
 class Axes {
  public:
+  /// Data ranges x and y drawn in the pixel rectangle `frame`.
   Axes(Rect frame, Range x, Range y);
   /// Axes whose ranges hold `x` and `y` and are widened (about their centres) so that one data
   /// unit is as long on both axes: true aspect ratio.

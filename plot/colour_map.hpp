@@ -16,6 +16,7 @@ struct Rgb {
 /// bins.
 class ColourMap {
  public:
+  /// [low, high] in `bins` bins (>= 2); std::invalid_argument otherwise.
   ColourMap(double low, double high, int bins);
   /// The bin of `value`, 0 .. bins() - 1.
   int bin(double value) const;

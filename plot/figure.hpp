@@ -12,9 +12,13 @@ namespace rheomag::plot {
 /// `cr()`, then write it in either format.
 class Figure {
  public:
+  /// A blank (white) width x height picture.
   Figure(int width, int height);
+  /// Releases the Cairo context and surface.
   ~Figure();
+  /// Takes over `other`'s drawing (other is left empty).
   Figure(Figure&& other) noexcept;
+  /// Swaps drawings with `other`.
   Figure& operator=(Figure&& other) noexcept;
   Figure(const Figure&) = delete;
   Figure& operator=(const Figure&) = delete;
