@@ -9,6 +9,9 @@
 
 #include "app/command.hpp"
 #include "case/case_file.hpp"
+#include "core/error.hpp"
+#include "figures/device_curves.hpp"
+#include "plot/figure.hpp"
 #include "valve/brake_report.hpp"
 
 namespace {
@@ -16,16 +19,24 @@ namespace {
 struct BrakeCli {
   std::string case_file;
   std::vector<double> currents, speeds;
+  std::string plot;  // curves picture (.png / .svg)
   bool json = false;
 };
 
 void run_brake(const BrakeCli& o) {
   using namespace rheomag;
+  if (!o.plot.empty() && !plot::is_picture_path(o.plot))
+    throw InputError("--plot: expected a file name ending in .png or .svg");
   const auto report = valve::evaluate_brake(cases::load_case(o.case_file), o.currents, o.speeds);
-  if (o.json)
-    app::print_json(valve::brake_json(report), 2);
-  else
+  if (!o.plot.empty()) figures::brake_curves_figure(report, 900, 600).write(o.plot, "--plot");
+  if (o.json) {
+    nlohmann::json j = valve::brake_json(report);
+    if (!o.plot.empty()) j["plot"] = o.plot;
+    app::print_json(j, 2);
+  } else {
     std::cout << valve::brake_text(report);
+    if (!o.plot.empty()) std::cout << "wrote " << o.plot << " (torque-speed)\n";
+  }
 }
 
 const bool brake_registered = rheomag::app::register_command([](CLI::App& root) {
@@ -44,6 +55,9 @@ const bool brake_registered = rheomag::app::register_command([](CLI::App& root) 
   cmd->add_option("--speed", o->speeds,
                   "Rotor speeds [rad/s], comma-separated (default: [brake] speed)")
       ->delimiter(',');
+  cmd->add_option("--plot", o->plot,
+                  "Draw torque against speed, one curve per current, to this .png or .svg")
+      ->check(rheomag::app::output_file_in_writable_folder());
   cmd->add_flag("--json", o->json, "Print one JSON object to stdout");
   cmd->callback([o] { run_brake(*o); });
 });

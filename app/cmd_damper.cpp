@@ -9,6 +9,9 @@
 
 #include "app/command.hpp"
 #include "case/case_file.hpp"
+#include "core/error.hpp"
+#include "figures/device_curves.hpp"
+#include "plot/figure.hpp"
 #include "valve/damper_report.hpp"
 
 namespace {
@@ -16,17 +19,25 @@ namespace {
 struct DamperCli {
   std::string case_file;
   std::vector<double> currents, velocities;
+  std::string plot;  // curves picture (.png / .svg)
   bool json = false;
 };
 
 void run_damper(const DamperCli& o) {
   using namespace rheomag;
+  if (!o.plot.empty() && !plot::is_picture_path(o.plot))
+    throw InputError("--plot: expected a file name ending in .png or .svg");
   const auto report =
       valve::evaluate_damper(cases::load_case(o.case_file), o.currents, o.velocities);
-  if (o.json)
-    app::print_json(valve::damper_json(report), 2);
-  else
+  if (!o.plot.empty()) figures::damper_curves_figure(report, 900, 600).write(o.plot, "--plot");
+  if (o.json) {
+    nlohmann::json j = valve::damper_json(report);
+    if (!o.plot.empty()) j["plot"] = o.plot;
+    app::print_json(j, 2);
+  } else {
     std::cout << valve::damper_text(report);
+    if (!o.plot.empty()) std::cout << "wrote " << o.plot << " (force-velocity)\n";
+  }
 }
 
 const bool damper_registered = rheomag::app::register_command([](CLI::App& root) {
@@ -45,6 +56,9 @@ const bool damper_registered = rheomag::app::register_command([](CLI::App& root)
   cmd->add_option("--velocity", o->velocities,
                   "Piston velocities [m/s], comma-separated (default: [damper] velocity)")
       ->delimiter(',');
+  cmd->add_option("--plot", o->plot,
+                  "Draw force against velocity, one curve per current, to this .png or .svg")
+      ->check(rheomag::app::output_file_in_writable_folder());
   cmd->add_flag("--json", o->json, "Print one JSON object to stdout");
   cmd->callback([o] { run_damper(*o); });
 });

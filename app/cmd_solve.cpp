@@ -12,15 +12,15 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/memory_limit.hpp"
-#include "magnetostatics/block_integrals.hpp"
+#include "figures/gap_theta.hpp"
+#include "figures/solve_pictures.hpp"
 #include "magnetostatics/femm_ans.hpp"
-#include "magnetostatics/field_probe.hpp"
-#include "magnetostatics/line_integral.hpp"
 #include "magnetostatics/report.hpp"
+#include "magnetostatics/solve_output.hpp"
 #include "magnetostatics/solve_problem.hpp"
-#include "magnetostatics/sweep_report.hpp"
 #include "magnetostatics3d/report3d.hpp"
 #include "magnetostatics3d/solve3d.hpp"
+#include "plot/figure.hpp"
 
 namespace {
 
@@ -31,16 +31,13 @@ struct SolveCommandOptions {
   std::string case_path;
   std::optional<double> current;
   std::vector<double> sweep;
-  std::string vtk;
-  std::string ans;  // FEMM solution file
+  std::string vtk, ans, plot;  // .vtu, FEMM .ans, picture (.png / .svg)
   std::optional<int> order;
   std::vector<double> points;          // r1, z1, r2, z2, ... [m]
   std::vector<std::string> integrals;  // REGION:KIND
   std::vector<std::string> lines;      // x1,y1:x2,y2
   int line_points = 101;
-  bool json = false;
-  bool three_d = false;
-  bool full = false;
+  bool json = false, three_d = false, full = false;
   std::string mesher = "tetgen";
   std::string max_memory;  // --max-memory text ("8G"); empty: the default limit
 };
@@ -70,11 +67,14 @@ void run_3d(const SolveCommandOptions& o, const Case& c) {
   }
   const m3::Solve3dResult solved = m3::solve_problem_3d(c.problem, m3::read_features(c), options);
   if (!o.vtk.empty()) m3::write_results_vtu_3d(o.vtk, solved);
+  if (!o.plot.empty())
+    rheomag::figures::gap_theta_figure(solved.results, c.name, 800, 700).write(o.plot, "--plot");
   if (o.json) {
     nlohmann::json j = m3::results_json_3d(solved.results);
     j["case"] = c.name;
     j["mesh_seconds"] = solved.mesh_seconds;
     if (!o.vtk.empty()) j["vtk"] = o.vtk;
+    if (!o.plot.empty()) j["plot"] = o.plot;
     rheomag::app::print_json(j, 2);
     return;
   }
@@ -82,9 +82,12 @@ void run_3d(const SolveCommandOptions& o, const Case& c) {
   if (!c.description.empty()) std::cout << c.description << "\n";
   std::cout << m3::results_summary_3d(solved.results);
   if (!o.vtk.empty()) std::cout << "\nwrote " << o.vtk << " (open it in ParaView)\n";
+  if (!o.plot.empty()) std::cout << "wrote " << o.plot << " (B_avg_theta of each gap)\n";
 }
 
 void run(const SolveCommandOptions& o) {
+  if (!o.plot.empty() && !rheomag::plot::is_picture_path(o.plot))
+    throw rheomag::InputError("--plot: expected a file name ending in .png or .svg");
   Case c = load_case(o.case_path);
   Problem& problem = c.problem;
   if (o.current) {
@@ -105,39 +108,32 @@ void run(const SolveCommandOptions& o) {
     throw rheomag::InputError(o.case_path + ": --sweep given but the case has no circuit");
 
   SolveResult solved = solve_problem(problem);
-  std::vector<SweepPoint> table;
-  if (!o.sweep.empty()) table = solved.solver->sweep(0, o.sweep);
-  if (!o.vtk.empty()) write_results_vtu(o.vtk, *solved.solver, solved.solution, solved.results);
-  if (!o.ans.empty())
-    rheomag::write_file_atomically(o.ans, femm_ans_text(*solved.solver, solved.solution));
-  const std::vector<FieldProbe> probes = probe_field(*solved.solver, solved.solution, o.points);
-  const std::vector<BlockIntegral> integrals =
-      block_integrals(*solved.solver, solved.solution, o.integrals);
-  std::vector<LineField> lines;
-  for (const std::string& line : o.lines)
-    lines.push_back(line_field(*solved.solver, solved.solution, line, o.line_points));
-
-  if (o.json) {
-    nlohmann::json j = results_json(*solved.solver, solved.results);
-    j["case"] = c.name;
-    j["mesh_seconds"] = solved.mesh_seconds;
-    if (!o.vtk.empty()) j["vtk"] = o.vtk;
-    if (!o.ans.empty()) j["ans"] = o.ans;
-    if (!probes.empty()) j["points"] = probes_json(probes);
-    if (!table.empty()) j["sweep"] = sweep_json(table);
-    if (!integrals.empty()) j["integrals"] = integrals_json(integrals);
-    if (!lines.empty()) j["lines"] = lines_json(lines);
-    rheomag::app::print_json(j, 2);
-    return;
+  SolveOutput out;
+  out.case_name = c.name, out.case_path = o.case_path, out.description = c.description;
+  out.mesh_seconds = solved.mesh_seconds;
+  if (!o.sweep.empty()) out.sweep = solved.solver->sweep(0, o.sweep);
+  if (!o.vtk.empty()) {
+    write_results_vtu(o.vtk, *solved.solver, solved.solution, solved.results);
+    out.files.emplace_back("vtk", o.vtk);
   }
-  std::cout << "case " << c.name << " (" << o.case_path << ")\n";
-  if (!c.description.empty()) std::cout << c.description << "\n";
-  std::cout << results_summary(*solved.solver, solved.results);
-  if (!table.empty()) std::cout << sweep_text(table, problem.circuits.front().name);
-  std::cout << probes_text(probes) << integrals_text(integrals)
-            << lines_text(lines, problem.symmetry);
-  if (!o.vtk.empty()) std::cout << "\nwrote " << o.vtk << " (open it in ParaView)\n";
-  if (!o.ans.empty()) std::cout << "wrote " << o.ans << " (FEMM 4.2 solution)\n";
+  if (!o.ans.empty()) {
+    rheomag::write_file_atomically(o.ans, femm_ans_text(*solved.solver, solved.solution));
+    out.files.emplace_back("ans", o.ans);
+  }
+  if (!o.plot.empty()) {
+    rheomag::figures::write_field_map(
+        o.plot, "--plot", {c.name, *solved.solver, solved.solution, solved.results, out.sweep}, {});
+    out.files.emplace_back("plot", o.plot);
+  }
+  out.probes = probe_field(*solved.solver, solved.solution, o.points);
+  out.integrals = block_integrals(*solved.solver, solved.solution, o.integrals);
+  for (const std::string& line : o.lines)
+    out.lines.push_back(line_field(*solved.solver, solved.solution, line, o.line_points));
+  if (o.json) {
+    rheomag::app::print_json(solve_output_json(*solved.solver, solved.results, out), 2);
+  } else {
+    std::cout << solve_output_text(*solved.solver, solved.results, out);
+  }
 }
 
 const bool solve_registered = rheomag::app::register_command([](CLI::App& root) {
@@ -175,6 +171,10 @@ const bool solve_registered = rheomag::app::register_command([](CLI::App& root) 
   cmd->add_option("--ans", o->ans,
                   "Write FEMM 4.2's solution file (.ans: the model and A at the nodes, P2 "
                   "triangles split in four) for FEMM's or xfemm's post-processor")
+      ->check(rheomag::app::output_file_in_writable_folder());
+  cmd->add_option("--plot", o->plot,
+                  "Draw the field map (|B|, flux lines, gaps; with --3d: each gap's B_avg_theta, "
+                  "polar; docs/plots.md) to this .png or .svg file")
       ->check(rheomag::app::output_file_in_writable_folder());
   cmd->add_option("--order", o->order, "Lagrange element order, 1 or 2 (default: the case's, 2)")
       ->check(rheomag::app::in_domain(rheomag::Domain::between(1, 2).whole()));

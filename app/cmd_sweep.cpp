@@ -10,6 +10,9 @@
 #include <string>
 
 #include "app/command.hpp"
+#include "core/error.hpp"
+#include "figures/sweep_grid.hpp"
+#include "plot/figure.hpp"
 #include "sweep/mpi.hpp"
 #include "sweep/run.hpp"
 #include "sweep/spec.hpp"
@@ -24,6 +27,7 @@ struct SweepCommandOptions {
   int jobs = 0;
   std::string out = ".";
   std::string shard;
+  std::string plot;  // outputs against keys (.png / .svg)
   bool json = false;
   bool quiet = false;
 };
@@ -62,6 +66,8 @@ void print_summary(const SweepSummary& s, bool json) {
 }
 
 void run(const SweepCommandOptions& o) {
+  if (!o.plot.empty() && !rheomag::plot::is_picture_path(o.plot))
+    throw rheomag::InputError("--plot: expected a file name ending in .png or .svg");
   const SweepSpec spec = read_sweep(o.sweep_path);
   SweepRunOptions options;
   options.jobs = o.jobs;
@@ -77,6 +83,12 @@ void run(const SweepCommandOptions& o) {
     if (!is_root) return;
   } else {
     summary = run_sweep(spec, options);
+  }
+  if (!o.plot.empty()) {
+    std::vector<std::string> keys;
+    for (const SweepAxis& axis : spec.axes) keys.push_back(axis.key.written);
+    rheomag::figures::sweep_figure(rheomag::figures::read_sweep_table(summary.csv), keys, 560, 340)
+        .write(o.plot, "--plot");
   }
   print_summary(summary, o.json);
   if (summary.interrupted) {
@@ -107,6 +119,10 @@ const bool sweep_registered = rheomag::app::register_command([](CLI::App& root) 
                   "run only designs with id % N == i and write <csv stem>.part-i-of-N.csv "
                   "(for job arrays); e.g. --shard 0/4");
   cmd->add_flag("--quiet,-q", options->quiet, "no progress reports on stderr");
+  cmd->add_option("--plot", options->plot,
+                  "draw every output column against every swept key (a grid of panels) from the "
+                  "results to this .png or .svg")
+      ->check(rheomag::app::output_file_in_writable_folder());
   cmd->add_flag("--json", options->json, "print the run summary as one JSON object");
   cmd->callback([options] { run(*options); });
 });

@@ -10,6 +10,8 @@
 #include "app/command.hpp"
 #include "case/case_file.hpp"
 #include "core/error.hpp"
+#include "figures/transient_step.hpp"
+#include "plot/figure.hpp"
 #include "transient/from_case.hpp"
 #include "transient/report.hpp"
 #include "transient/vtk_series.hpp"
@@ -30,6 +32,8 @@ struct TransientCliOptions {
   std::string scheme = "midpoint";
   std::optional<double> resistance;
   std::string vtk_series;
+  int vtk_stride = 1;
+  std::string plot;  // step-response picture (.png / .svg)
   bool json = false;
   bool quiet = false;
 };
@@ -52,6 +56,8 @@ void run(const TransientCliOptions& o) {
   if (!(o.duration > 0.0) || !std::isfinite(o.duration))
     throw InputError("--duration: expected a time > 0 s");
   if (!std::isfinite(o.from)) throw InputError("--from: expected a finite current in A");
+  if (!o.plot.empty() && !plot::is_picture_path(o.plot))
+    throw InputError("--plot: expected a file name ending in .png or .svg");
   const cases::Case c = cases::load_case(o.case_path);
   if (c.problem.circuits.empty())
     throw InputError(o.case_path + ": the case has no circuit to drive");
@@ -82,25 +88,31 @@ void run(const TransientCliOptions& o) {
   }
   std::unique_ptr<transient::VtkSeries> series;
   if (!o.vtk_series.empty())
-    series = std::make_unique<transient::VtkSeries>(o.vtk_series, *set_up.statics);
+    series = std::make_unique<transient::VtkSeries>(o.vtk_series, *set_up.solver, o.vtk_stride);
   transient::StateCallback on_state;
   if (series) on_state = [&](const transient::TransientState& s) { series->write(s); };
   const transient::TransientResult result = set_up.solver->run(options, on_state);
   if (series) series->finish();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!o.plot.empty())
+    figures::transient_step_figure(result, c.name, 900, 1000).write(o.plot, "--plot");
 
   if (o.json) {
     nlohmann::json j = transient::transient_json(result, options);
     j["case"] = c.name;
     j["seconds"] = seconds;
-    if (series) j["vtk_series"] = o.vtk_series;
+    if (series) j["vtk_series"] = o.vtk_series, j["vtk_files"] = series->files();
+    if (!o.plot.empty()) j["plot"] = o.plot;
     rheomag::app::print_json(j, 2);
     return;
   }
   std::cout << "case " << c.name << " (" << o.case_path << ")\n"
             << transient::transient_summary(result, options);
-  if (series) std::cout << "wrote " << o.vtk_series << "/series.pvd (open it in ParaView)\n";
+  if (series)
+    std::cout << "wrote " << o.vtk_series << "/series.pvd and " << series->files()
+              << " states (open it in ParaView)\n";
+  if (!o.plot.empty()) std::cout << "wrote " << o.plot << " (step response)\n";
 }
 
 const bool transient_registered = app::register_command([](CLI::App& root) {
@@ -136,8 +148,15 @@ const bool transient_registered = app::register_command([](CLI::App& root) {
       ->check(rheomag::app::non_empty());
   cmd->add_option("--resistance", o->resistance, "Coil resistance [Ohm] (overrides the case)");
   cmd->add_option("--vtk-series", o->vtk_series,
-                  "Write every state as DIR/state_NNNNN.vtu and DIR/series.pvd (ParaView)")
+                  "Write the states as DIR/state_NNNNN.vtu (fields and the eddy-current density "
+                  "J_phi) and DIR/series.pvd (ParaView)")
       ->check(rheomag::app::non_empty());
+  cmd->add_option("--vtk-stride", o->vtk_stride,
+                  "With --vtk-series: write the first state, every Nth and the last (default 1)")
+      ->check(rheomag::app::in_domain(rheomag::Domain::count()));
+  cmd->add_option("--plot", o->plot,
+                  "Draw I(t), lambda(t) and the gaps' |B|(t) with t63/t90 to this .png or .svg")
+      ->check(rheomag::app::output_file_in_writable_folder());
   cmd->add_flag("--json", o->json, "Print one JSON object (SI units) instead of the summary");
   cmd->add_flag("--quiet", o->quiet, "No progress on stderr");
   cmd->callback([o] { run(*o); });

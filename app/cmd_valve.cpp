@@ -12,6 +12,8 @@
 #include "app/command.hpp"
 #include "case/case_file.hpp"
 #include "core/error.hpp"
+#include "figures/valve_curves.hpp"
+#include "plot/figure.hpp"
 #include "valve/coil.hpp"
 #include "valve/valve_report.hpp"
 
@@ -21,12 +23,15 @@ struct ValveCli {
   std::string case_file;
   std::vector<double> currents, flows;
   std::string wire;
+  std::string plot;  // dp-Q picture (.png / .svg)
   double temperature = NAN;
   bool json = false;
 };
 
 void run_valve(const ValveCli& o) {
   using namespace rheomag;
+  if (!o.plot.empty() && !plot::is_picture_path(o.plot))
+    throw InputError("--plot: expected a file name ending in .png or .svg");
   const auto c = cases::load_case(o.case_file);
   valve::ValveOptions options = valve::read_valve_options(c);
   if (!o.wire.empty()) {
@@ -44,10 +49,15 @@ void run_valve(const ValveCli& o) {
     options.temperature = o.temperature;
   }
   const valve::ValveReport report = valve::evaluate_valve(c, options, o.currents, o.flows);
-  if (o.json)
-    app::print_json(valve::valve_json(report), 2);
-  else
+  if (!o.plot.empty()) figures::valve_curves_figure(report, 900, 800).write(o.plot, "--plot");
+  if (o.json) {
+    nlohmann::json j = valve::valve_json(report);
+    if (!o.plot.empty()) j["plot"] = o.plot;
+    app::print_json(j, 2);
+  } else {
     std::cout << valve::valve_text(report);
+    if (!o.plot.empty()) std::cout << "wrote " << o.plot << " (dp-Q, dynamic range)\n";
+  }
 }
 
 const bool valve_registered = rheomag::app::register_command([](CLI::App& root) {
@@ -73,6 +83,10 @@ const bool valve_registered = rheomag::app::register_command([](CLI::App& root) 
       ->check(rheomag::app::non_empty());
   cmd->add_option("--temperature", o->temperature,
                   "Coil temperature [C], -200 to 250 (default 20)");
+  cmd->add_option("--plot", o->plot,
+                  "Draw dp against Q at each current and the dynamic range to this .png or .svg "
+                  "(give several --flow and --current values for curves)")
+      ->check(rheomag::app::output_file_in_writable_folder());
   cmd->add_flag("--json", o->json, "Print one JSON object to stdout");
   cmd->callback([o] { run_valve(*o); });
 });

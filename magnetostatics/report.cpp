@@ -31,6 +31,16 @@ nlohmann::json stats_json(const FieldStats& s) {
   return {{"average", number(s.average)}, {"min", number(s.minimum)}, {"max", number(s.maximum)}};
 }
 
+/// A gap line's samples: {"s": [m], "B_n": [T], "B_t": [T]}.
+nlohmann::json profile_json(const GapProfile& p) {
+  auto numbers = [](const std::vector<double>& v) {
+    nlohmann::json a = nlohmann::json::array();
+    for (double x : v) a.push_back(number(x));
+    return a;
+  };
+  return {{"s", numbers(p.s)}, {"B_n", numbers(p.b_n)}, {"B_t", numbers(p.b_t)}};
+}
+
 std::vector<std::array<double, 3>> as_vectors(const std::vector<double>& x,
                                               const std::vector<double>& y) {
   std::vector<std::array<double, 3>> v(x.size());
@@ -60,6 +70,12 @@ nlohmann::json results_json(const MagnetostaticSolver& solver, const Results& re
                      {{"B", stats_json(g.line_b)},
                       {"Bn", stats_json(g.line_b_normal)},
                       {"samples", g.line_samples}}},
+                    {"profile",
+                     [&g] {
+                       nlohmann::json p = profile_json(g.profile);
+                       p["walls"] = {profile_json(g.walls[0]), profile_json(g.walls[1])};
+                       return p;
+                     }()},
                     {"area", number(g.area)}});
   }
   nlohmann::json circuits = nlohmann::json::array();
@@ -140,7 +156,8 @@ std::string results_summary(const MagnetostaticSolver& solver, const Results& re
 }
 
 void write_results_vtu(const std::string& path, const MagnetostaticSolver& solver,
-                       const Solution& solution, const Results& results) {
+                       const Solution& solution, const Results& results,
+                       const mesh::VtuFields& extra) {
   const mesh::Mesh& m = solver.mesh();
   mesh::VtuFields fields;
   fields.add_point_scalar(
@@ -152,6 +169,21 @@ void write_results_vtu(const std::string& path, const MagnetostaticSolver& solve
   fields.add_cell_scalar("mu_r", results.element_mu_r);
   fields.add_point_vector("B_nodal", as_vectors(results.node_br, results.node_bz));
   fields.add_point_scalar("B_nodal_magnitude", results.node_b);
+  for (const mesh::VtuFields::Field& f : extra.fields()) {
+    using Location = mesh::VtuFields::Location;
+    if (f.integer) {
+      fields.add_cell_int(f.name, std::vector<int>(f.values.begin(), f.values.end()));
+    } else if (f.components == 1) {
+      (f.location == Location::cell ? fields.add_cell_scalar(f.name, f.values)
+                                    : fields.add_point_scalar(f.name, f.values));
+    } else {
+      std::vector<std::array<double, 3>> v(f.values.size() / 3);
+      for (std::size_t i = 0; i < v.size(); ++i)
+        v[i] = {f.values[3 * i], f.values[3 * i + 1], f.values[3 * i + 2]};
+      (f.location == Location::cell ? fields.add_cell_vector(f.name, v)
+                                    : fields.add_point_vector(f.name, v));
+    }
+  }
   std::vector<std::string> names;
   for (const auto& region : solver.problem().geometry.regions) names.push_back(region.name);
   mesh::write_vtu(path, m, fields, names);

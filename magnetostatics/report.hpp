@@ -6,6 +6,7 @@
 
 #include "magnetostatics/results.hpp"
 #include "magnetostatics/solver.hpp"
+#include "mesh/vtu_writer.hpp"
 
 namespace rheomag::magnetostatics {
 
@@ -18,8 +19,10 @@ nlohmann::json results_json(const MagnetostaticSolver& solver, const Results& re
 std::string results_summary(const MagnetostaticSolver& solver, const Results& results);
 
 /// Writes the mesh with region ids and names, A, B (vector), |B|, H (vector), |H| and mu_r to a
-/// .vtu file (atomically). Vectors are (B_r, B_z, 0) for axisymmetric problems.
+/// .vtu file (atomically), then the `extra` fields (e.g. a transient's eddy-current density).
+/// Vectors are (B_r, B_z, 0) for axisymmetric problems.
 void write_results_vtu(const std::string& path, const MagnetostaticSolver& solver,
-                       const Solution& solution, const Results& results);
+                       const Solution& solution, const Results& results,
+                       const mesh::VtuFields& extra = {});
 
 }  // namespace rheomag::magnetostatics

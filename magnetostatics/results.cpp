@@ -162,20 +162,39 @@ GapResult gap_result(const MagnetostaticSolver& solver, const Solution& solution
   } else {
     gap.line_start = {r_min, 0.5 * (z_min + z_max)}, gap.line_end = {r_max, 0.5 * (z_min + z_max)};
   }
-  Accumulator b_line, bn_line;
-  for (int s = 0; s < kGapLineSamples; ++s) {
-    const double t = (s + 0.5) / kGapLineSamples;
-    const mesh::Point p{gap.line_start.r + t * (gap.line_end.r - gap.line_start.r),
-                        gap.line_start.z + t * (gap.line_end.z - gap.line_start.z)};
-    for (int e : elements) {
-      double xi, eta;
-      if (!locate(vertices(m, e), p, xi, eta)) continue;
-      const auto b = b_at(solver, solution, e, xi, eta);
-      b_line.add(std::hypot(b[0], b[1]), 1.0);
-      bn_line.add(normal(b), 1.0);
-      ++gap.line_samples;
-      break;
+  // Samples at the centres of kGapLineSamples equal parts of a line parallel to the mid-line,
+  // shifted across the gap by `across` (in the normal direction), kept where it lies in the gap.
+  const double inset = 1e-6 * (annular ? r_max - r_min : z_max - z_min);
+  auto sample = [&](double across) {
+    GapProfile profile;
+    const mesh::Point start{gap.line_start.r + (annular ? across : 0.0),
+                            gap.line_start.z + (annular ? 0.0 : across)};
+    const double length =
+        std::hypot(gap.line_end.r - gap.line_start.r, gap.line_end.z - gap.line_start.z);
+    for (int s = 0; s < kGapLineSamples; ++s) {
+      const double t = (s + 0.5) / kGapLineSamples;
+      const mesh::Point p{start.r + t * (gap.line_end.r - gap.line_start.r),
+                          start.z + t * (gap.line_end.z - gap.line_start.z)};
+      for (int e : elements) {
+        double xi, eta;
+        if (!locate(vertices(m, e), p, xi, eta)) continue;
+        const auto b = b_at(solver, solution, e, xi, eta);
+        profile.s.push_back(t * length);
+        profile.b_n.push_back(annular ? b[0] : b[1]);
+        profile.b_t.push_back(annular ? b[1] : b[0]);
+        break;
+      }
     }
+    return profile;
+  };
+  gap.profile = sample(0.0);
+  const double half_width = 0.5 * (annular ? r_max - r_min : z_max - z_min) - inset;
+  gap.walls = {sample(-half_width), sample(half_width)};
+  Accumulator b_line, bn_line;
+  for (std::size_t i = 0; i < gap.profile.s.size(); ++i) {
+    b_line.add(std::hypot(gap.profile.b_n[i], gap.profile.b_t[i]), 1.0);
+    bn_line.add(std::abs(gap.profile.b_n[i]), 1.0);
+    ++gap.line_samples;
   }
   gap.line_b = b_line.stats();
   gap.line_b_normal = bn_line.stats();

@@ -18,6 +18,13 @@ struct FieldStats {
   double maximum = 0.0;
 };
 
+/// B along one line of a gap: distance from the line's start and the flux density's components
+/// normal (B_r for an annular gap, B_z for a radial one) and tangential to the walls, signed.
+struct GapProfile {
+  std::vector<double> s;         ///< [m]
+  std::vector<double> b_n, b_t;  ///< [T]
+};
+
 /// Flux density in one fluid-gap region (RegionSeed::gap != none) [T].
 /// Normal component: B_r for an annular gap (walls r = const), B_z for a radial gap (walls
 /// z = const); statistics of its magnitude |B_n|.
@@ -32,6 +39,10 @@ struct GapResult {
   FieldStats line_b_normal;          ///< |B_n| along the mid-line
   mesh::Point line_start, line_end;  ///< mid-line of the gap's bounding box (long direction)
   int line_samples = 0;              ///< samples found inside the gap (by point location)
+  GapProfile profile;                ///< the mid-line samples that line_b summarises
+  /// The same along the gap's two walls (the sides of its bounding box parallel to the
+  /// mid-line: smaller r or z first), where they bound the gap.
+  std::array<GapProfile, 2> walls;
 };
 
 /// Quantities of one series circuit.

@@ -4,7 +4,7 @@
 # --tests, also what only the test suite, the benchmarks and the format check use.
 set -euo pipefail
 pkgs=(build-essential cmake pkg-config git ca-certificates
-  libeigen3-dev libsuitesparse-dev libcgal-dev libvtk9-dev
+  libeigen3-dev libsuitesparse-dev libcgal-dev libvtk9-dev libcairo2-dev
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev
   libboost-dev libtet1.5-dev libmuparser-dev libopenblas0-pthread coinor-libipopt-dev libceres-dev libsvm-dev gnuplot-nox)
 pkgs+=(libopenmpi-dev openmpi-bin)  # rheomag sweep under mpirun (optional at build time)

@@ -3,6 +3,7 @@
 // collection that lists them with their times.
 
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "magnetostatics/solver.hpp"
@@ -10,22 +11,34 @@
 
 namespace rheomag::transient {
 
-/// Writes every state as DIR/state_NNNNN.vtu plus DIR/series.pvd (ParaView's time series).
+/// Writes the first state, every `stride`-th after it and the last one as DIR/state_NNNNN.vtu
+/// plus DIR/series.pvd (ParaView's time series). Each state has the static fields of
+/// write_results_vtu and the eddy-current density J_phi (J_z planar) = -sigma dA/dt as a cell
+/// array [A/m^2] (the element's mean of dA/dt over the last step; 0 in stranded coils).
 class VtkSeries {
  public:
-  /// Creates `dir` (InputError naming --vtk-series if it cannot); `statics` gives mesh and
-  /// circuits and must outlive the series.
-  VtkSeries(std::filesystem::path dir, const magnetostatics::MagnetostaticSolver& statics);
+  /// Creates `dir` (InputError naming --vtk-series if it cannot); `solver` gives mesh, circuits
+  /// and conductivities and must outlive the series. `stride` >= 1.
+  VtkSeries(std::filesystem::path dir, const TransientSolver& solver, int stride = 1);
 
-  /// Writes one state's fields (first circuit at the state's current, the others at theirs).
+  /// Writes one state's fields (first circuit at the state's current, the others at theirs) when
+  /// it is due; keeps it otherwise, in case it is the last.
   void write(const TransientState& s);
 
-  /// Writes series.pvd listing every state written.
+  /// Writes the last state if it was kept, then series.pvd listing every state written.
   void finish();
 
+  /// Number of .vtu files written so far.
+  int files() const { return count_; }
+
  private:
+  void write_now(const TransientState& s);
+
   std::filesystem::path dir_;
-  const magnetostatics::MagnetostaticSolver& statics_;
+  const TransientSolver& solver_;
+  int stride_ = 1;
+  int seen_ = 0;
+  std::optional<TransientState> kept_;
   std::ostringstream collection_;
   int count_ = 0;
 };
