@@ -204,6 +204,7 @@ ValvePoint SolvedValve::evaluate(double flow, bool zero_field) const {
       segment.drop = fluid::radial_gap_in_field(gap.radial, field, fluid_, flow);
     }
     segment.b_average = segment.drop.b_average;
+    segment.field = std::move(field);
     point.dp_total += segment.drop.integrated.dp;
     point.dp_viscous += segment.drop.integrated.dp_viscous;
     point.dp_total_average_b += segment.drop.average_b.dp;

@@ -42,6 +42,7 @@ struct SegmentResult {
   double b_average = 0.0;        ///< mean |B_n| along the mid-line [T] (0 for passages and losses)
   fluid::FieldCoupledDrop drop;  ///< field-integrated and one-average-B pressure drops
   double reynolds_number = 0.0;  ///< passages: rho V D_h / mu (laminar formulas: < ~2000)
+  fluid::GapFieldSamples field;  ///< gaps: the |B_n| along the mid-line the drop integrated
 };
 
 /// One operating point of the valve.

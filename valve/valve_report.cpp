@@ -11,17 +11,22 @@ namespace {
 
 nlohmann::json segment_json(const SegmentResult& s) {
   const auto& d = s.drop.integrated;
-  return {{"name", s.name},
-          {"kind", std::string(kSegmentKindNames.name(s.kind))},
-          {"b_average", s.b_average},
-          {"dp", d.dp},
-          {"dp_yield", d.dp_yield},
-          {"dp_viscous", d.dp_viscous},
-          {"dp_average_b", s.drop.average_b.dp},
-          {"plug_fraction", d.plug_fraction},
-          {"bingham_number", d.bingham_number},
-          {"reynolds_number",
-           s.kind == SegmentKind::passage ? nlohmann::json(s.reynolds_number) : nullptr}};
+  nlohmann::json out = {
+      {"name", s.name},
+      {"kind", std::string(kSegmentKindNames.name(s.kind))},
+      {"b_average", s.b_average},
+      {"dp", d.dp},
+      {"dp_yield", d.dp_yield},
+      {"dp_viscous", d.dp_viscous},
+      {"dp_average_b", s.drop.average_b.dp},
+      {"plug_fraction", d.plug_fraction},
+      {"bingham_number", d.bingham_number},
+      {"reynolds_number",
+       s.kind == SegmentKind::passage ? nlohmann::json(s.reynolds_number) : nullptr}};
+  // The field the yield drop was integrated over: s along the gap (axial distance from its
+  // start, or the radius of a radial gap) [m] and |B_n| [T] on its mid-line.
+  if (!s.field.position.empty()) out["profile"] = {{"s", s.field.position}, {"B_n", s.field.b}};
+  return out;
 }
 
 }  // namespace

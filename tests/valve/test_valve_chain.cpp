@@ -98,6 +98,36 @@ TEST(CmdValve, JsonKeysAndValues) {
   EXPECT_EQ(bad.code, 2);
 }
 
+// Issue 29: `valve --json` gave each gap's mean B only. Each gap segment now carries the B(s)
+// the yield drop was integrated over; reference: its mean over the gap's 5 mm pole length
+// (cases/annular_valve.toml; trapezoids between the samples, the end samples held to the gap's
+// ends, as fluid::integrate_samples integrates) equals the segment's b_average to 1e-12, the
+// samples lie inside the gap, and the field is non-zero at 1 A.
+TEST(CmdValve, GapProfileAveragesToTheSegmentsMeanB) {
+  const auto run =
+      cli_test::run_rheomag(std::string("valve ") + kCase + " --current 1 --flow 1e-6 --json");
+  ASSERT_EQ(run.code, 0) << run.err;
+  const auto json = nlohmann::json::parse(run.out);
+  int gaps = 0;
+  for (const auto& segment : json["points"][0]["segments"]) {
+    if (!segment.contains("profile")) continue;
+    ++gaps;
+    const std::vector<double> s = segment["profile"]["s"], b = segment["profile"]["B_n"];
+    ASSERT_EQ(s.size(), b.size());
+    ASSERT_GE(s.size(), 2u);
+    const double length = 5e-3;
+    EXPECT_GE(s.front(), 0.0) << segment["name"];
+    EXPECT_LE(s.back(), length) << segment["name"];
+    double integral = b.front() * s.front() + b.back() * (length - s.back());
+    for (std::size_t k = 1; k < s.size(); ++k)
+      integral += 0.5 * (b[k] + b[k - 1]) * (s[k] - s[k - 1]);
+    const double mean = integral / length;
+    EXPECT_NEAR(mean, segment["b_average"].get<double>(), 1e-12 * mean) << segment["name"];
+    EXPECT_GT(mean, 0.5) << segment["name"];
+  }
+  EXPECT_EQ(gaps, 2) << "both pole gaps carry a profile";
+}
+
 // Issue 36: `--temperature -250` printed R = -0.291 Ohm with exit 0; the option and the
 // `[valve] temperature` key are read in the copper model's domain, refused with exit 2 naming it.
 TEST(CmdValve, TemperatureOutsideTheCopperModelIsExit2) {
