@@ -24,9 +24,13 @@ struct ReportCommandOptions {
 };
 
 void run(const ReportCommandOptions& o) {
-  const figures::PictureSolve solved = figures::solve_for_pictures(
-      cases::load_case(o.case_path), o.current, o.currents, o.sweep_points);
-  const auto path = figures::write_solve_report(o.out, solved.view(), {});
+  const cases::Case c = cases::load_case(o.case_path);
+  const figures::PictureSolve solved =
+      figures::solve_for_pictures(c, o.current, o.currents, o.sweep_points);
+  const double current =
+      o.current ? *o.current : (c.problem.circuits.empty() ? 0.0 : c.problem.circuits[0].current);
+  const auto path =
+      figures::write_solve_report(o.out, solved.view(), {}, figures::device_sections(c, current));
   std::cout << "wrote " << path.string() << " (open it in a browser)\n";
 }
 
@@ -35,8 +39,9 @@ const bool report_registered = app::register_command([](CLI::App& root) {
   CLI::App* cmd = root.add_subcommand(
       "report",
       "Write DIR/report.html: one self-contained page (inline SVG, no other file) with a case's\n"
-      "key numbers (gap flux densities, flux linkage, inductances, energy) and the pictures of\n"
-      "`rheomag plot` (docs/plots.md).\n"
+      "key numbers (gap flux densities, flux linkage, inductances, energy), the pictures of\n"
+      "`rheomag plot` and, for a valve with a [valve] flow, its pressure drop against flow at\n"
+      "four currents (docs/plots.md).\n"
       "Exit codes: 0 success, 2 bad input, 3 Newton did not converge.");
   cmd->add_option("CASE", o->case_path, "Case file (.toml) or FEMM model (.fem)")->required();
   cmd->add_option("--out", o->out, "Folder to write report.html into (created if absent)")

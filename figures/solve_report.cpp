@@ -72,7 +72,8 @@ std::string inline_svg(const std::string& svg, const std::string& prefix) {
   return replace_all(text, "url(#", "url(#" + prefix);
 }
 
-std::string solve_report_html(const SolvedCase& solved, const FieldMapOptions& options) {
+std::string solve_report_html(const SolvedCase& solved, const FieldMapOptions& options,
+                              const std::vector<ReportSection>& sections) {
   std::ostringstream o;
   o << "<!DOCTYPE html>\n<html><head><meta charset='utf-8'><title>rheomag report: "
     << html_escape(solved.name)
@@ -102,18 +103,24 @@ std::string solve_report_html(const SolvedCase& solved, const FieldMapOptions& o
     o << "<h2>Flux linkage and inductance</h2>\n";
     picture(inductance_figure(solved.sweep, solved.results.circuits.front().name, 900, 800));
   }
+  for (const ReportSection& section : sections) {
+    o << "<h2>" << html_escape(section.title) << "</h2>\n<p>" << html_escape(section.text)
+      << "</p>\n";
+    picture(section.figure);
+  }
   o << "</body></html>\n";
   return o.str();
 }
 
 std::filesystem::path write_solve_report(const std::filesystem::path& dir, const SolvedCase& solved,
-                                         const FieldMapOptions& options) {
+                                         const FieldMapOptions& options,
+                                         const std::vector<ReportSection>& sections) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec)
     throw InputError("--out " + dir.string() + ": cannot create the folder (" + ec.message() + ")");
   const std::filesystem::path path = dir / "report.html";
-  write_file_atomically(path, solve_report_html(solved, options));
+  write_file_atomically(path, solve_report_html(solved, options, sections));
   return path;
 }
 

@@ -5,19 +5,22 @@
 #include <filesystem>
 #include <string>
 
+#include "figures/device_sections.hpp"
 #include "figures/field_map.hpp"
 #include "figures/solve_pictures.hpp"
 
 namespace rheomag::figures {
 
 /// The HTML page: the mesh and solve, each gap's flux density, each circuit's flux linkage and
-/// inductances, the energies, then the field map, B along each gap and lambda(I), L(I) (inline
-/// SVG, their ids prefixed per picture so that they do not clash).
-std::string solve_report_html(const SolvedCase& solved, const FieldMapOptions& options);
+/// inductances, the energies, then the field map, B along each gap, lambda(I), L(I) and the
+/// device `sections` (inline SVG, their ids prefixed per picture so that they do not clash).
+std::string solve_report_html(const SolvedCase& solved, const FieldMapOptions& options,
+                              const std::vector<ReportSection>& sections = {});
 
 /// Writes the page as DIR/report.html (DIR created if absent; nothing else written).
 std::filesystem::path write_solve_report(const std::filesystem::path& dir, const SolvedCase& solved,
-                                         const FieldMapOptions& options);
+                                         const FieldMapOptions& options,
+                                         const std::vector<ReportSection>& sections = {});
 
 /// Cairo's SVG document made fit to sit inside HTML: the XML declaration dropped and every id
 /// (and every reference to one) prefixed with `prefix`.

@@ -48,11 +48,13 @@ TEST(ReportCli, PageIsSelfContainedWithUniqueIds) {
   // The only file written.
   const auto files = std::distance(fs::directory_iterator(html.parent_path()), {});
   EXPECT_EQ(files, 1);
-  // Field map, two gaps, lambda/L: four inline pictures; nothing fetched from elsewhere.
+  // Field map, two gaps, lambda/L and the valve's dp-Q (its [valve] flow): five inline
+  // pictures; nothing fetched from elsewhere.
   std::size_t svgs = 0;
   for (std::size_t at = text.find("<svg"); at != std::string::npos; at = text.find("<svg", at + 1))
     ++svgs;
-  EXPECT_EQ(svgs, 4u);
+  EXPECT_EQ(svgs, 5u);
+  EXPECT_NE(text.find("<h2>Pressure drop against flow</h2>"), std::string::npos);
   EXPECT_EQ(text.find("<img"), std::string::npos);
   EXPECT_EQ(text.find("<script"), std::string::npos);
   EXPECT_EQ(text.find("<?xml"), std::string::npos);
