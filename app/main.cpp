@@ -16,6 +16,7 @@
 #include "app/finite_stdout.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "core/version.hpp"
 #include "lumped/recording_io.hpp"
 #include "magnetostatics/assembly.hpp"
 
@@ -111,6 +112,8 @@ int main(int argc, char** argv) {
       "dynamics,\nidentification, diagnosis and optimisation. Run 'rheomag COMMAND --help' "
       "for each command."};
   root.require_subcommand(1);
+  root.set_version_flag("--version", "rheomag " + rheomag::project_version() + " (git " +
+                                         rheomag::git_revision() + ")");
   // SIGINT/SIGTERM end any command with 130/143, temporaries removed (core/interrupt.hpp).
   rheomag::install_interrupt_handling();
   rheomag::app::prefer_single_threaded_blas();
