@@ -8,10 +8,10 @@
 #include "app/command.hpp"
 #include "case/case_file.hpp"
 #include "core/error.hpp"
+#include "coupling/step_request.hpp"
 #include "transient/from_case.hpp"
 #include "transient/report.hpp"
 #include "transient/vtk_series.hpp"
-#include "valve/step_request.hpp"
 
 namespace {
 
@@ -19,16 +19,16 @@ using namespace rheomag;
 
 struct TransientCliOptions {
   std::string case_path;
-  valve::StepRequest request;
+  coupling::StepRequest request;
   std::string vtk_series;
   bool json = false;
   bool quiet = false;
 };
 
 void run(const TransientCliOptions& o) {
-  valve::check_step_request(o.request);
+  coupling::check_step_request(o.request);
   const cases::Case c = cases::load_case(o.case_path);
-  valve::StepRequest request = o.request;
+  coupling::StepRequest request = o.request;
   double last_print = 0.0;
   if (!o.quiet) {
     request.progress = [&](const ProgressEvent& e) {
@@ -37,7 +37,7 @@ void run(const TransientCliOptions& o) {
       std::cerr << "rheomag transient: " << e.detail << " (" << e.elapsed << " s)\n";
     };
   }
-  const valve::PreparedStep step = valve::prepare_step(c, o.case_path, request);
+  const coupling::PreparedStep step = coupling::prepare_step(c, o.case_path, request);
   const auto start = std::chrono::steady_clock::now();
   std::unique_ptr<transient::VtkSeries> series;
   if (!o.vtk_series.empty())

@@ -11,7 +11,7 @@
 #include "transient/from_case.hpp"
 #include "transient/transient_options.hpp"
 
-namespace rheomag::valve {
+namespace rheomag::coupling {
 
 /// What a step response is asked for; the messages name the CLI's options.
 struct StepRequest {
@@ -43,4 +43,4 @@ struct PreparedStep {
 PreparedStep prepare_step(const cases::Case& c, const std::string& case_path,
                           const StepRequest& request);
 
-}  // namespace rheomag::valve
+}  // namespace rheomag::coupling

@@ -1,13 +1,13 @@
 // A case's step response request (see step_request.hpp).
 
-#include "valve/step_request.hpp"
+#include "coupling/step_request.hpp"
 
 #include <cmath>
 
 #include "core/error.hpp"
 #include "valve/solved_valve.hpp"
 
-namespace rheomag::valve {
+namespace rheomag::coupling {
 
 void check_step_request(const StepRequest& r) {
   if (r.current.has_value() == r.voltage.has_value())
@@ -36,7 +36,7 @@ PreparedStep prepare_step(const cases::Case& c, const std::string& case_path,
   // Coil resistance: the request's, else [transient] resistance, else from the winding's wire.
   std::optional<double> resistance = r.resistance;
   if (!resistance) resistance = p.set_up.case_options.resistance;
-  if (!resistance) resistance = wire_resistance(c, *p.set_up.statics);
+  if (!resistance) resistance = valve::wire_resistance(c, *p.set_up.statics);
   if (r.voltage && !resistance)
     throw InputError(case_path +
                      ": a voltage step needs the coil resistance: give the wire ([valve] wire = "
@@ -46,4 +46,4 @@ PreparedStep prepare_step(const cases::Case& c, const std::string& case_path,
   return p;
 }
 
-}  // namespace rheomag::valve
+}  // namespace rheomag::coupling
