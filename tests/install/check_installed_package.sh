@@ -5,10 +5,11 @@
 #  - an outside project (tests/install/consumer) configured with find_package(rheomag) builds
 #    and solves the bundled reference valve; its inductance must equal, to all 17 digits, that of
 #    the installed `rheomag solve --json` (same library, same case: no tolerance);
-#  - the same program built with `pkg-config --cflags --libs rheomag` gives the same number.
-# usage: check_installed_package.sh BUILD_DIR SOURCE_DIR WORK_DIR
+#  - the same program built with `pkg-config --cflags --libs rheomag` gives the same number;
+#  - the installed Python module (when built) gives the same number from the prefix alone.
+# usage: check_installed_package.sh BUILD_DIR SOURCE_DIR WORK_DIR [PYTHON (the module's)]
 set -euo pipefail
-build=$1 src=$2 work=$3
+build=$1 src=$2 work=$3 python=${4:-python3}
 case_file=$src/cases/annular_valve.toml
 rm -rf "$work"
 mkdir -p "$work"
@@ -47,3 +48,10 @@ export PKG_CONFIG_PATH=$libdir/pkgconfig
 g++ -O2 -o "$work/solve_case_pc" "$src/tests/install/consumer/solve_case.cpp" \
   $(pkg-config --cflags --libs rheomag)
 compare "pkg-config rheomag" "$("$work/solve_case_pc" "$case_file")"
+
+# The installed Python module (built with -DRHEOMAG_PYTHON=ON), from the prefix only.
+if [ -d "$libdir/python3/dist-packages/rheomag" ]; then
+  compare "installed Python module" "$(cd "$work" && PYTHONPATH=$libdir/python3/dist-packages "$python" -c \
+    'import sys, rheomag; s = rheomag.Case.load(sys.argv[1]).solve(); print(rheomag.__version__, repr(s.inductance))' \
+    "$case_file")"
+fi
