@@ -2,6 +2,7 @@
 
 #include <pybind11/pybind11.h>
 
+#include "core/blas_threads.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "python/bindings.hpp"
@@ -10,6 +11,9 @@ PYBIND11_MODULE(_rheomag, m) {
   namespace py = pybind11;
   m.doc() = "rheomag: FE design of MR valves, dampers and brakes (SI units; docs/python.md)";
   m.attr("__version__") = rheomag::version_text();
+  // As the CLI: single-threaded OpenBLAS (unless OPENBLAS_NUM_THREADS says otherwise), so the
+  // results equal the CLI's to the last digit and parallel Python threads do not oversubscribe.
+  rheomag::prefer_single_threaded_blas();
   // Bad input: ValueError with the CLI's message (what the CLI prints after "rheomag: error: ").
   // A solver that did not converge (and a non-finite result): rheomag.ConvergenceError.
   static py::exception<rheomag::ConvergenceError> convergence(m, "ConvergenceError",

@@ -80,10 +80,10 @@ void bind_solution(py::module_& m) {
       .def_property_readonly("name", [](const GapView& g) { return py::object(g.stats["name"]); })
       .def_property_readonly("kind", [](const GapView& g) { return py::object(g.stats["kind"]); })
       .def_property_readonly(
-          "B_avg", [](const GapView& g) { return py::object(g.stats["b"]["average"]); },
+          "B_avg", [](const GapView& g) { return py::object(g.stats["B_avg"]); },
           "|B| averaged over the gap's area [T]")
       .def_property_readonly(
-          "Bn_avg", [](const GapView& g) { return py::object(g.stats["b_normal"]["average"]); },
+          "Bn_avg", [](const GapView& g) { return py::object(g.stats["Bn_avg"]); },
           "|B_n| (normal to the walls) averaged over the area [T]")
       .def_property_readonly(
           "stats", [](const GapView& g) { return g.stats; }, "the CLI's JSON entry of the gap")
