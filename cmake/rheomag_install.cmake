@@ -37,7 +37,8 @@ install(FILES ${CMAKE_BINARY_DIR}/rheomagConfig.cmake ${CMAKE_BINARY_DIR}/rheoma
 
 # pkg-config (relocatable: paths relative to the .pc file; meant for the shared libraries, the
 # CMake package also handles a static build): every rheomag library, the header-only
-# dependencies' own .pc files, and CHOLMOD's header folder (no .pc on Debian 12).
+# dependencies' own .pc files, and CHOLMOD (its header folder and -lcholmod: Eigen's inline
+# CholmodSupport calls it from the headers; no .pc on Debian 12).
 set(RHEOMAG_PC_LIBS)
 set(order ${RHEOMAG_LIBRARIES})
 list(REVERSE order)

@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "case/case_file.hpp"
+#include "core/blas_threads.hpp"
 #include "core/version.hpp"
 #include "identify/fit_model_json.hpp"
 #include "magnetostatics/solve_problem.hpp"
@@ -15,6 +16,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: solve_case CASE.toml\n");
     return 2;
   }
+  rheomag::prefer_single_threaded_blas();  // as the CLI: the same sums, the same last digits
   try {
     const rheomag::cases::Case c = rheomag::cases::load_case(argv[1]);
     const auto solved = rheomag::magnetostatics::solve_problem(c.problem);
