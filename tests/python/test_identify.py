@@ -1,4 +1,4 @@
-"""Recording, simulate, fit against the CLI (issue 30).
+"""Recording, simulate, fit, fit_family, diagnose against the CLI (issue 30).
 
 A recording is simulated from the bundled bypass-cylinder rig (its README example's signals),
 then fitted. Reference: the CLI of the same build; both run the same library functions on the
@@ -60,6 +60,35 @@ def test_grey_box_fit_equals_cli(recording):
     py = rheomag.fit(recording, "bingham", progress=events.append)
     cli = cli_json("fit", recording, "--model", "bingham", "--quiet")
     assert without_timing(py) == without_timing(cli)
+
+
+@pytest.fixture(scope="module")
+def two_currents(tmp_path_factory):
+    """Two recordings of the rig at 0 A and 1 A (4 s at 200 Hz), written by the CLI."""
+    folder = tmp_path_factory.mktemp("family")
+    paths = []
+    for current in (0, 1):
+        path = str(folder / f"i{current}.csv")
+        code, _, err = run_cli("simulate", RIG, "--signal", SIGNALS[0], "--signal",
+                               f"current=constant:value={current}", "--duration", "4",
+                               "--rate", "200", "--out", path)
+        assert code == 0, err
+        paths.append(path)
+    return paths
+
+
+def test_fit_family_equals_cli(two_currents):
+    py = rheomag.fit_family(two_currents, "bingham")
+    cli = cli_json("fit-family", *two_currents, "--model", "bingham", "--quiet")
+    assert without_timing(py) == without_timing(cli)
+
+
+def test_diagnose_equals_cli(two_currents):
+    events = []
+    py = rheomag.diagnose(two_currents[1], progress=events.append)
+    cli = cli_json("diagnose", two_currents[1], "--quiet")
+    assert without_timing(py) == without_timing(cli)
+    assert events  # each stage is reported
 
 
 def test_fit_input_error_has_the_cli_message(recording):
