@@ -74,9 +74,10 @@ SolutionHandle solve(const CaseHandle& h, std::optional<double> current) {
 }  // namespace
 
 py::class_<CaseHandle> bind_case(py::module_& m) {
-  return py::class_<CaseHandle>(m, "Case",
-                         "A rheomag case (TOML case file or FEMM .fem model), immutable; edits "
-                         "return a new Case.")
+  return py::class_<CaseHandle>(
+             m, "Case",
+             "A rheomag case (TOML case file or FEMM .fem model), immutable; edits "
+             "return a new Case.")
       .def_static("load", &load, py::arg("path"),
                   "Reads a case file (.toml) or FEMM model (.fem); ValueError on bad input.")
       .def_property_readonly("name", [](const CaseHandle& h) { return h.c->name; })
