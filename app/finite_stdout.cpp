@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "core/format_text.hpp"
+#include "core/version.hpp"
 
 namespace rheomag::app {
 
@@ -67,7 +68,9 @@ void GuardedStdout::check(const std::string& command) {
 }
 
 void print_json(const nlohmann::json& j, int indent) {
-  std::cout << finite_json_text(j, "stdout (JSON)", indent) << std::endl;
+  nlohmann::json document = j;
+  stamp_version(document);
+  std::cout << finite_json_text(document, "stdout (JSON)", indent) << std::endl;
 }
 
 void print(const char* format, ...) {

@@ -58,7 +58,8 @@ class GuardedStdout {
   FiniteLineGuard guard_;
 };
 
-/// Prints `j` (indent as nlohmann's dump; -1 is one line) and a newline on std::cout once
+/// Prints `j` with its "version" (core/version.hpp; indent as nlohmann's dump, -1 is one line)
+/// and a newline on std::cout once
 /// require_finite_json passed: NonFiniteOutputError naming the key otherwise.
 void print_json(const nlohmann::json& j, int indent = -1);
 

@@ -1,7 +1,5 @@
 // rheomag: command-line entry point. Subcommands live in app/cmd_*.cpp.
 
-#include <dlfcn.h>
-
 #include <glog/logging.h>
 #include <vtkLogger.h>
 #include <vtkObject.h>
@@ -14,8 +12,10 @@
 
 #include "app/command.hpp"
 #include "app/finite_stdout.hpp"
+#include "core/blas_threads.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "core/version.hpp"
 #include "lumped/recording_io.hpp"
 #include "magnetostatics/assembly.hpp"
 
@@ -81,17 +81,6 @@ void setup_commands(CLI::App& root) {
   }
 }
 
-/// Makes OpenBLAS (when it is the system BLAS behind CHOLMOD) single-threaded unless the user
-/// set OPENBLAS_NUM_THREADS: at rheomag's problem sizes a second BLAS thread gains little, and
-/// with parallel sweep workers or a busy machine its spinning threads cost 20x (see
-/// docs/performance.md, "Threads"). Looked up at run time: other BLAS builds lack the symbol.
-void prefer_single_threaded_blas() {
-  if (std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;
-  using SetThreads = void (*)(int);
-  if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
-    set(1);
-}
-
 /// Keeps third-party logging (Ceres reports failed trial steps through glog, VTK failed writes) off
 /// the user's stderr: rheomag reports what matters through its own messages and exit codes.
 void silence_third_party_logging() {
@@ -111,9 +100,11 @@ int main(int argc, char** argv) {
       "dynamics,\nidentification, diagnosis and optimisation. Run 'rheomag COMMAND --help' "
       "for each command."};
   root.require_subcommand(1);
+  root.set_version_flag("--version", "rheomag " + rheomag::project_version() + " (git " +
+                                         rheomag::git_revision() + ")");
   // SIGINT/SIGTERM end any command with 130/143, temporaries removed (core/interrupt.hpp).
   rheomag::install_interrupt_handling();
-  rheomag::app::prefer_single_threaded_blas();
+  rheomag::prefer_single_threaded_blas();
   rheomag::app::silence_third_party_logging();
   // Element assembly on OpenMP threads only when OMP_NUM_THREADS is set (the library default is
   // serial; docs/performance.md, "Threads").

@@ -2,6 +2,8 @@
 
 #include "case/material_library.hpp"
 
+#include <dlfcn.h>
+
 #include <algorithm>
 #include <cctype>
 
@@ -86,8 +88,27 @@ MaterialLibrary MaterialLibrary::load(const std::filesystem::path& directory) {
   return library;
 }
 
+namespace {
+
+/// The installed materials (share/rheomag/materials beside the lib/ or bin/ folder of the binary
+/// holding this code) when they exist, otherwise the source tree's cases/materials.
+std::filesystem::path bundled_materials_dir() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&bundled_materials_dir), &info) != 0 &&
+      info.dli_fname != nullptr) {
+    std::error_code ec;
+    const std::filesystem::path binary = std::filesystem::canonical(info.dli_fname, ec);
+    const std::filesystem::path installed =
+        binary.parent_path().parent_path() / "share" / "rheomag" / "materials";
+    if (!ec && std::filesystem::is_directory(installed, ec)) return installed;
+  }
+  return RHEOMAG_MATERIALS_DIR;
+}
+
+}  // namespace
+
 const MaterialLibrary& MaterialLibrary::standard() {
-  static const MaterialLibrary library = load(RHEOMAG_MATERIALS_DIR);
+  static const MaterialLibrary library = load(bundled_materials_dir());
   return library;
 }
 

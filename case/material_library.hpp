@@ -38,7 +38,8 @@ class MaterialLibrary {
  public:
   /// Loads every *.toml file of `directory` (in file-name order); InputError on a bad file.
   static MaterialLibrary load(const std::filesystem::path& directory);
-  /// The bundled library (RHEOMAG_MATERIALS_DIR), loaded once.
+  /// The bundled library (an installed share/rheomag/materials, else RHEOMAG_MATERIALS_DIR),
+  /// loaded once.
   static const MaterialLibrary& standard();
 
   /// Adds (or replaces, by name) one material.

@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/finite_output.hpp"
 #include "core/html_text.hpp"
+#include "core/version.hpp"
 #include "diagnose/candidate.hpp"
 
 namespace rheomag::diagnose {
@@ -262,9 +263,10 @@ void write_diagnosis_outputs(const Diagnosis& d, const std::string& dir) {
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError("--out " + dir + ": cannot create the folder (" + ec.message() + ")");
   const std::filesystem::path base(dir);
-  write_file_atomically(
-      base / "diagnosis.json",
-      finite_json_text(diagnosis_json(d), (base / "diagnosis.json").string(), 2) + "\n");
+  nlohmann::json document = diagnosis_json(d);
+  stamp_version(document);
+  write_file_atomically(base / "diagnosis.json",
+                        finite_json_text(document, (base / "diagnosis.json").string(), 2) + "\n");
   write_file_atomically(base / "report.html", diagnosis_html(d));
   write_file_atomically(base / "traces.csv", diagnosis_traces_csv(d));
 }

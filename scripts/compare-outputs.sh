@@ -19,9 +19,11 @@ trap 'rm -rf "$work"' EXIT
 data=$shared/data
 failures=0
 
-# Lines that carry a wall-clock time or a temporary path, removed before comparing.
+# Lines that carry a wall-clock time or a temporary path, removed before comparing; the JSON
+# documents' "version" (the build's git revision) masked.
 mask() {
   sed -E -e 's#'"$work"'/(old|new)#OUT#g' \
+    -e 's/"version": ?"[^"]*"/"version": VERSION/g' \
     -e '/"([a-z_]*seconds|elapsed[a-z_]*|time_s|solve_time[a-z_]*)"/d' \
     -e 's/, [0-9.]+ s$//' \
     -e 's/[0-9.]+ ?(s|ms) (wall|cpu|elapsed)//g' -e 's/(in|took) [0-9.]+ ?s\b//g' \

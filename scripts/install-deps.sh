@@ -11,6 +11,8 @@ pkgs+=(libopenmpi-dev openmpi-bin)  # rheomag sweep under mpirun (optional at bu
 if [ "${1:-}" = --tests ]; then
   pkgs+=(libgtest-dev libgmock-dev libbenchmark-dev clang-format)
   pkgs+=(chromium)  # headless screenshot test of the diagnosis report (skipped when absent)
+  # the Python module (python/, built by scripts/build.sh without --main), its tests and example
+  pkgs+=(python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib)
 fi
 missing=()
 for p in "${pkgs[@]}"; do
