@@ -3,19 +3,12 @@
 #include <cmath>
 #include <cstdio>
 
+#include "figures/scaled.hpp"
 #include "plot/line_plot.hpp"
 
 namespace rheomag::figures {
 
 namespace {
-
-/// `values` scaled by `factor`.
-std::vector<double> scaled(const std::vector<double>& values, double factor) {
-  std::vector<double> out;
-  out.reserve(values.size());
-  for (double v : values) out.push_back(factor * v);
-  return out;
-}
 
 /// "label = 0.706 T".
 std::string tesla_label(const char* label, double value) {

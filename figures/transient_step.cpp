@@ -2,19 +2,12 @@
 
 #include <cstdio>
 
+#include "figures/scaled.hpp"
 #include "plot/line_plot.hpp"
 
 namespace rheomag::figures {
 
 namespace {
-
-/// `values` times `factor`.
-std::vector<double> scaled_by(const std::vector<double>& values, double factor) {
-  std::vector<double> out;
-  out.reserve(values.size());
-  for (double v : values) out.push_back(factor * v);
-  return out;
-}
 
 /// The t63 / t90 guides [ms] of the flux linkage, those that were reached.
 std::vector<plot::Guide> rise_guides(const transient::TransientResult& r) {
@@ -35,7 +28,7 @@ std::vector<plot::Guide> rise_guides(const transient::TransientResult& r) {
 
 plot::Figure transient_step_figure(const transient::TransientResult& result,
                                    const std::string& title, int width, int height) {
-  const std::vector<double> t_ms = scaled_by(result.time, 1e3);
+  const std::vector<double> t_ms = scaled(result.time, 1e3);
   const std::vector<plot::Guide> guides = rise_guides(result);
   plot::LinePlot current;
   current.title = title + ": coil current";
@@ -48,7 +41,7 @@ plot::Figure transient_step_figure(const transient::TransientResult& result,
   lambda.x_label = "t [ms]";
   lambda.y_label = "lambda [mWb]";
   lambda.series.push_back(
-      {"lambda(t)", t_ms, scaled_by(result.flux_linkage, 1e3), plot::series_colour(1)});
+      {"lambda(t)", t_ms, scaled(result.flux_linkage, 1e3), plot::series_colour(1)});
   lambda.guides = guides;
   lambda.guides.push_back({false, 1e3 * result.final_flux_linkage, "static lambda at the end"});
   plot::LinePlot gaps;
