@@ -47,7 +47,8 @@ void run(const TransientCliOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   std::unique_ptr<transient::VtkSeries> series;
   if (!o.vtk_series.empty())
-    series = std::make_unique<transient::VtkSeries>(o.vtk_series, *step.set_up.solver, o.vtk_stride);
+    series =
+        std::make_unique<transient::VtkSeries>(o.vtk_series, *step.set_up.solver, o.vtk_stride);
   transient::StateCallback on_state;
   if (series) on_state = [&](const transient::TransientState& s) { series->write(s); };
   const transient::TransientResult result = step.set_up.solver->run(step.options, on_state);
