@@ -11,6 +11,7 @@
 #include "case/femm_sidecar.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/output_set.hpp"
 #include "magnetostatics/domain.hpp"
 
 namespace {
@@ -30,11 +31,16 @@ void run(const ExportCommandOptions& o) {
     throw rheomag::InputError(sidecar_path.string() +
                               " exists and is not a FEMM sidecar (no [fem] table); the gaps of " +
                               o.fem + " go there: choose another name for the .fem");
-  rheomag::write_file_atomically(o.fem, rheomag::cases::write_femm(closed, {}));
+  // The model and its sidecar replace an earlier pair together.
+  rheomag::OutputSet pair(std::filesystem::path(o.fem).parent_path(), "--fem");
+  rheomag::write_file_atomically(pair.staged(std::filesystem::path(o.fem).filename().string()),
+                                 rheomag::cases::write_femm(closed, {}));
+  if (!sidecar.empty())
+    rheomag::write_file_atomically(pair.staged(sidecar_path.filename().string()), sidecar);
+  pair.commit();
   std::cout << "wrote " << o.fem << " (FEMM 4.2 magnetostatic model)\n";
-  if (sidecar.empty()) return;
-  rheomag::write_file_atomically(sidecar_path.string(), sidecar);
-  std::cout << "wrote " << sidecar_path.string() << " (its fluid gaps, for rheomag)\n";
+  if (!sidecar.empty())
+    std::cout << "wrote " << sidecar_path.string() << " (its fluid gaps, for rheomag)\n";
 }
 
 const bool export_registered = rheomag::app::register_command([](CLI::App& root) {

@@ -122,6 +122,14 @@ InterruptCleanupFile::~InterruptCleanupFile() {
   registry.files.erase(slot_);
 }
 
+InterruptDeferral::InterruptDeferral() {
+  interrupt_registry().mutex.lock();  // the watcher takes it before it ends the process
+}
+
+InterruptDeferral::~InterruptDeferral() {
+  interrupt_registry().mutex.unlock();
+}
+
 pid_t fork_worker_process() {
   sigset_t interrupts, previous;
   sigemptyset(&interrupts);

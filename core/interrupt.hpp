@@ -33,6 +33,17 @@ class InterruptCleanupFile {
   int slot_ = -1;
 };
 
+/// Holds back the end of an interrupted process for its lifetime: a signal that arrives meanwhile
+/// ends the process only afterwards. For a short section that must not be cut in half (renaming
+/// a set of output files into place); it must not create or release an InterruptCleanupFile.
+class InterruptDeferral {
+ public:
+  InterruptDeferral();
+  ~InterruptDeferral();
+  InterruptDeferral(const InterruptDeferral&) = delete;
+  InterruptDeferral& operator=(const InterruptDeferral&) = delete;
+};
+
 /// fork() for a worker process (TetGen): signals are blocked around the fork, the child gets
 /// the default SIGINT/SIGTERM actions (it runs no watcher), and the parent registers the child
 /// to be killed (SIGKILL) if the parent is interrupted. Returns what fork returns.

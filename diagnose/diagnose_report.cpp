@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/finite_output.hpp"
 #include "core/html_text.hpp"
+#include "core/output_set.hpp"
 #include "core/version.hpp"
 #include "diagnose/candidate.hpp"
 
@@ -259,16 +260,16 @@ std::string diagnosis_html(const Diagnosis& d) {
 }
 
 void write_diagnosis_outputs(const Diagnosis& d, const std::string& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError("--out " + dir + ": cannot create the folder (" + ec.message() + ")");
-  const std::filesystem::path base(dir);
+  // The three files replace the old diagnosis together: a failure keeps the old set whole.
+  OutputSet set(dir, "--out");
   nlohmann::json document = diagnosis_json(d);
   stamp_version(document);
-  write_file_atomically(base / "diagnosis.json",
-                        finite_json_text(document, (base / "diagnosis.json").string(), 2) + "\n");
-  write_file_atomically(base / "report.html", diagnosis_html(d));
-  write_file_atomically(base / "traces.csv", diagnosis_traces_csv(d));
+  const std::string json_name = (std::filesystem::path(dir) / "diagnosis.json").string();
+  write_file_atomically(set.staged("diagnosis.json"),
+                        finite_json_text(document, json_name, 2) + "\n");
+  write_file_atomically(set.staged("report.html"), diagnosis_html(d));
+  write_file_atomically(set.staged("traces.csv"), diagnosis_traces_csv(d));
+  set.commit();
 }
 
 }  // namespace rheomag::diagnose

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "core/error.hpp"
+#include "core/output_set.hpp"
 #include "figures/gap_profile.hpp"
 #include "figures/inductance.hpp"
 
@@ -22,14 +23,22 @@ std::string field_map_title(const SolvedCase& solved) {
   return title;
 }
 
-/// Writes `figure` as dir/stem.svg and dir/stem.png, appending both paths to `written`.
-void write_both(const plot::Figure& figure, const std::filesystem::path& dir,
-                const std::string& stem, std::vector<std::filesystem::path>& written) {
+/// Stages `figure` as stem.svg and stem.png of `set`, appending their final paths to `written`.
+void write_both(const plot::Figure& figure, const OutputSet& set, const std::string& stem,
+                std::vector<std::filesystem::path>& written) {
   for (const char* ext : {".svg", ".png"}) {
-    const std::filesystem::path path = dir / (stem + ext);
-    figure.write(path, path.string());
+    const std::filesystem::path path = set.folder() / (stem + ext);
+    figure.write(set.staged(stem + ext), path.string());
     written.push_back(path);
   }
+}
+
+/// True for a picture of an earlier picture set (a gap the design no longer has, a sweep's
+/// lambda_L): replaced or removed with the new set.
+bool is_set_picture(const std::string& name) {
+  const bool picture = plot::is_picture_path(name);
+  return picture && (name.rfind("gap_", 0) == 0 || name.rfind("lambda_L.", 0) == 0 ||
+                     name.rfind("field_map.", 0) == 0);
 }
 
 }  // namespace
@@ -45,23 +54,21 @@ std::string file_name_part(const std::string& name) {
 std::vector<std::filesystem::path> write_solve_pictures(const std::filesystem::path& dir,
                                                         const SolvedCase& solved,
                                                         const FieldMapOptions& options) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec)
-    throw InputError("--out " + dir.string() + ": cannot create the folder (" + ec.message() + ")");
+  OutputSet set(dir, "--out");
   std::vector<std::filesystem::path> written;
   FieldMapOptions map_options = options;
   if (map_options.title.empty()) map_options.title = field_map_title(solved);
   write_both(draw_field_map(solved.solver, solved.solution, solved.results, map_options).figure,
-             dir, "field_map", written);
+             set, "field_map", written);
   for (const magnetostatics::GapResult& gap : solved.results.gaps) {
     if (gap.profile.s.empty()) continue;
-    write_both(gap_profile_figure(gap, 900, 560), dir, "gap_" + file_name_part(gap.name), written);
+    write_both(gap_profile_figure(gap, 900, 560), set, "gap_" + file_name_part(gap.name), written);
   }
   if (!solved.sweep.empty() && !solved.results.circuits.empty()) {
-    write_both(inductance_figure(solved.sweep, solved.results.circuits.front().name, 900, 800), dir,
+    write_both(inductance_figure(solved.sweep, solved.results.circuits.front().name, 900, 800), set,
                "lambda_L", written);
   }
+  set.commit(is_set_picture);
   return written;
 }
 

@@ -20,6 +20,7 @@
 #include "core/error.hpp"
 #include "core/finite_output.hpp"
 #include "core/input_file.hpp"
+#include "core/output_set.hpp"
 #include "core/quantity_domain.hpp"
 
 namespace rheomag::lumped {
@@ -497,8 +498,12 @@ void write_recording(const Recording& rec, const std::string& csv_path) {
        << " (shared/docs/recording-format.md)\n"
        << doc << "\n";
 
-  write_file_atomically(csv_path, csv.str());
-  write_file_atomically(sidecar_path_for(csv_path), side.str());
+  // The CSV and its sidecar replace the old pair together: a failure keeps both old files.
+  const fs::path csv_file(csv_path), sidecar_file(sidecar_path_for(csv_path));
+  OutputSet pair(csv_file.parent_path(), csv_path);
+  write_file_atomically(pair.staged(csv_file.filename().string()), csv.str());
+  write_file_atomically(pair.staged(sidecar_file.filename().string()), side.str());
+  pair.commit();
 }
 
 }  // namespace rheomag::lumped

@@ -12,6 +12,7 @@
 #include "case/femm_sidecar.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/output_set.hpp"
 #include "magnetostatics/domain.hpp"
 #include "magnetostatics/report.hpp"
 #include "optimise/continuous.hpp"
@@ -174,7 +175,11 @@ OptimiseResult run_optimisation(const cases::Case& c, const OptimiseOptions& opt
       result.conflicts.push_back("design variable " + key + " at its bound");
   }
 
-  std::filesystem::create_directories(options.out_dir);
+  // The optimum, its field, history and front replace an earlier run's files as a set.
+  OutputSet files(options.out_dir, "--out");
+  const auto staged = [&files](const std::filesystem::path& path) {
+    return files.staged(path.filename().string());
+  };
   const std::string stem = c.name.empty() ? c.source.stem().string() : c.name;
   // A .fem base gives a .fem design (and its sidecar): a TOML case cannot hold a FEMM model.
   result.case_file = options.out_dir / (stem + (c.femm ? "_optimal.fem" : "_optimal.toml"));
@@ -186,15 +191,15 @@ OptimiseResult run_optimisation(const cases::Case& c, const OptimiseOptions& opt
   const cases::Case best = best_evaluator->case_at(result.optimal.x);
   if (c.femm) {
     const cases::Problem closed = magnetostatics::close_domain(best.problem);
-    write_file_atomically(result.case_file, cases::write_femm(closed, {}));
+    write_file_atomically(staged(result.case_file), cases::write_femm(closed, {}));
     const std::string sidecar = cases::femm_sidecar_text(best, closed);
     if (!sidecar.empty())
-      write_file_atomically(cases::femm_sidecar_path(result.case_file), header + sidecar);
+      write_file_atomically(staged(cases::femm_sidecar_path(result.case_file)), header + sidecar);
   } else {
-    write_file_atomically(result.case_file, header + cases::case_file_text(best) + "\n");
+    write_file_atomically(staged(result.case_file), header + cases::case_file_text(best) + "\n");
   }
   const auto& field = best_evaluator->last_field();
-  magnetostatics::write_results_vtu(result.vtu_file.string(), *field.solver, field.solution,
+  magnetostatics::write_results_vtu(staged(result.vtu_file).string(), *field.solver, field.solution,
                                     field.results);
 
   // The epsilon-constraint front of the chosen combination, each level a continuous optimum.
@@ -207,9 +212,12 @@ OptimiseResult run_optimisation(const cases::Case& c, const OptimiseOptions& opt
       return optimise_continuous(e, level, from, nullptr, scale, settings, history).report;
     };
     result.pareto = pareto_front(spec, best_continuous, optimise, [&e] { return e.fe_solves(); });
-    result.pareto_files = write_pareto(options.out_dir, spec, *result.pareto);
+    for (const auto& path : write_pareto(files.staged(""), spec, *result.pareto))
+      result.pareto_files.push_back(options.out_dir / path.filename());
   }
-  write_file_atomically(result.history_file, history_csv(spec, history));
+  write_file_atomically(staged(result.history_file), history_csv(spec, history));
+  files.commit(
+      [](const std::string& name) { return name == "pareto.csv" || name == "pareto.png"; });
   result.fe_solves = solves_done + best_evaluator->fe_solves();
   result.meshes = meshes_done + best_evaluator->meshes();
   result.seconds =

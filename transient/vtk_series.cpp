@@ -1,6 +1,7 @@
 #include "transient/vtk_series.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <system_error>
 #include <utility>
@@ -31,14 +32,17 @@ std::vector<double> eddy_current_density(const TransientSolver& solver,
   return j;
 }
 
+/// True for a state file name of a series (state_NNNNN.vtu).
+bool is_state_file(const std::string& name) {
+  if (name.size() != 15 || name.rfind("state_", 0) != 0 || name.substr(11) != ".vtu") return false;
+  return std::all_of(name.begin() + 6, name.begin() + 11,
+                     [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; });
+}
+
 }  // namespace
 
 VtkSeries::VtkSeries(std::filesystem::path dir, const TransientSolver& solver, int stride)
-    : dir_(std::move(dir)), solver_(solver), stride_(std::max(1, stride)) {
-  std::error_code error;
-  std::filesystem::create_directories(dir_, error);
-  if (error) throw InputError("--vtk-series: cannot create " + dir_.string());
-}
+    : files_(std::move(dir), "--vtk-series"), solver_(solver), stride_(std::max(1, stride)) {}
 
 void VtkSeries::write(const TransientState& s) {
   if (seen_++ % stride_ == 0) {
@@ -65,7 +69,7 @@ void VtkSeries::write_now(const TransientState& s) {
   mesh::VtuFields eddy;
   const bool axisymmetric = statics.problem().symmetry == cases::Symmetry::axisymmetric;
   eddy.add_cell_scalar(axisymmetric ? "J_phi" : "J_z", eddy_current_density(solver_, s.a_rate));
-  magnetostatics::write_results_vtu((dir_ / name).string(), statics, solution, results, eddy);
+  magnetostatics::write_results_vtu(files_.staged(name).string(), statics, solution, results, eddy);
   collection_ << "    <DataSet timestep=\"" << s.time << "\" part=\"0\" file=\"" << name
               << "\"/>\n";
 }
@@ -73,10 +77,11 @@ void VtkSeries::write_now(const TransientState& s) {
 void VtkSeries::finish() {
   if (kept_) write_now(*kept_);
   kept_.reset();
-  write_file_atomically(dir_ / "series.pvd",
+  write_file_atomically(files_.staged("series.pvd"),
                         "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
                         "version=\"0.1\">\n  <Collection>\n" +
                             collection_.str() + "  </Collection>\n</VTKFile>\n");
+  files_.commit([](const std::string& name) { return is_state_file(name); });
 }
 
 }  // namespace rheomag::transient

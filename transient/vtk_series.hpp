@@ -6,6 +6,7 @@
 #include <optional>
 #include <sstream>
 
+#include "core/output_set.hpp"
 #include "magnetostatics/solver.hpp"
 #include "transient/transient_solver.hpp"
 
@@ -14,7 +15,9 @@ namespace rheomag::transient {
 /// Writes the first state, every `stride`-th after it and the last one as DIR/state_NNNNN.vtu
 /// plus DIR/series.pvd (ParaView's time series). Each state has the static fields of
 /// write_results_vtu and the eddy-current density J_phi (J_z planar) = -sigma dA/dt as a cell
-/// array [A/m^2] (the element's mean of dA/dt over the last step; 0 in stranded coils).
+/// array [A/m^2] (the element's mean of dA/dt over the last step; 0 in stranded coils). The
+/// files are staged and replace the folder's previous series as a set in finish(): a run that
+/// fails or is interrupted leaves the old series whole.
 class VtkSeries {
  public:
   /// Creates `dir` (InputError naming --vtk-series if it cannot); `solver` gives mesh, circuits
@@ -25,7 +28,8 @@ class VtkSeries {
   /// it is due; keeps it otherwise, in case it is the last.
   void write(const TransientState& s);
 
-  /// Writes the last state if it was kept, then series.pvd listing every state written.
+  /// Writes the last state if it was kept, then series.pvd listing every state written, and
+  /// moves the set into the folder (removing the previous series' states beyond the new ones).
   void finish();
 
   /// Number of .vtu files written so far.
@@ -34,7 +38,7 @@ class VtkSeries {
  private:
   void write_now(const TransientState& s);
 
-  std::filesystem::path dir_;
+  OutputSet files_;
   const TransientSolver& solver_;
   int stride_ = 1;
   int seen_ = 0;
