@@ -120,8 +120,13 @@ std::string fitted_model_note() {
 
 }  // namespace
 
-Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options) {
+Diagnosis diagnose(const lumped::Recording& recording, const DiagnoseOptions& options) {
   Clock clock(options.progress);
+  // Memory and time grow with the samples: a recording too long is thinned, and says so.
+  const std::size_t factor = lumped::thinning_factor(recording.t.size());
+  const lumped::Recording thinned =
+      lumped::every_nth_sample(factor > 1 ? recording : lumped::Recording{}, factor);
+  const lumped::Recording& rec = factor > 1 ? thinned : recording;
   const ModelBaseline* fitted = options.baseline_model ? &*options.baseline_model : nullptr;
   auto chosen = std::make_unique<DiagnosisModel>(rec, fitted);
   check_informative(*chosen);
@@ -252,6 +257,8 @@ Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options)
     d.notes.push_back(
         "[rig] chamber_volume not given: compressibility assumed 2e-5 m^3 of oil "
         "per chamber");
+  if (factor > 1)
+    d.notes.push_back("recording thinned to " + lumped::thinning_note(recording.t.size(), factor));
   if (model.fitted_baseline()) d.notes.push_back(fitted_model_note());
   if (model.constant_field())
     d.notes.push_back("the recording has no coil input: the field is taken as constant");

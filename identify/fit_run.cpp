@@ -18,6 +18,7 @@
 #include "identify/greybox.hpp"
 #include "identify/repeatability.hpp"
 #include "identify/valve_chain_fit.hpp"
+#include "lumped/recording_excerpt.hpp"
 
 namespace rheomag::identify {
 
@@ -240,15 +241,37 @@ FitRun run_fit(const FitRequest& o) {
     throw InputError("--plot needs gnuplot on PATH (Debian package gnuplot-nox)");
   Recording rec = o.load_recording(o.recording);
   const std::size_t n = rec.t.size();
-  const SampleRange train =
+  SampleRange train =
       o.train.empty() ? SampleRange{0, n} : lumped::parse_sample_range(o.train, n, "--train");
+  Validation val = read_validation(o, rec, train);
+  // Memory and time grow with the samples: a recording too long is thinned (the ranges, given
+  // in its own samples, follow), and so is a validation recording.
+  std::vector<std::string> thinning;
+  if (const std::size_t factor = lumped::thinning_factor(n); factor > 1) {
+    rec = lumped::every_nth_sample(rec, factor);
+    train = lumped::thinned_range(train, factor);
+    if (val.range) val.range = lumped::thinned_range(*val.range, factor);
+    thinning.push_back(o.recording + ": " + lumped::thinning_note(n, factor));
+    if (train.begin >= train.end)
+      throw InputError("--train " + o.train + ": no sample left after thinning the recording to " +
+                       thinning.back());
+  }
+  if (val.other) {
+    const std::size_t other_n = val.other->t.size();
+    if (const std::size_t factor = lumped::thinning_factor(other_n); factor > 1) {
+      val.other = lumped::every_nth_sample(*val.other, factor);
+      thinning.push_back(o.validate + ": " + lumped::thinning_note(other_n, factor));
+    }
+  }
+  if (o.progress)
+    for (const std::string& note : thinning)
+      o.progress({"recording thinned", 0, 0, 0, note, false});
   rec.require_varying(rec.meta.output, train.begin, train.end);
-  const Validation val = read_validation(o, rec, train);
   const FitReport report = black_box     ? fit_black_box_model(o, rec, train, val)
                            : valve_chain ? fit_valve_chain_model(o, rec, train, val)
                                          : fit_grey_box_model(o, rec, train, val);
   if (!o.plot.empty()) write_plot(report, o, rec, train, val);
-  FitRun run{o, std::move(rec), train, val, report, std::nullopt, std::nullopt};
+  FitRun run{o, std::move(rec), train, val, report, std::nullopt, std::nullopt, thinning};
   run.train_repeatability = repeatability_of(run.recording, train);
   if (report.validation)
     run.validation_repeatability =
@@ -275,6 +298,7 @@ nlohmann::json fit_run_json(const FitRun& run) {
   if (val.range) j["validation_range"] = {val.range->begin, val.range->end};
   if (val.other) j["validation_file"] = o.validate;
   j["mode"] = o.mode == EvalMode::simulation ? "simulation" : "prediction";
+  if (!run.thinning.empty()) j["thinned"] = run.thinning;
   return j;
 }
 
@@ -295,6 +319,7 @@ void write_fit_run_text(const FitRun& run, std::ostream& out) {
   };
   out << format_text("model %s (%s mode)\n", r.model.c_str(),
                      o.mode == EvalMode::simulation ? "simulation" : "prediction");
+  for (const std::string& note : run.thinning) out << "samples: " << note << "\n";
   const auto repeatability = [&out](const std::optional<double>& rep) {
     if (rep)
       out << format_text("%-34s FIT %7.2f %%   (its own mean cycle: no periodic model beats it)\n",

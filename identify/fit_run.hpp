@@ -60,6 +60,9 @@ struct FitRun {
   /// FIT% of the recording's own mean cycle on the training / validation samples (periodic
   /// drives only, identify/repeatability.hpp).
   std::optional<double> train_repeatability, validation_repeatability;
+  /// How a recording too long was thinned ("REC.csv: every 50-th of its ... samples"), if any;
+  /// the sample ranges above are then the thinned recording's.
+  std::vector<std::string> thinning;
 };
 
 /// Reads the recording and validation data, fits the model, writes the plot if asked. InputError
