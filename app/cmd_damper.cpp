@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/command.hpp"
+#include "app/progress_lines.hpp"
 #include "case/case_file.hpp"
 #include "core/error.hpp"
 #include "figures/device_curves.hpp"
@@ -28,7 +29,8 @@ void run_damper(const DamperCli& o) {
   if (!o.plot.empty() && !plot::is_picture_path(o.plot))
     throw InputError("--plot: expected a file name ending in .png or .svg");
   const auto report =
-      valve::evaluate_damper(cases::load_case(o.case_file), o.currents, o.velocities);
+      valve::evaluate_damper(cases::load_case(o.case_file), o.currents, o.velocities,
+                             app::progress_lines("damper", std::cerr, 2.0, 2.0));
   if (!o.plot.empty()) figures::damper_curves_figure(report, 900, 600).write(o.plot, "--plot");
   if (o.json) {
     nlohmann::json j = valve::damper_json(report);

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/command.hpp"
+#include "app/progress_lines.hpp"
 #include "core/error.hpp"
 #include "diagnose/diagnose_report.hpp"
 #include "diagnose/diagnose_run.hpp"
@@ -136,10 +137,7 @@ const bool diagnose_registered = app::register_command([](CLI::App& root) {
     if (!o->baseline.empty())
       options.baseline_model =
           diagnose::ModelBaseline{identify::read_fit_model_json(o->baseline), o->baseline};
-    if (!o->quiet)
-      options.progress = [](const ProgressEvent& e) {
-        std::cerr << "diagnose: " << e.stage << (e.detail.empty() ? "" : " ") << e.detail << "\n";
-      };
+    if (!o->quiet) options.progress = rheomag::app::progress_lines("diagnose", std::cerr);
     const auto d = diagnose::diagnose(rec, options);
     if (!o->out.empty()) diagnose::write_diagnosis_outputs(d, o->out);
     if (o->json)

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/command.hpp"
+#include "app/progress_lines.hpp"
 #include "case/case_file.hpp"
 #include "core/error.hpp"
 #include "figures/valve_curves.hpp"
@@ -48,7 +49,8 @@ void run_valve(const ValveCli& o) {
       throw InputError("--temperature: " + why + " (where the linear resistivity of copper holds)");
     options.temperature = o.temperature;
   }
-  const valve::ValveReport report = valve::evaluate_valve(c, options, o.currents, o.flows);
+  const valve::ValveReport report = valve::evaluate_valve(
+      c, options, o.currents, o.flows, app::progress_lines("valve", std::cerr, 2.0, 2.0));
   if (!o.plot.empty()) figures::valve_curves_figure(report, 900, 800).write(o.plot, "--plot");
   if (o.json) {
     nlohmann::json j = valve::valve_json(report);

@@ -22,7 +22,8 @@ std::string seconds_text(double s) {
 
 }  // namespace
 
-ProgressCallback progress_lines(const std::string& prefix, std::ostream& out, double interval) {
+ProgressCallback progress_lines(const std::string& prefix, std::ostream& out, double interval,
+                                double quiet_for) {
   struct State {
     std::mutex mutex;
     double last_printed = -1e300;
@@ -30,6 +31,7 @@ ProgressCallback progress_lines(const std::string& prefix, std::ostream& out, do
   auto state = std::make_shared<State>();
   return [=, &out](const ProgressEvent& e) {
     std::lock_guard<std::mutex> lock(state->mutex);
+    if (e.elapsed < quiet_for) return;
     const bool last_step = e.total > 0.0 && e.done >= e.total;
     if (e.detail.empty() && !last_step && e.elapsed - state->last_printed < interval) return;
     state->last_printed = e.elapsed;

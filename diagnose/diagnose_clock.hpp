@@ -27,6 +27,13 @@ class Clock {
     event.elapsed = elapsed();
     progress_(event);
   }
+  /// Reports `event` timed from `from` (a stage's start, so that its done of total gives the time
+  /// left in the stage).
+  void report_since(ProgressEvent event, time_point from) const {
+    if (!progress_) return;
+    event.elapsed = since(from);
+    progress_(event);
+  }
   /// A finished stage: its name and its own time in the detail.
   void stage(const std::string& what) {
     const auto now = std::chrono::steady_clock::now();

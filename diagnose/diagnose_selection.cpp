@@ -121,6 +121,15 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evi
     if (step > 0) recalibrate_nuisances(model, current, settings);
     const double bic_now = bic(current.sse, n, current.values.size());
     const bool first_step = step == 0;
+    const auto step_started = std::chrono::steady_clock::now();
+    double candidates_done = 0.0;
+    // Each candidate's result, as "k of at most N" of this step (N counts those skipped).
+    const auto report = [&](const Candidate* c, const std::string& detail) {
+      candidates_done += 1.0;
+      clock.report_since({"step " + std::to_string(step + 1) + " " + c->name(), candidates_done,
+                          static_cast<double>(candidates.size()), 0.0, detail, true},
+                         step_started);
+    };
     for (const Candidate* c : candidates) {
       if (std::find(current.effects.begin(), current.effects.end(), c) != current.effects.end())
         continue;
@@ -159,16 +168,14 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evi
         if (!(grid_sse < current.sse)) {
           const double db = bic_now - bic(grid_sse, n, s.size());
           d.candidates.push_back({c, step, 0.0, db, true});
-          clock.report({"step " + std::to_string(step + 1) + " " + c->name(), 0.0, 0.0, 0.0,
-                        "screened out (no decade of its parameter helps)"});
+          report(c, "screened out (no decade of its parameter helps)");
           continue;
         }
         auto candidate_settings = settings;
         candidate_settings.fixed = held_in_candidates(model, effects, current.values);
         auto f = fit_model(model, effects, s, candidate_settings);
         const double db = bic_now - bic(f.sse, n, f.values.size());
-        clock.report({"step " + std::to_string(step + 1) + " " + c->name(), 0.0, 0.0, 0.0,
-                      "dBIC " + num(db) + " in " + num(Clock::since(started)) + " s"});
+        report(c, "dBIC " + num(db) + " in " + num(Clock::since(started)) + " s");
         d.candidates.push_back({c, step, lumped::fit_percent(y, f.prediction), db});
         tried.push_back({c, std::move(f), db});
       } catch (const ConvergenceError&) {

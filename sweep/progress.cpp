@@ -47,6 +47,29 @@ void SweepProgress::record(bool ok) {
     last_draw_ = now;
     draw(false);
   }
+  warn_if_long(std::chrono::duration<double>(now - start_).count());
+}
+
+std::string long_run_warning(long long done, long long total, double elapsed) {
+  // The pace of a few designs (or of 30 s) is enough to tell a run of days from one of hours.
+  if (done <= 0 || done >= total || (done < 3 && elapsed < 30.0)) return "";
+  const double left = elapsed / static_cast<double>(done) * static_cast<double>(total - done);
+  if (!(left > SweepProgress::kLongRun)) return "";
+  char line[320];
+  std::snprintf(line, sizeof line,
+                "sweep: warning: at the pace of the first %lld designs the remaining %lld take "
+                "about %.1f days; stop it at any time (Ctrl-C keeps the finished rows and a new "
+                "run resumes after them), or split it with --shard K/N",
+                done, total - done, left / 86400.0);
+  return line;
+}
+
+void SweepProgress::warn_if_long(double elapsed) {
+  if (warned_ || !out_) return;
+  const std::string warning = long_run_warning(done_, total_, elapsed);
+  if (warning.empty()) return;
+  warned_ = true;
+  *out_ << (terminal_ ? "\n" : "") << warning << "\n" << std::flush;
 }
 
 void SweepProgress::finish() {

@@ -81,14 +81,18 @@ BrakeChain::BrakeChain(const cases::Case& c, BrakeOptions options)
 
 std::vector<BrakePoint> BrakeChain::evaluate(const std::vector<double>& currents,
                                              const std::vector<double>& speeds) {
-  return per_current<BrakePoint>(
-      currents, speeds.size(), "speed",
-      [&](const magnetostatics::MagnetostaticSolver& solver, const DeviceField& field) {
-        const SolvedBrake brake(solver, field.solution, field.results, fluid_, options_);
-        std::vector<BrakePoint> points;
-        for (double w : speeds) points.push_back(brake.point(w));
-        return points;
-      });
+  return per_current<BrakePoint>(currents, speeds.size(), "speed",
+                                 [&](const magnetostatics::MagnetostaticSolver& solver,
+                                     const DeviceField& field, const PointDone& point_done) {
+                                   const SolvedBrake brake(solver, field.solution, field.results,
+                                                           fluid_, options_);
+                                   std::vector<BrakePoint> points;
+                                   for (double w : speeds) {
+                                     points.push_back(brake.point(w));
+                                     point_done();
+                                   }
+                                   return points;
+                                 });
 }
 
 }  // namespace rheomag::valve

@@ -18,7 +18,7 @@ nlohmann::json torque_json(const fluid::ShearTorque& t) {
 }  // namespace
 
 BrakeReport evaluate_brake(const cases::Case& c, const std::vector<double>& currents,
-                           const std::vector<double>& speeds) {
+                           const std::vector<double>& speeds, const ProgressCallback& progress) {
   const BrakeOptions options = read_brake_options(c);
   const std::vector<double> at_currents = currents_or_case(c, currents);
   const std::vector<double> at_speeds = speeds.empty() ? options.speeds : speeds;
@@ -27,6 +27,7 @@ BrakeReport evaluate_brake(const cases::Case& c, const std::vector<double>& curr
                      ": no speed: pass --speed W[,W...] (rad/s) or set [brake] "
                      "speed in the case");
   BrakeChain chain(c, options);
+  chain.set_progress(progress);
   return {c.name, chain.fluid().name, chain.evaluate(at_currents, at_speeds)};
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "case/case_file.hpp"
+#include "core/progress.hpp"
 #include "valve/brake.hpp"
 
 namespace rheomag::valve {
@@ -18,9 +19,10 @@ struct BrakeReport {
 };
 
 /// Reads [brake] and evaluates the brake at `currents` (empty: the case's) and `speeds` (empty:
-/// [brake] speed; InputError if neither gives one).
+/// [brake] speed; InputError if neither gives one); `progress` (if set) hears of every point.
 BrakeReport evaluate_brake(const cases::Case& c, const std::vector<double>& currents,
-                           const std::vector<double>& speeds);
+                           const std::vector<double>& speeds,
+                           const ProgressCallback& progress = {});
 
 /// The JSON document of `rheomag brake --json` (SI units).
 nlohmann::json brake_json(const BrakeReport& report);

@@ -149,11 +149,14 @@ std::vector<DamperPoint> DamperChain::evaluate_at(const std::vector<double>& cur
                                                   const std::vector<double>& values, bool flows) {
   return per_current<DamperPoint>(
       currents, values.size(), "velocity",
-      [&](const magnetostatics::MagnetostaticSolver& solver, const DeviceField& field) {
+      [&](const magnetostatics::MagnetostaticSolver& solver, const DeviceField& field,
+          const PointDone& point_done) {
         const SolvedDamper damper(solver, field.solution, field.results, fluid_, options_);
         std::vector<DamperPoint> points;
-        for (double value : values)
+        for (double value : values) {
           points.push_back(damper.point(flows ? value / damper.piston_area() : value));
+          point_done();
+        }
         return points;
       });
 }

@@ -8,7 +8,8 @@
 namespace rheomag::valve {
 
 DamperReport evaluate_damper(const cases::Case& c, const std::vector<double>& currents,
-                             const std::vector<double>& velocities) {
+                             const std::vector<double>& velocities,
+                             const ProgressCallback& progress) {
   const DamperOptions options = read_damper_options(c);
   const std::vector<double> at_currents = currents_or_case(c, currents);
   const std::vector<double> at_velocities = velocities.empty() ? options.velocities : velocities;
@@ -17,6 +18,7 @@ DamperReport evaluate_damper(const cases::Case& c, const std::vector<double>& cu
                      ": no velocity: pass --velocity V[,V...] (m/s) or set "
                      "[damper] velocity in the case");
   DamperChain chain(c, options);
+  chain.set_progress(progress);
   DamperReport report;
   report.case_name = c.name;
   report.fluid = chain.fluid().name;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "case/case_file.hpp"
+#include "core/progress.hpp"
 #include "valve/damper.hpp"
 
 namespace rheomag::valve {
@@ -21,8 +22,10 @@ struct DamperReport {
 
 /// Reads [damper] and evaluates the piston at `currents` (empty: the case's) and `velocities`
 /// (empty: [damper] velocity; InputError if neither gives one).
+/// `progress` (if set) hears of every point evaluated.
 DamperReport evaluate_damper(const cases::Case& c, const std::vector<double>& currents,
-                             const std::vector<double>& velocities);
+                             const std::vector<double>& velocities,
+                             const ProgressCallback& progress = {});
 
 /// The JSON document of `rheomag damper --json` (SI units).
 nlohmann::json damper_json(const DamperReport& report);

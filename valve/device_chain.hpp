@@ -2,12 +2,16 @@
 // What the damper and brake chains share: the case's fluid, the mesh and solver set up once, the
 // coil, and one field solve per coil current handed to the device's own evaluation.
 
+#include <chrono>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "case/case_file.hpp"
 #include "core/error.hpp"
+#include "core/format_text.hpp"
+#include "core/progress.hpp"
 #include "fluid/fluid.hpp"
 #include "magnetostatics/solver.hpp"
 #include "valve/coil.hpp"
@@ -30,19 +34,40 @@ class DeviceChain {
   /// Coil quantities at `current` with inductance `inductance` (needs [valve] wire).
   CoilProperties coil(double current, double inductance) const;
   const fluid::Fluid& fluid() const { return fluid_; }
+  /// Reports the evaluation's progress (points done of currents x points) to `progress`.
+  void set_progress(ProgressCallback progress) { progress_ = std::move(progress); }
 
  protected:
-  /// Solves the field at each current in turn and appends visit(solver, field) (a vector of
-  /// points) to the result; InputError (naming `what`) if `currents` or `count` is empty.
+  /// Called by a device's visit after each point it evaluated.
+  using PointDone = std::function<void()>;
+
+  /// Solves the field at each current in turn and appends visit(solver, field, point_done) (a
+  /// vector of `count` points) to the result; InputError (naming `what`) if `currents` or
+  /// `count` is empty.
   template <class Point, class Visit>
   std::vector<Point> per_current(const std::vector<double>& currents, std::size_t count,
                                  const std::string& what, Visit visit) {
     if (currents.empty() || count == 0)
       throw InputError(device_ + ": needs at least one current and one " + what);
+    const auto start = std::chrono::steady_clock::now();
+    const double total = static_cast<double>(currents.size() * count);
+    double done = 0.0;
+    std::string stage;
+    const auto report = [&] {
+      if (!progress_) return;
+      const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+      progress_({stage, done, total, elapsed.count(), "", false});
+    };
+    const PointDone point_done = [&] {
+      done += 1.0;
+      report();
+    };
     std::vector<Point> points;
     for (double current : currents) {
+      stage = format_text("%s at %.6g A", device_.c_str(), current);
+      report();
       const DeviceField field = solve_at_current(*solver_, current);
-      for (Point& p : visit(*solver_, field)) points.push_back(std::move(p));
+      for (Point& p : visit(*solver_, field, point_done)) points.push_back(std::move(p));
     }
     return points;
   }
@@ -52,6 +77,7 @@ class DeviceChain {
   fluid::Fluid fluid_;
   ValveOptions valve_options_;
   CoilSpec coil_;
+  ProgressCallback progress_;
 };
 
 }  // namespace rheomag::valve

@@ -29,14 +29,18 @@ std::vector<ValvePoint> ValveChain::evaluate(const std::vector<double>& currents
   for (double flow : flows)
     if (!(std::isfinite(flow) && flow > 0.0))
       throw InputError("valve: flow rates must be > 0 m^3/s");
-  return per_current<ValvePoint>(
-      currents, flows.size(), "flow rate",
-      [&](const magnetostatics::MagnetostaticSolver& solver, const DeviceField& field) {
-        const SolvedValve valve(solver, field.solution, field.results, fluid_, valve_options_);
-        std::vector<ValvePoint> points;
-        for (double flow : flows) points.push_back(valve.point(flow));
-        return points;
-      });
+  return per_current<ValvePoint>(currents, flows.size(), "flow rate",
+                                 [&](const magnetostatics::MagnetostaticSolver& solver,
+                                     const DeviceField& field, const PointDone& point_done) {
+                                   const SolvedValve valve(solver, field.solution, field.results,
+                                                           fluid_, valve_options_);
+                                   std::vector<ValvePoint> points;
+                                   for (double flow : flows) {
+                                     points.push_back(valve.point(flow));
+                                     point_done();
+                                   }
+                                   return points;
+                                 });
 }
 
 }  // namespace rheomag::valve

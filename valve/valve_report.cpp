@@ -32,13 +32,15 @@ nlohmann::json segment_json(const SegmentResult& s) {
 }  // namespace
 
 ValveReport evaluate_valve(const cases::Case& c, const ValveOptions& options,
-                           const std::vector<double>& currents, const std::vector<double>& flows) {
+                           const std::vector<double>& currents, const std::vector<double>& flows,
+                           const ProgressCallback& progress) {
   const std::vector<double> at_currents = currents_or_case(c, currents);
   const std::vector<double> at_flows = flows.empty() ? options.flows : flows;
   if (at_flows.empty())
     throw InputError(c.source.string() + ": no flow rate: pass --flow Q[,Q...] (m^3/s) or set " +
                      "[valve] flow in the case");
   ValveChain chain(c, options);
+  chain.set_progress(progress);
   ValveReport report;
   report.case_name = c.name;
   report.fluid = chain.fluid().name;

@@ -28,7 +28,8 @@ struct ValveReport {
 /// Evaluates the case's valve at `currents` (empty: the case's) and `flows` (empty: [valve] flow;
 /// InputError if neither gives one) with `options`, and its coil at the largest current.
 ValveReport evaluate_valve(const cases::Case& c, const ValveOptions& options,
-                           const std::vector<double>& currents, const std::vector<double>& flows);
+                           const std::vector<double>& currents, const std::vector<double>& flows,
+                           const ProgressCallback& progress = {});
 
 /// The JSON document of `rheomag valve --json` (SI units).
 nlohmann::json valve_json(const ValveReport& report);

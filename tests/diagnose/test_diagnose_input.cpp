@@ -127,8 +127,19 @@ TEST(DiagnoseCli, WritesJsonReportAndTraces) {
   rheomag::lumped::write_recording(v.noisy, (dir / "rec.csv").string());
   const std::string bin = RHEOMAG_BINARY;
   ASSERT_EQ(run(bin + " diagnose " + (dir / "rec.csv").string() + " --json --out " +
-                (dir / "out").string() + " > " + (dir / "stdout.json").string()),
+                (dir / "out").string() + " > " + (dir / "stdout.json").string() + " 2> " +
+                (dir / "stderr.txt").string()),
             0);
+  // Progress: each candidate of a selection step counted with the time left in the step.
+  const std::string progress = slurp(dir / "stderr.txt");
+  EXPECT_NE(progress.find("diagnose: step 1 "), std::string::npos) << progress;
+  EXPECT_NE(progress.find(" of at most "), std::string::npos) << progress;
+  EXPECT_NE(progress.find(" left: "), std::string::npos) << progress;
+  // The output set: its three files, no staging folder left.
+  int files = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir / "out"))
+    ++files;
+  EXPECT_EQ(files, 3);
   const auto j = nlohmann::json::parse(slurp(dir / "stdout.json"));
   for (const char* key : {"baseline", "mismatch", "missing_physics", "final"})
     EXPECT_TRUE(j.contains(key)) << key;
