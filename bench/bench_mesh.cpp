@@ -5,8 +5,11 @@
 
 #include <cmath>
 #include <map>
+#include <string>
 #include <utility>
+#include <vector>
 
+#include "case/region_pslg.hpp"
 #include "mesh/elevate.hpp"
 #include "mesh/mesher.hpp"
 
@@ -78,6 +81,37 @@ void BM_ElevateToP2(benchmark::State& state) {
   state.counters["triangles"] = static_cast<double>(linear.triangles.size());
 }
 BENCHMARK(BM_ElevateToP2)->Arg(500)->Arg(250)->Unit(benchmark::kMillisecond);
+
+/// Argument: number of 0.2 mm square regions on a 0.3 mm grid (plus a background); times the
+/// case's geometry checks and the PSLG (outlines_to_pslg) and the mesh of it (issue #36: 10^4
+/// regions took 28 s, 10^5 minutes, in pairwise checks; now grid-filed).
+void BM_ManyRegions(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const int side = static_cast<int>(std::ceil(std::sqrt(n)));
+  std::vector<rheomag::cases::RegionOutline> outlines;
+  for (int k = 0; k < n; ++k) {
+    const double r = 1e-3 + 3e-4 * (k / side), z = 3e-4 * (k % side);
+    rheomag::cases::RegionOutline o;
+    o.name = "r" + std::to_string(k);
+    o.material = "Air";
+    o.outline = {{r, z}, {r + 2e-4, z}, {r + 2e-4, z + 2e-4}, {r, z + 2e-4}};
+    o.where = "bench";
+    outlines.push_back(std::move(o));
+  }
+  rheomag::mesh::Mesh mesh;
+  for (auto _ : state) {
+    const Pslg pslg = rheomag::cases::outlines_to_pslg(outlines, "bench", "air");
+    mesh = rheomag::mesh::generate_mesh(pslg);
+    benchmark::DoNotOptimize(mesh.nodes.data());
+  }
+  state.counters["triangles"] = static_cast<double>(mesh.triangles.size());
+}
+BENCHMARK(BM_ManyRegions)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
 
 }  // namespace
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "case/case_sections.hpp"
@@ -335,16 +336,17 @@ void build_case(Case& c) {
     derive_coil_turns(input.winding, outlines);
   }
 
-  // Names must be unique; the background name is reserved.
+  // Names must be unique (a set of those seen: 10^5 regions take no pairwise comparison); the
+  // background name is reserved.
+  std::set<std::string> names;
   for (std::size_t i = 0; i < outlines.size(); ++i) {
     if (outlines[i].name == background_name)
       throw InputError(outlines[i].where +
                        ": region name 'air' is reserved for the background "
                        "(the space between regions); choose another name");
-    for (std::size_t j = 0; j < i; ++j)
-      if (outlines[j].name == outlines[i].name)
-        throw InputError(outlines[i].where + ": region name '" + outlines[i].name +
-                         "' is used twice");
+    if (!names.insert(outlines[i].name).second)
+      throw InputError(outlines[i].where + ": region name '" + outlines[i].name +
+                       "' is used twice");
   }
   if (problem.symmetry == Symmetry::axisymmetric) {
     for (const RegionOutline& region : outlines)

@@ -4,24 +4,68 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 #include <utility>
 
 #include "case/geometry_check.hpp"
 #include "core/error.hpp"
+#include "mesh/box_grid.hpp"
 
 namespace rheomag::cases {
 namespace {
 
 using mesh::Point;
 
-/// Index of `p` in `points`, appending it when no point lies within `tolerance`.
-int add_point(std::vector<Point>& points, const Point& p, double tolerance) {
-  for (std::size_t i = 0; i < points.size(); ++i)
-    if (std::abs(points[i].r - p.r) <= tolerance && std::abs(points[i].z - p.z) <= tolerance)
-      return static_cast<int>(i);
-  points.push_back(p);
-  return static_cast<int>(points.size()) - 1;
+/// The merged points of the outlines: a point within `tolerance` (in r and in z) of an earlier
+/// one is that point. Filed by cells of the tolerance's size, so a merge looks at 9 cells.
+class MergedPoints {
+ public:
+  MergedPoints(std::vector<Point>& points, double tolerance)
+      : points_(points), cell_(tolerance > 0.0 ? tolerance : 1.0), tolerance_(tolerance) {}
+
+  /// Index of `p` in the points, appending it when no point lies within the tolerance (the
+  /// earliest such point when several do).
+  int add(const Point& p) {
+    const long long cr = cell_of(p.r), cz = cell_of(p.z);
+    int found = -1;
+    for (long long dr = -1; dr <= 1; ++dr)
+      for (long long dz = -1; dz <= 1; ++dz) {
+        const auto it = cells_.find({cr + dr, cz + dz});
+        if (it == cells_.end()) continue;
+        for (int i : it->second) {
+          const Point& q = points_[static_cast<std::size_t>(i)];
+          if (std::abs(q.r - p.r) <= tolerance_ && std::abs(q.z - p.z) <= tolerance_ &&
+              (found < 0 || i < found))
+            found = i;
+        }
+      }
+    if (found >= 0) return found;
+    points_.push_back(p);
+    const int index = static_cast<int>(points_.size()) - 1;
+    cells_[{cr, cz}].push_back(index);
+    return index;
+  }
+
+ private:
+  long long cell_of(double x) const {
+    const double c = std::floor(x / cell_);
+    return std::isfinite(c) ? static_cast<long long>(std::clamp(c, -4e18, 4e18)) : 0;
+  }
+  std::vector<Point>& points_;
+  double cell_, tolerance_;
+  std::map<std::pair<long long, long long>, std::vector<int>> cells_;
+};
+
+/// The bounding box of `outline`, grown by `margin` on every side.
+mesh::Box2 box_of(const std::vector<Point>& outline, double margin) {
+  mesh::Box2 b{HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (const Point& p : outline) {
+    b.r_lo = std::min(b.r_lo, p.r), b.r_hi = std::max(b.r_hi, p.r);
+    b.z_lo = std::min(b.z_lo, p.z), b.z_hi = std::max(b.z_hi, p.z);
+  }
+  b.r_lo -= margin, b.z_lo -= margin, b.r_hi += margin, b.z_hi += margin;
+  return b;
 }
 
 }  // namespace
@@ -38,14 +82,24 @@ mesh::Pslg outlines_to_pslg(const std::vector<RegionOutline>& regions, const std
   if (regions.empty()) throw InputError(source + ": no regions defined");
   const double tolerance = outline_tolerance(regions);
   for (const RegionOutline& region : regions) check_simple_polygon(region, tolerance);
+  // Only regions whose boxes touch can overlap: pairs in the same order as all pairs would be.
+  std::vector<mesh::Box2> region_boxes;
+  for (const RegionOutline& region : regions)
+    region_boxes.push_back(box_of(region.outline, tolerance));
+  const mesh::BoxGrid region_grid(region_boxes);
   for (std::size_t i = 0; i < regions.size(); ++i)
-    for (std::size_t j = i + 1; j < regions.size(); ++j)
-      check_disjoint(regions[i], regions[j], tolerance);
+    for (const int j : region_grid.candidates(region_boxes[i]))
+      if (static_cast<std::size_t>(j) > i) check_disjoint(regions[i], regions[j], tolerance);
 
   mesh::Pslg pslg;
   pslg.source = source;
+  MergedPoints merged(pslg.points, tolerance);
   for (const RegionOutline& region : regions)
-    for (const Point& p : region.outline) add_point(pslg.points, p, tolerance);
+    for (const Point& p : region.outline) merged.add(p);
+  std::vector<mesh::Box2> point_boxes;
+  point_boxes.reserve(pslg.points.size());
+  for (const Point& p : pslg.points) point_boxes.push_back({p.r, p.z, p.r, p.z});
+  const mesh::BoxGrid point_grid(point_boxes);
 
   std::set<std::pair<int, int>> seen;
   for (const RegionOutline& region : regions) {
@@ -57,12 +111,12 @@ mesh::Pslg outlines_to_pslg(const std::vector<RegionOutline>& regions, const std
       const double length2 = dr * dr + dz * dz;
       // Parameters of every PSLG point lying on this edge, ends included.
       std::vector<std::pair<double, int>> on_edge;
-      for (std::size_t k = 0; k < pslg.points.size(); ++k) {
-        const Point& p = pslg.points[k];
+      for (const int k : point_grid.candidates(box_of({a, b}, 2.0 * tolerance))) {
+        const Point& p = pslg.points[static_cast<std::size_t>(k)];
         const double t = ((p.r - a.r) * dr + (p.z - a.z) * dz) / length2;
         if (t < -1e-12 || t > 1.0 + 1e-12) continue;
         if (std::hypot(p.r - (a.r + t * dr), p.z - (a.z + t * dz)) > tolerance) continue;
-        on_edge.emplace_back(t, static_cast<int>(k));
+        on_edge.emplace_back(t, k);
       }
       std::sort(on_edge.begin(), on_edge.end());
       for (std::size_t k = 0; k + 1 < on_edge.size(); ++k) {

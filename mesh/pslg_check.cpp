@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "mesh/box_grid.hpp"
 
 namespace rheomag::mesh {
 
@@ -201,9 +202,21 @@ void check_no_crossings(const Pslg& pslg, const std::vector<PreparedSegment>& se
 
 void check_seeds_off_segments(const Pslg& pslg, const std::vector<PreparedSegment>& segments,
                               double tolerance) {
+  // Only segments whose boxes hold the seed can hold it: checked in the order of all segments.
+  std::vector<Box2> boxes;
+  boxes.reserve(segments.size());
+  for (const PreparedSegment& s : segments) {
+    const Point& a = pslg.points[s.a];
+    const Point& b = pslg.points[s.b];
+    boxes.push_back({std::min(a.r, b.r) - tolerance, std::min(a.z, b.z) - tolerance,
+                     std::max(a.r, b.r) + tolerance, std::max(a.z, b.z) + tolerance});
+  }
+  const BoxGrid grid(boxes);
   for (std::size_t i = 0; i < pslg.regions.size(); ++i) {
     const RegionSeed& region = pslg.regions[i];
-    for (const PreparedSegment& s : segments) {
+    const Point& p = region.seed;
+    for (const int k : grid.candidates({p.r, p.z, p.r, p.z})) {
+      const PreparedSegment& s = segments[static_cast<std::size_t>(k)];
       auto [dist_sq, t] = distance_to_segment(region.seed, pslg.points[s.a], pslg.points[s.b]);
       if (dist_sq <= tolerance * tolerance)
         fail(pslg, "the seed point " + format_point(region.seed) + " of region " +
