@@ -100,14 +100,15 @@ void run(const SolveCommandOptions& o) {
     run_3d(o, c);
     return;
   }
-  if (!o.max_memory.empty())
-    throw rheomag::InputError("--max-memory bounds the 3D mesh; it is available with --3d");
   if (o.order) problem.order = *o.order;
   for (double i : o.sweep) check_current(i, "--sweep");
   if (!o.sweep.empty() && problem.circuits.empty())
     throw rheomag::InputError(o.case_path + ": --sweep given but the case has no circuit");
 
-  SolveResult solved = solve_problem(problem);
+  rheomag::magnetostatics::SolveOptions options;
+  if (!o.max_memory.empty())
+    options.mesh.max_memory = rheomag::parse_memory_size(o.max_memory, "--max-memory");
+  SolveResult solved = solve_problem(problem, options);
   SolveOutput out;
   out.case_name = c.name, out.case_path = o.case_path, out.description = c.description;
   out.mesh_seconds = solved.mesh_seconds;
@@ -188,10 +189,11 @@ const bool solve_registered = rheomag::app::register_command([](CLI::App& root) 
                   "meridian mesh swept through angles graded towards the features: much faster "
                   "for half and full models)")
       ->check(rheomag::app::non_empty());
-  cmd->add_option("--max-memory", o->max_memory,
-                  "With --3d: refuse, before meshing, a mesh whose solve is estimated to need "
-                  "more memory than this: bytes with a K, M, G or T suffix (powers of 1024), "
-                  "e.g. 8G (default: 3/4 of the physical memory)")
+  cmd->add_option(
+         "--max-memory", o->max_memory,
+         "Refuse, before meshing, a mesh (2D, or 3D with --3d) whose solve is estimated to need "
+         "more memory than this: bytes with a K, M, G or T suffix (powers of 1024), "
+         "e.g. 8G (default: 3/4 of the memory available: physical, ulimit -v, cgroup)")
       ->check(rheomag::app::non_empty());
   cmd->callback([o] { run(*o); });
 });

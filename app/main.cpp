@@ -1,5 +1,6 @@
 // rheomag: command-line entry point. Subcommands live in app/cmd_*.cpp.
 
+#include <SuiteSparse_config.h>
 #include <glog/logging.h>
 #include <vtkLogger.h>
 #include <vtkObject.h>
@@ -89,6 +90,13 @@ void silence_third_party_logging() {
   // status and rheomag names the file in its own message.
   vtkObject::GlobalWarningDisplayOff();
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  // CHOLMOD prints its errors ("CHOLMOD error: out of memory") with printf on stdout, where they
+  // broke --json; the solvers turn its status into rheomag's own message and exit code.
+#if SUITESPARSE_MAIN_VERSION >= 7
+  SuiteSparse_config_printf_func_set(nullptr);
+#else
+  SuiteSparse_config.printf_func = nullptr;
+#endif
 }
 
 }  // namespace rheomag::app

@@ -1,10 +1,12 @@
 #include "core/memory_limit.hpp"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <string>
 
 #include "core/error.hpp"
@@ -18,9 +20,30 @@ double physical_memory_bytes() {
   return static_cast<double>(pages) * static_cast<double>(page_size);
 }
 
+double available_memory_bytes() {
+  double bytes = physical_memory_bytes();
+  const auto lower = [&bytes](double limit) {
+    if (limit > 0.0 && std::isfinite(limit) && (bytes <= 0.0 || limit < bytes)) bytes = limit;
+  };
+  // ulimit -v / -d: the process cannot map more, whatever the machine has.
+  for (const int resource : {RLIMIT_AS, RLIMIT_DATA}) {
+    struct rlimit limit {};
+    if (::getrlimit(resource, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+      lower(static_cast<double>(limit.rlim_cur));
+  }
+  // A container's memory (cgroup v2, then v1): "max" or a huge number means no limit.
+  for (const char* file :
+       {"/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"}) {
+    std::ifstream in(file);
+    double value = 0.0;
+    if (in >> value) lower(value);
+  }
+  return bytes;
+}
+
 double default_memory_limit() {
-  const double physical = physical_memory_bytes();
-  return physical > 0 ? 0.75 * physical : 4.0 * 1024 * 1024 * 1024;
+  const double available = available_memory_bytes();
+  return available > 0 ? 0.75 * available : 4.0 * 1024 * 1024 * 1024;
 }
 
 double parse_memory_size(std::string_view text, std::string_view option) {

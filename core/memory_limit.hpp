@@ -10,8 +10,12 @@ namespace rheomag {
 /// Physical memory of the machine [bytes] (sysconf); 0 when unknown.
 double physical_memory_bytes();
 
-/// Default memory limit of a run [bytes]: 3/4 of the physical memory (the rest for the system
-/// and other programs); 4 GiB when the physical memory is unknown.
+/// Memory this process may use [bytes]: the physical memory, lowered by an address-space or
+/// data limit (ulimit -v / -d) and a container's cgroup limit; 0 when unknown.
+double available_memory_bytes();
+
+/// Default memory limit of a run [bytes]: 3/4 of available_memory_bytes() (the rest for the
+/// system, other programs and the code itself); 4 GiB when it is unknown.
 double default_memory_limit();
 
 /// A memory size from text: a positive number of bytes with an optional suffix K, M, G or T

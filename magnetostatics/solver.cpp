@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "magnetostatics/cholmod_status.hpp"
 #include "magnetostatics/local_correction.hpp"
 #include "magnetostatics/preconditioned_cg.hpp"
 #include "magnetostatics/serial_openmp.hpp"
@@ -123,6 +124,7 @@ MagnetostaticSolver::MagnetostaticSolver(cases::Problem problem, mesh::Mesh mesh
   if (dofs_.reduced_count() > 0) {
     const SerialOpenMp serial;
     cholesky_.analyzePattern(tangent_);
+    throw_if_out_of_memory(cholesky_);
     if (cholesky_.info() != Eigen::Success) {
       throw ConvergenceError("CHOLMOD symbolic analysis failed for " +
                              std::to_string(dofs_.reduced_count()) + " unknowns");
@@ -196,6 +198,7 @@ void MagnetostaticSolver::factorize_tangent() {
   const SerialOpenMp serial;
   cholesky_.factorize(tangent_);
   ++factorizations_;
+  throw_if_out_of_memory(cholesky_);
   if (cholesky_.info() != Eigen::Success) {
     has_factor_ = false;
     throw ConvergenceError("CHOLMOD factorisation failed (tangent not positive definite, " +
@@ -229,6 +232,7 @@ Eigen::VectorXd MagnetostaticSolver::solve_jacobian(const Eigen::VectorXd& rhs, 
 Eigen::VectorXd MagnetostaticSolver::solve_factorized(const Eigen::VectorXd& rhs) {
   const SerialOpenMp serial;
   Eigen::VectorXd x = cholesky_.solve(rhs);
+  throw_if_out_of_memory(cholesky_);
   if (cholesky_.info() != Eigen::Success || !x.allFinite()) {
     throw ConvergenceError("CHOLMOD triangular solve failed");
   }

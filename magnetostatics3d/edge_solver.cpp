@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "magnetostatics/cholmod_status.hpp"
 #include "magnetostatics/serial_openmp.hpp"
 
 namespace rheomag::magnetostatics3d {
@@ -23,6 +24,7 @@ class EdgeSolver::System : public magnetostatics::NonlinearSystem {
     s_.assemble(s_.to_edges(x), nullptr, true);
     const magnetostatics::SerialOpenMp serial;
     s_.cholesky_.factorize(s_.tangent_);
+    magnetostatics::throw_if_out_of_memory(s_.cholesky_);
     if (s_.cholesky_.info() != Eigen::Success) {
       throw ConvergenceError("CHOLMOD could not factorise the 3D tangent (not positive definite)");
     }
@@ -101,6 +103,7 @@ EdgeSolver::EdgeSolver(const TetMesh& mesh, std::vector<magnetostatics::Reluctiv
   if (n > 0) {
     const magnetostatics::SerialOpenMp serial;
     cholesky_.analyzePattern(tangent_);
+    magnetostatics::throw_if_out_of_memory(cholesky_);
     if (cholesky_.info() != Eigen::Success)
       throw ConvergenceError("CHOLMOD symbolic analysis failed for " + std::to_string(n) +
                              " unknowns");

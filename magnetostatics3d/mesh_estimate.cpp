@@ -128,7 +128,8 @@ void require_mesh_within_memory(const MeshEstimate3d& estimate, double max_memor
                    ") would have about " + count_text(tetrahedra) +
                    " tetrahedra and its solve would need about " + memory_size_text(bytes) +
                    ", more than the " + memory_size_text(max_memory) +
-                   " allowed (--max-memory; default 3/4 of the physical memory); most of them in " +
+                   " allowed (--max-memory; default 3/4 of the memory available: physical, ulimit "
+                   "-v, cgroup); most of them in " +
                    driver + "; expected coarser elements there or a larger --max-memory");
 }
 

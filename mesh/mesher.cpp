@@ -15,6 +15,7 @@
 #include <unordered_map>
 
 #include "core/error.hpp"
+#include "core/memory_limit.hpp"
 #include "mesh/elevate.hpp"
 #include "mesh/initial_points.hpp"
 #include "mesh/pslg_check.hpp"
@@ -22,6 +23,12 @@
 #include "mesh/size_field.hpp"
 
 namespace rheomag::mesh {
+
+double solve_bytes_per_triangle(int order) {
+  // 1.14 GiB / 1e6 unknowns = 1.2 kB per unknown; P2 has about 2 unknowns per triangle, P1 about
+  // 1/2; half as much again for the mesher's own structures and the results.
+  return order == 1 ? 900.0 : 3600.0;
+}
 
 namespace {
 
@@ -117,7 +124,8 @@ std::vector<double> region_sizes(const Pslg& pslg, const MeshOptions& options,
   return size;
 }
 
-/// Refuses meshes whose estimated element count exceeds options.max_elements.
+/// Refuses meshes whose estimated element count exceeds options.max_elements, or whose solve
+/// would need more than options.max_memory.
 void check_mesh_size(const Pslg& pslg, const MeshOptions& options,
                      const std::vector<detail::RegionGeometry>& geometry,
                      const std::vector<double>& size) {
@@ -131,7 +139,9 @@ void check_mesh_size(const Pslg& pslg, const MeshOptions& options,
       estimate += 2.0 * geometry[r].area / (std::sqrt(3.0) / 4.0 * size[r] * size[r]);
       if (smallest == size.size() || size[r] < size[smallest]) smallest = r;
     }
-  if (estimate > static_cast<double>(options.max_elements)) {
+  const double max_memory = options.max_memory > 0.0 ? options.max_memory : default_memory_limit();
+  const double bytes = estimate * solve_bytes_per_triangle(options.order);
+  if (estimate > static_cast<double>(options.max_elements) || bytes > max_memory) {
     // The sizes are in metres here whatever the input's units: say the smallest one so a unit
     // mistake shows (a case in mm converts its mesh_size to metres before it reaches the mesher).
     std::ostringstream smallest_size, count;
@@ -140,10 +150,15 @@ void check_mesh_size(const Pslg& pslg, const MeshOptions& options,
     // any integer type holds (a cast printed -9223372036854775808).
     count.precision(3);
     count << estimate;
-    throw InputError(pslg_name(pslg) + ": the requested mesh sizes give about " + count.str() +
-                     " elements, more than the " + std::to_string(options.max_elements) +
-                     " allowed; expected larger mesh sizes (the smallest is " +
-                     smallest_size.str() + ")");
+    const bool too_many = estimate > static_cast<double>(options.max_elements);
+    throw InputError(
+        pslg_name(pslg) + ": the requested mesh sizes give about " + count.str() + " elements" +
+        (too_many ? ", more than the " + std::to_string(options.max_elements) + " allowed"
+                  : " whose solve would need about " + memory_size_text(bytes) +
+                        ", more than the " + memory_size_text(max_memory) +
+                        " allowed (--max-memory; default 3/4 of the memory available: physical, "
+                        "ulimit -v, cgroup)") +
+        "; expected larger mesh sizes (the smallest is " + smallest_size.str() + ")");
   }
 }
 

@@ -19,7 +19,14 @@ struct MeshOptions {
   double grading = 0.3;                    ///< size growth per unit distance from a finer
                                            ///< region or segment; 0 = no grading
   long max_elements = 5'000'000;           ///< refuse (InputError) meshes estimated larger
+  double max_memory = 0.0;                 ///< refuse meshes whose solve is estimated to need
+                                           ///< more [bytes]; 0 = default_memory_limit()
 };
+
+/// Memory a 2D solve needs per triangle of `order` [bytes], for the estimate before meshing:
+/// measured peak resident memory of `bench_solve` (1.14 GiB at 1e6 P2 unknowns, about 2 per
+/// triangle; docs/performance.md) and half as much again for the mesher and the results.
+double solve_bytes_per_triangle(int order);
 
 /// Meshes the PSLG: validates it (InputError naming Pslg::source), labels each enclosed area
 /// with its region, refines to the size and angle criteria and returns a mesh of `order`.

@@ -1,6 +1,7 @@
 #include "transient/step_system.hpp"
 
 #include "core/error.hpp"
+#include "magnetostatics/cholmod_status.hpp"
 #include "magnetostatics/preconditioned_cg.hpp"
 #include "magnetostatics/serial_openmp.hpp"
 
@@ -113,6 +114,7 @@ void StepSystem::factorize() {
     ops_.cholesky->factorize(k_);
   }
   ++factorizations_;
+  magnetostatics::throw_if_out_of_memory(*ops_.cholesky);
   if (ops_.cholesky->info() != Eigen::Success)
     throw ConvergenceError(
         "CHOLMOD factorisation of the time-step matrix failed (not positive "
@@ -156,6 +158,7 @@ Eigen::VectorXd StepSystem::solve_k(const Eigen::VectorXd& rhs, double tolerance
     if (setup_.voltage) k_inv_f_ = ops_.factor->k_inv_f;
   }
   Eigen::VectorXd x = ops_.cholesky->solve(rhs);
+  magnetostatics::throw_if_out_of_memory(*ops_.cholesky);
   if (ops_.cholesky->info() != Eigen::Success || !x.allFinite())
     throw ConvergenceError("CHOLMOD triangular solve of the time-step matrix failed");
   return x;

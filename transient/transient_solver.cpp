@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/format_text.hpp"
+#include "magnetostatics/cholmod_status.hpp"
 #include "magnetostatics/serial_openmp.hpp"
 #include "transient/gap_flux.hpp"
 #include "transient/step_system.hpp"
@@ -136,6 +137,7 @@ TransientSolver::TransientSolver(magnetostatics::MagnetostaticSolver& statics,
   if (dofs.free_count() > 0) {
     const magnetostatics::SerialOpenMp serial;
     cholesky_.analyzePattern(assembler.pattern());
+    magnetostatics::throw_if_out_of_memory(cholesky_);
     if (cholesky_.info() != Eigen::Success)
       throw ConvergenceError("CHOLMOD symbolic analysis of the time-step matrix failed");
   }

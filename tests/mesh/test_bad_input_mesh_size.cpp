@@ -49,5 +49,32 @@ TEST(BadInput, AbsurdlyFineMeshCountIsPrintedAsANumber) {
       << message;
 }
 
+// The 2D mesher bounds memory as the 3D ones do (issue #36): a mesh whose solve needs more than
+// --max-memory is refused before meshing, naming the estimate and the limit. A 30 mm square of
+// 0.1 mm elements is about 2 x 9e-4 / (0.433 x 1e-8) = 4.2e5 triangles, 1.5 GB at 3600 B each.
+TEST(BadInput, MeshOverTheMemoryLimitIsRefusedNamingIt) {
+  fixtures::PslgBuilder b;
+  b.rectangle(0.0, 0.0, 0.03, 0.03);
+  b.region(0.015, 0.015, "pot", 1e-4);
+  b.pslg.source = "big.toml";
+  MeshOptions options;
+  options.max_memory = 256.0 * 1024 * 1024;  // 256 MiB
+  try {
+    generate_mesh(b.pslg, options);
+    FAIL() << "a 1.5 GB mesh was accepted under a 256 MiB limit";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("about 4.16e+05 elements whose solve would need about 1.5"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("more than the 268 MB allowed (--max-memory"), std::string::npos)
+        << message;
+  }
+  // The same mesh with the default limit (3/4 of this machine's memory) is not refused by it.
+  options.max_memory = 1e15;
+  options.max_elements = 1000;  // but by the element count, before any meshing
+  EXPECT_THROW(generate_mesh(b.pslg, options), InputError);
+}
+
 }  // namespace
 }  // namespace rheomag::mesh
