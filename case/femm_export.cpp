@@ -34,6 +34,39 @@ std::string num(double v) {
   return buffer;
 }
 
+/// `text` as a quoted .fem string. FEMM reads a name up to the end of its line and to the next
+/// double quote, so a name holding either cannot be written: InputError naming `what` (e.g.
+/// "material name") and the source, never a file that does not read back.
+std::string femm_quoted(const std::string& text, const std::string& what,
+                        const std::string& source) {
+  for (const char ch : text) {
+    if (ch == '"' || (static_cast<unsigned char>(ch) < 0x20 && ch != '\t')) {
+      std::string shown;
+      for (const char c : text)
+        shown += c == '\n'   ? std::string("\\n")
+                 : c == '\r' ? std::string("\\r")
+                             : std::string(1, c);
+      throw InputError(source + ": " + what + " '" + shown +
+                       "' cannot be written to a .fem: FEMM's names are one line without "
+                       "double quotes; expected a name without a line break, control character "
+                       "or '\"' (rename it in the case)");
+    }
+  }
+  return "\"" + text + "\"";
+}
+
+/// `text` made safe for a .fem comment: line breaks, control characters and double quotes
+/// become spaces or single quotes.
+std::string femm_comment_text(std::string text) {
+  for (char& ch : text) {
+    if (ch == '"')
+      ch = '\'';
+    else if (static_cast<unsigned char>(ch) < 0x20)
+      ch = ' ';
+  }
+  return text;
+}
+
 /// One block label of the written file.
 struct Label {
   mesh::Point at;
@@ -207,13 +240,14 @@ FemmModel write_femm_for_mesh(const Problem& problem, const mesh::Mesh& m) {
       << "\n[LengthUnits] =  " << unit.second
       << "\n[ProblemType] =  " << (axisymmetric ? "axisymmetric" : "planar")
       << "\n[Coordinates] =  cartesian\n"
-      << "[ACSolver]    =  0\n[Comment]     =  \"written by rheomag export from " << g.source
-      << "\"\n";
+      << "[ACSolver]    =  0\n[Comment]     =  \"written by rheomag export from "
+      << femm_comment_text(g.source) << "\"\n";
 
   out << "[PointProps]  = " << problem.point_conditions.size() << "\n";
   for (const PointCondition& p : problem.point_conditions) {
-    out << "  <BeginPoint>\n    <PointName> = \"" << p.name
-        << "\"\n    <I_re> = " << num(p.prescribed ? 0.0 : p.current)
+    out << "  <BeginPoint>\n    <PointName> = "
+        << femm_quoted(p.name, "point property name", g.source)
+        << "\n    <I_re> = " << num(p.prescribed ? 0.0 : p.current)
         << "\n    <I_im> = 0\n    <A_re> = " << num(p.prescribed ? p.a_value : 0.0)
         << "\n    <A_im> = 0\n  <EndPoint>\n";
   }
@@ -221,8 +255,8 @@ FemmModel write_femm_for_mesh(const Problem& problem, const mesh::Mesh& m) {
   for (const BoundaryCondition& b : problem.boundaries) {
     const bool mixed = b.kind == BoundaryKind::mixed;
     // FEMM's mixed condition: (1/mu) dA/dn + c0 A + c1 = 0; rheomag's: nu dA/dn + c0 A = c1.
-    out << "  <BeginBdry>\n    <BdryName> = \"" << b.name
-        << "\"\n    <BdryType> = " << (mixed ? 2 : 0)
+    out << "  <BeginBdry>\n    <BdryName> = " << femm_quoted(b.name, "boundary name", g.source)
+        << "\n    <BdryType> = " << (mixed ? 2 : 0)
         << "\n    <A_0> = " << num(mixed ? 0.0 : b.a_value)
         << "\n    <A_1> = 0\n    <A_2> = 0\n    <Phi> = 0\n    <c0> = " << num(mixed ? b.c0 : 0.0)
         << "\n    <c0i> = 0\n    <c1> = " << num(mixed ? 0.0 - b.c1 : 0.0)
@@ -236,9 +270,9 @@ FemmModel write_femm_for_mesh(const Problem& problem, const mesh::Mesh& m) {
     const Material& m = problem.materials[material];
     std::string name = m.name;
     if (name_use[name] > 1) name += "_" + std::to_string(++name_seen[name]);
-    out << "  <BeginBlock>\n    <BlockName> = \"" << name << "\"\n    <Mu_x> = " << num(m.mu_r)
-        << "\n    <Mu_y> = " << num(m.mu_r) << "\n    <H_c> = " << num(m.coercivity)
-        << "\n    <J_re> = " << num(density * 1e-6)
+    out << "  <BeginBlock>\n    <BlockName> = " << femm_quoted(name, "material name", g.source)
+        << "\n    <Mu_x> = " << num(m.mu_r) << "\n    <Mu_y> = " << num(m.mu_r)
+        << "\n    <H_c> = " << num(m.coercivity) << "\n    <J_re> = " << num(density * 1e-6)
         << "\n    <J_im> = 0\n    <Sigma> = " << num(m.conductivity.value_or(0.0) * 1e-6)
         << "\n    <d_lam> = 0\n    <Phi_h> = 0\n    <Phi_hx> = 0\n    <Phi_hy> = 0\n"
         << "    <LamType> = 0\n    <LamFill> = 1\n    <NStrands> = 0\n    <WireD> = 0\n"
@@ -248,8 +282,8 @@ FemmModel write_femm_for_mesh(const Problem& problem, const mesh::Mesh& m) {
   }
   out << "[CircuitProps]  = " << problem.circuits.size() << "\n";
   for (const Circuit& c : problem.circuits) {
-    out << "  <BeginCircuit>\n    <CircuitName> = \"" << c.name
-        << "\"\n    <TotalAmps_re> = " << num(c.current)
+    out << "  <BeginCircuit>\n    <CircuitName> = " << femm_quoted(c.name, "circuit name", g.source)
+        << "\n    <TotalAmps_re> = " << num(c.current)
         << "\n    <TotalAmps_im> = 0\n    <CircuitType> = 1\n  <EndCircuit>\n";
   }
 
@@ -295,7 +329,8 @@ FemmModel write_femm_for_mesh(const Problem& problem, const mesh::Mesh& m) {
         << (d.circuit >= 0 ? d.circuit + 1 : 0) << "\t"
         << num(m.expression.empty() ? m.degrees : 0.0) << "\t0\t"
         << (d.circuit >= 0 ? static_cast<long>(std::round(d.turns)) : 1) << "\t0";
-    if (!m.expression.empty()) out << "\t\"" << m.expression << "\"";
+    if (!m.expression.empty())
+      out << "\t" << femm_quoted(m.expression, "magnet direction expression", g.source);
     out << "\n";
   }
   model.text = out.str();

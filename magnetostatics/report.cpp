@@ -87,6 +87,7 @@ nlohmann::json results_json(const MagnetostaticSolver& solver, const Results& re
                         {"inductance", number(c.inductance)},
                         {"incremental_inductance", number(c.incremental_inductance)},
                         {"gauge_free", c.gauge_free}});
+    if (!c.warning.empty()) circuits.back()["warning"] = c.warning;
   }
   const bool has_circuit = !results.circuits.empty();
   const CircuitResult first = has_circuit ? results.circuits.front() : CircuitResult{};
@@ -147,6 +148,7 @@ std::string results_summary(const MagnetostaticSolver& solver, const Results& re
                     c.name.c_str(), c.current, c.turns, c.flux_linkage * 1e3, c.inductance * 1e3,
                     c.incremental_inductance * 1e3);
       out << line;
+      if (!c.warning.empty()) out << "    warning: " << c.warning << "\n";
     }
   }
   std::snprintf(line, sizeof line, "\nstored energy %.6g J, co-energy %.6g J\n", results.energy,

@@ -242,9 +242,16 @@ Results compute_results(const MagnetostaticSolver& solver, const Solution& solut
     CircuitResult circuit;
     circuit.name = problem.circuits[c].name;
     circuit.current = solution.currents[c];
+    bool wound = false;
     for (const cases::RegionData& region : problem.regions) {
       if (region.circuit == c) circuit.turns += region.turns;
+      wound = wound || (region.circuit == c && region.turns != 0.0);
     }
+    if (!wound && circuit.current != 0.0)
+      circuit.warning = "circuit '" + circuit.name +
+                        "' carries a current but winds no region (no block label names it with "
+                        "turns): it makes no field and links no flux, so lambda = 0; assign it to "
+                        "the coil's block labels";
     circuit.flux_linkage = solution.flux_linkage[c];
     circuit.incremental_inductance = c < static_cast<int>(solution.incremental_inductance.size())
                                          ? solution.incremental_inductance[c]

@@ -56,6 +56,8 @@ struct CircuitResult {
   /// False when lambda depends on the gauge (MagnetostaticSolver::flux_linkage_gauge_free): then
   /// flux_linkage and the inductances are NaN (not reported).
   bool gauge_free = true;
+  /// What makes the values meaningless, e.g. a driven circuit that winds no region ("": none).
+  std::string warning;
 };
 
 /// All results of one solve. Fields per element are the element averages of B (area-weighted),
