@@ -110,13 +110,29 @@ $B solve big3d.toml --3d --full --mesher swept >out.txt 2>err.txt & P=$!
 for k in $(seq 100); do grep -q "3d: solve" err.txt && break; sleep 0.1; done; sleep 4; kill -TERM $P; wait $P
 rc=$?; [ "$rc" = 143 ] || MISMATCHES=$((MISMATCHES + 1))
 printf '%-42s want %s got %s  %s\n' "SIGTERM during a 3D factorisation" 143 "$rc" "$(tail -1 err.txt | head -c 150)"
+run "2D mesh beyond --max-memory"            2 $B solve $C --max-memory 8M
+run "3D case under ulimit -v 3 GB"            2 bash -c "ulimit -v 3000000; exec $B solve holed.toml --3d --full --mesher swept"
+sed -e 's/^name = "coil"$/name = "co\\nil"/' -e 's/circuit = "coil"/circuit = "co\\nil"/' $S/tests/data/pot_core_equivalent.toml > newline_name.toml
+run "export of a circuit name with a line break" 2 $B export newline_name.toml --fem newline_name.fem
+[ -e newline_name.fem ] && echo "   a .fem was written"
+py "
+import math
+with open('long.csv','w') as f:
+  f.write('t,velocity,force\n')
+  for k in range(1000000):
+    v = 0.05*math.sin(2*math.pi*2*k*1e-4); f.write(f'{k*1e-4:.6f},{v:.6g},{400*math.tanh(v/0.01)+2000*v:.6g}\n')
+open('long.toml','w').write('[recording]\ndrive = [\"velocity\"]\noutput = \"force\"\n[rig]\nkind = \"damper\"\n')
+"
+run "fit of 10^6 rows under ulimit -v 3 GB"   0 bash -c "ulimit -v 3000000; exec $B fit long.csv --model bingham"
+grep -m1 "samples:" out.txt | sed 's/^/   /'
 mkdir -p full
 if mount -t tmpfs -o size=16k tmpfs full 2>/dev/null; then
   head -c 12000 /dev/zero > full/fill; echo old > full/field.vtu
   run "--vtk on a full disk"                  2 $B mesh $C --vtk full/field.vtu
   echo "   old file kept: $(cat full/field.vtu); temporaries left: $(ls -a full | grep -c '\.tmp')"
+  echo old > full/rec.csv; echo old > full/rec.toml
   run "simulate --out on a full disk"         2 $B simulate $S/cases/rigs/bypass_cylinder.toml --signal displacement=sine:amplitude=0.025,frequency=0.75 --signal current=constant:value=1 --duration 1 --out full/rec.csv
-  echo "   temporaries left: $(ls -a full | grep -c '\.tmp')"
+  echo "   old pair kept: $(cat full/rec.csv) $(cat full/rec.toml); temporaries left: $(ls -a full | grep -c '\.tmp\|staging')"
   umount full
 else echo "   (no tmpfs mount here: full-disk class not run)"; fi
 cd /; rm -rf "$D"
