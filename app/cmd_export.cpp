@@ -32,11 +32,15 @@ void run(const ExportCommandOptions& o) {
                               " exists and is not a FEMM sidecar (no [fem] table); the gaps of " +
                               o.fem + " go there: choose another name for the .fem");
   // The model and its sidecar replace an earlier pair together.
-  rheomag::OutputSet pair(std::filesystem::path(o.fem).parent_path(), "--fem");
-  rheomag::write_file_atomically(pair.staged(std::filesystem::path(o.fem).filename().string()),
-                                 rheomag::cases::write_femm(closed, {}));
+  rheomag::OutputSet pair(std::filesystem::path(o.fem).parent_path(), "--fem " + o.fem,
+                          rheomag::OutputSet::Folder::must_exist);
+  const std::string model = rheomag::cases::write_femm(closed, {});
+  pair.write(std::filesystem::path(o.fem).filename().string(),
+             [&](const std::filesystem::path& to) { rheomag::write_file_atomically(to, model); });
   if (!sidecar.empty())
-    rheomag::write_file_atomically(pair.staged(sidecar_path.filename().string()), sidecar);
+    pair.write(sidecar_path.filename().string(), [&](const std::filesystem::path& to) {
+      rheomag::write_file_atomically(to, sidecar);
+    });
   pair.commit();
   std::cout << "wrote " << o.fem << " (FEMM 4.2 magnetostatic model)\n";
   if (!sidecar.empty())

@@ -15,6 +15,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/finite_output.hpp"
 #include "core/interrupt.hpp"
 
 namespace rheomag {
@@ -34,14 +35,21 @@ void sync_folder(const std::filesystem::path& dir) {
 
 }  // namespace
 
-OutputSet::OutputSet(std::filesystem::path dir, std::string what)
+OutputSet::OutputSet(std::filesystem::path dir, std::string what, Folder folder)
     : dir_(std::move(dir)), what_(std::move(what)) {
   if (dir_.empty()) dir_ = ".";
   std::error_code ec;
-  std::filesystem::create_directories(dir_, ec);
-  if (ec || !std::filesystem::is_directory(dir_))
-    throw InputError(what_ + " " + dir_.string() + ": cannot create the folder (" +
-                     (ec ? ec.message() : std::string("a file of that name exists")) + ")");
+  if (folder == Folder::must_exist) {
+    if (!std::filesystem::is_directory(dir_, ec))
+      throw InputError(
+          what_ + ": cannot write into " + dir_.string() + ": " +
+          (std::filesystem::exists(dir_, ec) ? "not a folder" : "No such file or directory"));
+  } else {
+    std::filesystem::create_directories(dir_, ec);
+    if (ec || !std::filesystem::is_directory(dir_))
+      throw InputError(what_ + " " + dir_.string() + ": cannot create the folder (" +
+                       (ec ? ec.message() : std::string("a file of that name exists")) + ")");
+  }
   staging_ = dir_ / (".rheomag-staging-" + std::to_string(static_cast<long>(::getpid())));
   cleanup_ = std::make_unique<InterruptCleanupFile>(staging_);
   std::filesystem::remove_all(staging_, ec);  // a leftover of a killed run with this pid
@@ -57,6 +65,25 @@ OutputSet::~OutputSet() {
 
 std::filesystem::path OutputSet::staged(const std::string& file_name) const {
   return staging_ / file_name;
+}
+
+void OutputSet::write(const std::string& file_name,
+                      const std::function<void(const std::filesystem::path&)>& writer) const {
+  // The staging folder is an implementation detail: messages name the file where it was going.
+  const auto destination_named = [&](std::string message) {
+    const std::string from = staged(file_name).string(), to = (dir_ / file_name).string();
+    for (std::size_t at = message.find(from); at != std::string::npos;
+         at = message.find(from, at + to.size()))
+      message.replace(at, from.size(), to);
+    return message;
+  };
+  try {
+    writer(staged(file_name));
+  } catch (const NonFiniteOutputError& e) {
+    throw NonFiniteOutputError(destination_named(e.what()));
+  } catch (const InputError& e) {
+    throw InputError(destination_named(e.what()));
+  }
 }
 
 void OutputSet::commit(const std::function<bool(const std::string&)>& stale) {

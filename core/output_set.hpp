@@ -17,9 +17,19 @@ class InterruptCleanupFile;
 /// Staging folder for a set of output files bound for one folder.
 class OutputSet {
  public:
-  /// Creates `dir` if missing and a hidden staging folder inside it; InputError naming `what`
-  /// (the option, e.g. "--out") and the system's reason when either cannot be created.
-  OutputSet(std::filesystem::path dir, std::string what);
+  /// What to do when the destination folder is missing.
+  enum class Folder { create, must_exist };
+
+  /// Creates a hidden staging folder inside `dir` (and `dir` itself if missing, with
+  /// Folder::create: an output folder such as diagnose --out; a file's folder, such as the one of
+  /// simulate --out REC.csv, must exist). InputError naming `what` (the option or file) and the
+  /// system's reason otherwise.
+  OutputSet(std::filesystem::path dir, std::string what, Folder folder = Folder::create);
+
+  /// Runs `writer(staged(file_name))` (a writer of one file: write_file_atomically, VTK's, a
+  /// figure's); an InputError it throws names the file's destination, not the staging folder.
+  void write(const std::string& file_name,
+             const std::function<void(const std::filesystem::path&)>& writer) const;
   ~OutputSet();
   OutputSet(const OutputSet&) = delete;
   OutputSet& operator=(const OutputSet&) = delete;

@@ -265,10 +265,12 @@ void write_diagnosis_outputs(const Diagnosis& d, const std::string& dir) {
   nlohmann::json document = diagnosis_json(d);
   stamp_version(document);
   const std::string json_name = (std::filesystem::path(dir) / "diagnosis.json").string();
-  write_file_atomically(set.staged("diagnosis.json"),
-                        finite_json_text(document, json_name, 2) + "\n");
-  write_file_atomically(set.staged("report.html"), diagnosis_html(d));
-  write_file_atomically(set.staged("traces.csv"), diagnosis_traces_csv(d));
+  const auto text_file = [&set](const std::string& name, const std::string& text) {
+    set.write(name, [&](const std::filesystem::path& to) { write_file_atomically(to, text); });
+  };
+  text_file("diagnosis.json", finite_json_text(document, json_name, 2) + "\n");
+  text_file("report.html", diagnosis_html(d));
+  text_file("traces.csv", diagnosis_traces_csv(d));
   set.commit();
 }
 

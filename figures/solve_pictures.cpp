@@ -28,7 +28,8 @@ void write_both(const plot::Figure& figure, const OutputSet& set, const std::str
                 std::vector<std::filesystem::path>& written) {
   for (const char* ext : {".svg", ".png"}) {
     const std::filesystem::path path = set.folder() / (stem + ext);
-    figure.write(set.staged(stem + ext), path.string());
+    set.write(stem + ext,
+              [&](const std::filesystem::path& to) { figure.write(to, path.string()); });
     written.push_back(path);
   }
 }

@@ -500,9 +500,11 @@ void write_recording(const Recording& rec, const std::string& csv_path) {
 
   // The CSV and its sidecar replace the old pair together: a failure keeps both old files.
   const fs::path csv_file(csv_path), sidecar_file(sidecar_path_for(csv_path));
-  OutputSet pair(csv_file.parent_path(), csv_path);
-  write_file_atomically(pair.staged(csv_file.filename().string()), csv.str());
-  write_file_atomically(pair.staged(sidecar_file.filename().string()), side.str());
+  OutputSet pair(csv_file.parent_path(), csv_path, OutputSet::Folder::must_exist);
+  pair.write(csv_file.filename().string(),
+             [&](const fs::path& to) { write_file_atomically(to, csv.str()); });
+  pair.write(sidecar_file.filename().string(),
+             [&](const fs::path& to) { write_file_atomically(to, side.str()); });
   pair.commit();
 }
 

@@ -177,8 +177,10 @@ OptimiseResult run_optimisation(const cases::Case& c, const OptimiseOptions& opt
 
   // The optimum, its field, history and front replace an earlier run's files as a set.
   OutputSet files(options.out_dir, "--out");
-  const auto staged = [&files](const std::filesystem::path& path) {
-    return files.staged(path.filename().string());
+  // Each file written into the set under its destination's name (messages name the destination).
+  const auto text_file = [&files](const std::filesystem::path& path, const std::string& text) {
+    files.write(path.filename().string(),
+                [&](const std::filesystem::path& to) { write_file_atomically(to, text); });
   };
   const std::string stem = c.name.empty() ? c.source.stem().string() : c.name;
   // A .fem base gives a .fem design (and its sidecar): a TOML case cannot hold a FEMM model.
@@ -191,16 +193,16 @@ OptimiseResult run_optimisation(const cases::Case& c, const OptimiseOptions& opt
   const cases::Case best = best_evaluator->case_at(result.optimal.x);
   if (c.femm) {
     const cases::Problem closed = magnetostatics::close_domain(best.problem);
-    write_file_atomically(staged(result.case_file), cases::write_femm(closed, {}));
+    text_file(result.case_file, cases::write_femm(closed, {}));
     const std::string sidecar = cases::femm_sidecar_text(best, closed);
-    if (!sidecar.empty())
-      write_file_atomically(staged(cases::femm_sidecar_path(result.case_file)), header + sidecar);
+    if (!sidecar.empty()) text_file(cases::femm_sidecar_path(result.case_file), header + sidecar);
   } else {
-    write_file_atomically(staged(result.case_file), header + cases::case_file_text(best) + "\n");
+    text_file(result.case_file, header + cases::case_file_text(best) + "\n");
   }
   const auto& field = best_evaluator->last_field();
-  magnetostatics::write_results_vtu(staged(result.vtu_file).string(), *field.solver, field.solution,
-                                    field.results);
+  files.write(result.vtu_file.filename().string(), [&](const std::filesystem::path& to) {
+    magnetostatics::write_results_vtu(to.string(), *field.solver, field.solution, field.results);
+  });
 
   // The epsilon-constraint front of the chosen combination, each level a continuous optimum.
   if (spec.pareto) {
@@ -215,7 +217,7 @@ OptimiseResult run_optimisation(const cases::Case& c, const OptimiseOptions& opt
     for (const auto& path : write_pareto(files.staged(""), spec, *result.pareto))
       result.pareto_files.push_back(options.out_dir / path.filename());
   }
-  write_file_atomically(staged(result.history_file), history_csv(spec, history));
+  text_file(result.history_file, history_csv(spec, history));
   files.commit(
       [](const std::string& name) { return name == "pareto.csv" || name == "pareto.png"; });
   result.fe_solves = solves_done + best_evaluator->fe_solves();

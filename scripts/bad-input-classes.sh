@@ -127,10 +127,10 @@ run "fit of 10^6 rows under ulimit -v 3 GB"   0 bash -c "ulimit -v 3000000; exec
 grep -m1 "samples:" out.txt | sed 's/^/   /'
 mkdir -p full
 if mount -t tmpfs -o size=16k tmpfs full 2>/dev/null; then
+  echo old > full/rec.csv; echo old > full/rec.toml
   head -c 12000 /dev/zero > full/fill; echo old > full/field.vtu
   run "--vtk on a full disk"                  2 $B mesh $C --vtk full/field.vtu
   echo "   old file kept: $(cat full/field.vtu); temporaries left: $(ls -a full | grep -c '\.tmp')"
-  echo old > full/rec.csv; echo old > full/rec.toml
   run "simulate --out on a full disk"         2 $B simulate $S/cases/rigs/bypass_cylinder.toml --signal displacement=sine:amplitude=0.025,frequency=0.75 --signal current=constant:value=1 --duration 1 --out full/rec.csv
   echo "   old pair kept: $(cat full/rec.csv) $(cat full/rec.toml); temporaries left: $(ls -a full | grep -c '\.tmp\|staging')"
   umount full

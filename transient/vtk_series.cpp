@@ -69,7 +69,9 @@ void VtkSeries::write_now(const TransientState& s) {
   mesh::VtuFields eddy;
   const bool axisymmetric = statics.problem().symmetry == cases::Symmetry::axisymmetric;
   eddy.add_cell_scalar(axisymmetric ? "J_phi" : "J_z", eddy_current_density(solver_, s.a_rate));
-  magnetostatics::write_results_vtu(files_.staged(name).string(), statics, solution, results, eddy);
+  files_.write(name, [&](const std::filesystem::path& to) {
+    magnetostatics::write_results_vtu(to.string(), statics, solution, results, eddy);
+  });
   collection_ << "    <DataSet timestep=\"" << s.time << "\" part=\"0\" file=\"" << name
               << "\"/>\n";
 }
@@ -77,10 +79,11 @@ void VtkSeries::write_now(const TransientState& s) {
 void VtkSeries::finish() {
   if (kept_) write_now(*kept_);
   kept_.reset();
-  write_file_atomically(files_.staged("series.pvd"),
-                        "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
-                        "version=\"0.1\">\n  <Collection>\n" +
-                            collection_.str() + "  </Collection>\n</VTKFile>\n");
+  const std::string pvd =
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n" +
+      collection_.str() + "  </Collection>\n</VTKFile>\n";
+  files_.write("series.pvd",
+               [&](const std::filesystem::path& to) { write_file_atomically(to, pvd); });
   files_.commit([](const std::string& name) { return is_state_file(name); });
 }
 

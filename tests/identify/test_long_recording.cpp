@@ -4,7 +4,6 @@
 
 #include <gtest/gtest.h>
 
-#include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -91,26 +90,9 @@ TEST(LongRecording, FitThinsARecordingTooLongAndSaysSo) {
 TEST(LongRecording, FitInterruptedBySigintEndsCleanly) {
   const fs::path dir = fs::temp_directory_path() / "rheomag_long_recording_sigint";
   write_long_damper(dir, 450'000);
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    if (::chdir(dir.c_str()) != 0) ::_exit(120);
-    const int out = ::open("out.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int err = ::open("err.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(out, STDOUT_FILENO);
-    ::dup2(err, STDERR_FILENO);
-    ::execl(RHEOMAG_BINARY, RHEOMAG_BINARY, "fit", "rec.csv", "--model", "bouc-wen",
-            static_cast<char*>(nullptr));
-    ::_exit(121);
-  }
+  const pid_t pid = cli_test::start_rheomag(dir, {"fit", "rec.csv", "--model", "bouc-wen"});
   ASSERT_GT(pid, 0);
-  // SigCgt of /proc/PID/status: the signals the process catches, in hex; SIGINT is bit 1.
-  const auto catches_sigint = [pid] {
-    std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-    for (std::string line; std::getline(status, line);)
-      if (line.rfind("SigCgt:", 0) == 0) return (std::stoull(line.substr(7), nullptr, 16) & 2) != 0;
-    return false;
-  };
-  for (int k = 0; k < 600 && !catches_sigint(); ++k) ::usleep(50'000);
+  for (int k = 0; k < 600 && !cli_test::catches_signal(pid, SIGINT); ++k) ::usleep(50'000);
   ::usleep(1'000'000);
   ::kill(pid, SIGINT);
   int status = 0;

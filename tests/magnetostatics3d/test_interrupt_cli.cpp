@@ -19,6 +19,8 @@
 #include <thread>
 #include <vector>
 
+#include "../cli_run.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -37,32 +39,9 @@ std::string text_of(const fs::path& p) {
   return {std::istreambuf_iterator<char>(in), {}};
 }
 
-/// Starts rheomag with `args` in `dir`, stdout and stderr into out.txt and err.txt there.
-pid_t start_rheomag(const fs::path& dir, const std::vector<std::string>& args) {
-  fs::remove(dir / "err.txt");  // not the last run's lines
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    if (::chdir(dir.c_str()) != 0) ::_exit(120);
-    const int out = ::open("out.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int err = ::open("err.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(out, STDOUT_FILENO);
-    ::dup2(err, STDERR_FILENO);
-    std::vector<char*> argv{const_cast<char*>(RHEOMAG_BINARY)};
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(RHEOMAG_BINARY, argv.data());
-    ::_exit(121);
-  }
-  return pid;
-}
-
 /// True once process `pid` catches SIGTERM (its handlers are installed: the start of main).
 bool catches_sigterm(pid_t pid) {
-  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-  for (std::string line; std::getline(status, line);)
-    if (line.rfind("SigCgt:", 0) == 0)
-      return (std::stoull(line.substr(7), nullptr, 16) >> (SIGTERM - 1) & 1) != 0;
-  return false;
+  return rheomag::cli_test::catches_signal(pid, SIGTERM);
 }
 
 /// Waits until err.txt in `dir` holds `text` (empty: until the process catches SIGTERM; before
@@ -151,7 +130,7 @@ TEST(InterruptCli, Solve3dEndsCleanlyAtEveryPhase) {
         Phase{"assembly", "3d: solve", 200, SIGTERM},
         Phase{"factorisation and Newton", "3d: solve", 4000, SIGTERM},
         Phase{"factorisation and Newton (SIGINT)", "3d: solve", 6000, SIGINT}}) {
-    const pid_t pid = start_rheomag(dir, args);
+    const pid_t pid = rheomag::cli_test::start_rheomag(dir, args);
     ASSERT_GT(pid, 0);
     ASSERT_TRUE(wait_for_stderr(dir, pid, p.after)) << p.name << ": " << text_of(dir / "err.txt");
     std::this_thread::sleep_for(std::chrono::milliseconds(p.delay_ms));
@@ -170,7 +149,8 @@ TEST(InterruptCli, SweepKeepsItsFinishedRowsAndExits143) {
       << "[sweep]\nbase = \"" << kSmallValve.string()
       << "\"\n[[axis]]\nkey = \"geometry.gap_width\"\nvalues = [1.0, 1.2, 1.4, 1.6, 1.8, 2.0, "
          "2.2, 2.4, 2.6, 2.8, 3.0, 3.2]\n";
-  const pid_t pid = start_rheomag(dir, {"sweep", "sweep.toml", "-j", "1", "-o", "sweep_out"});
+  const pid_t pid =
+      rheomag::cli_test::start_rheomag(dir, {"sweep", "sweep.toml", "-j", "1", "-o", "sweep_out"});
   ASSERT_GT(pid, 0);
   const fs::path csv = dir / "sweep_out" / "results.csv";
   bool has_row = false;
