@@ -483,8 +483,17 @@ Case with_settings(const Case& base, const std::vector<std::string>& settings,
   std::string listed;
   for (const std::string& s : settings) {
     edits.push_back(parse_setting(base, s, option));
-    listed += (listed.empty() ? "" : ", ") + edits.back().key.written + " = " +
-              format_value(edits.back().value);
+    const CaseKey& key = edits.back().key;
+    // The unit of the value as the case holds it (a template length in the file's unit).
+    const std::string unit =
+        key.target == KeyTarget::template_parameter && key.kind == ParameterKind::length
+            ? (key.si_per_unit == 1.0    ? " m"
+               : key.si_per_unit == 1e-3 ? " mm"
+                                         : "")
+        : key.target == KeyTarget::circuit_current ? " A"
+                                                   : "";
+    listed += (listed.empty() ? "" : ", ") + key.written + " = " +
+              format_value(edits.back().value) + unit;
   }
   Case edited = with(base, edits);
   // The file's description speaks of the unedited design (its turns, its gap): name the edits.
