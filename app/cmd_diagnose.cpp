@@ -66,7 +66,8 @@ std::string shipped_sidecar(const std::string& recording) {
 [[noreturn]] void rethrow_with_fix(const InputError& e, const DiagnoseCliOptions& o) {
   const std::string what = e.what();
   const std::string sidecar = o.meta.empty() ? lumped::sidecar_path_for(o.recording) : o.meta;
-  if (!o.baseline.empty() || what.rfind(sidecar, 0) != 0) throw e;
+  // A bad value ("rec.toml:6: ...") names its line and is fixed there, not by another file.
+  if (!o.baseline.empty() || what.rfind(sidecar + ": ", 0) != 0) throw e;
   const std::string example = shipped_sidecar(o.recording);
   throw InputError(
       what +
