@@ -19,6 +19,7 @@ namespace {
 
 struct DamperCli {
   std::string case_file;
+  std::vector<std::string> settings;  // --set KEY=VALUE
   std::vector<double> currents, velocities;
   std::string plot;  // curves picture (.png / .svg)
   bool json = false;
@@ -28,15 +29,17 @@ void run_damper(const DamperCli& o) {
   using namespace rheomag;
   if (!o.plot.empty() && !plot::is_picture_path(o.plot))
     throw InputError("--plot: expected a file name ending in .png or .svg");
-  const auto report =
-      valve::evaluate_damper(cases::load_case(o.case_file), o.currents, o.velocities,
-                             app::progress_lines("damper", std::cerr, 2.0, 2.0));
+  const cases::Case c = app::load_case(o.case_file, o.settings);
+  const auto report = valve::evaluate_damper(c, o.currents, o.velocities,
+                                             app::progress_lines("damper", std::cerr, 2.0, 2.0));
   if (!o.plot.empty()) figures::damper_curves_figure(report, 900, 600).write(o.plot, "--plot");
   if (o.json) {
     nlohmann::json j = valve::damper_json(report);
+    if (!o.settings.empty()) j["set"] = o.settings;
     if (!o.plot.empty()) j["plot"] = o.plot;
     app::print_json(j, 2);
   } else {
+    if (!o.settings.empty()) std::cout << c.description << "\n";  // the --set edits
     std::cout << valve::damper_text(report);
     if (!o.plot.empty()) std::cout << "wrote " << o.plot << " (force-velocity)\n";
   }
@@ -52,12 +55,12 @@ const bool damper_registered = rheomag::app::register_command([](CLI::App& root)
       "force F = dp A_piston + wall shear + gas pressure x rod area. Velocity > 0 compresses\n"
       "(either sign). SI units. The case needs a [damper] table. See docs/dampers.md.");
   cmd->add_option("case", o->case_file, "Case file (.toml)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--current", o->currents,
-                  "Coil currents [A], comma-separated (default: the case's circuit current)")
-      ->delimiter(',');
-  cmd->add_option("--velocity", o->velocities,
-                  "Piston velocities [m/s], comma-separated (default: [damper] velocity)")
-      ->delimiter(',');
+  rheomag::app::add_set_option(cmd, o->settings);
+  rheomag::app::add_quantities(cmd, "--current", o->currents, rheomag::QuantityKind::current,
+                               "Coil currents, comma-separated (default: the case's circuit "
+                               "current)");
+  rheomag::app::add_quantities(cmd, "--velocity", o->velocities, rheomag::QuantityKind::velocity,
+                               "Piston velocities, comma-separated (default: [damper] velocity)");
   cmd->add_option("--plot", o->plot,
                   "Draw force against velocity, one curve per current, to this .png or .svg")
       ->check(rheomag::app::output_file_in_writable_folder());

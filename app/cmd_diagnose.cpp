@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -44,6 +45,39 @@ lumped::Recording read_input(const DiagnoseCliOptions& o) {
       throw InputError(o.recording + ": column '" + c + "' named in " + o.meta +
                        " is not in the CSV");
   return rec;
+}
+
+/// The example sidecar the repository ships for a recording of this name
+/// (tests/data/diagnosis/STEM.toml, docs/diagnosis.md), as a path from the working directory;
+/// empty when there is none (an installed rheomag without its source tree).
+std::string shipped_sidecar(const std::string& recording) {
+  namespace fs = std::filesystem;
+  const fs::path example = fs::path(RHEOMAG_SOURCE_DIR) / "tests" / "data" / "diagnosis" /
+                           fs::path(recording).filename().replace_extension(".toml");
+  std::error_code ec;
+  if (!fs::is_regular_file(example, ec)) return {};
+  const fs::path relative = fs::relative(example, fs::current_path(), ec);
+  return (ec || relative.empty() || relative.native().rfind("../..", 0) == 0 ? example : relative)
+      .string();
+}
+
+/// An error about the sidecar (missing, or lacking what the baseline needs: the drive, the rig)
+/// completed with the options that fix it: --meta with a sidecar that describes the recording
+/// (the shipped example when there is one) or --baseline with a fitted model.
+[[noreturn]] void rethrow_with_fix(const InputError& e, const DiagnoseCliOptions& o) {
+  const std::string what = e.what();
+  const std::string sidecar = o.meta.empty() ? lumped::sidecar_path_for(o.recording) : o.meta;
+  // A bad value ("rec.toml:6: ...") names its line and is fixed there, not by another file.
+  if (!o.baseline.empty() || what.rfind(sidecar + ": ", 0) != 0) throw e;
+  const std::string example = shipped_sidecar(o.recording);
+  throw InputError(
+      what +
+      "\n  fix: give a sidecar that describes the recording's rig and drive with --meta FILE" +
+      (example.empty() ? std::string(" (docs/diagnosis.md, \"Sidecar\")")
+                       : " (one ships for this recording: --meta " + example + ")") +
+      ", or a fitted model as the baseline with --baseline MODEL.json (from "
+      "'rheomag fit " +
+      o.recording + " --model M --json > MODEL.json')");
 }
 
 void print_summary(const diagnose::Diagnosis& d) {
@@ -88,6 +122,24 @@ void print_summary(const diagnose::Diagnosis& d) {
   for (const auto& note : d.notes) std::cout << "note: " << note << "\n";
 }
 
+/// Reads the recording, diagnoses it and prints or writes the result.
+void run(const DiagnoseCliOptions& o) {
+  auto rec = read_input(o);
+  if (!o.samples.empty())
+    rec = lumped::excerpt(rec, lumped::parse_sample_range(o.samples, rec.t.size(), "--samples"));
+  diagnose::DiagnoseOptions options;
+  if (!o.baseline.empty())
+    options.baseline_model =
+        diagnose::ModelBaseline{identify::read_fit_model_json(o.baseline), o.baseline};
+  if (!o.quiet) options.progress = rheomag::app::progress_lines("diagnose", std::cerr);
+  const auto d = diagnose::diagnose(rec, options);
+  if (!o.out.empty()) diagnose::write_diagnosis_outputs(d, o.out);
+  if (o.json)
+    rheomag::app::print_json(diagnose::diagnosis_json(d), 2);
+  else
+    print_summary(d);
+}
+
 const bool diagnose_registered = app::register_command([](CLI::App& root) {
   auto o = std::make_shared<DiagnoseCliOptions>();
   CLI::App* cmd = root.add_subcommand(
@@ -130,20 +182,11 @@ const bool diagnose_registered = app::register_command([](CLI::App& root) {
   cmd->add_flag("--quiet", o->quiet,
                 "Do not report progress (each stage and candidate fit with its time) on stderr");
   cmd->callback([o]() {
-    auto rec = read_input(*o);
-    if (!o->samples.empty())
-      rec = lumped::excerpt(rec, lumped::parse_sample_range(o->samples, rec.t.size(), "--samples"));
-    diagnose::DiagnoseOptions options;
-    if (!o->baseline.empty())
-      options.baseline_model =
-          diagnose::ModelBaseline{identify::read_fit_model_json(o->baseline), o->baseline};
-    if (!o->quiet) options.progress = rheomag::app::progress_lines("diagnose", std::cerr);
-    const auto d = diagnose::diagnose(rec, options);
-    if (!o->out.empty()) diagnose::write_diagnosis_outputs(d, o->out);
-    if (o->json)
-      rheomag::app::print_json(diagnose::diagnosis_json(d), 2);
-    else
-      print_summary(d);
+    try {
+      run(*o);
+    } catch (const InputError& e) {
+      rethrow_with_fix(e, *o);
+    }
   });
 });
 

@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/command.hpp"
 #include "case/case_file.hpp"
@@ -18,11 +19,12 @@ namespace {
 
 struct ExportCommandOptions {
   std::string case_path;
+  std::vector<std::string> settings;  // --set KEY=VALUE
   std::string fem;
 };
 
 void run(const ExportCommandOptions& o) {
-  const rheomag::cases::Case c = rheomag::cases::load_case(o.case_path);
+  const rheomag::cases::Case c = rheomag::app::load_case(o.case_path, o.settings);
   const rheomag::cases::Problem closed = rheomag::magnetostatics::close_domain(c.problem);
   const std::string sidecar = rheomag::cases::femm_sidecar_text(c, closed);
   const std::filesystem::path sidecar_path = rheomag::cases::femm_sidecar_path(o.fem);
@@ -61,6 +63,7 @@ const bool export_registered = rheomag::app::register_command([](CLI::App& root)
       "Exit codes: 0 success, 2 bad input.");
   cmd->add_option("CASE", o->case_path, "Case file (.toml) or FEMM model (.fem)")->required();
   cmd->add_option("--fem", o->fem, "Output .fem file")->required();
+  rheomag::app::add_set_option(cmd, o->settings);
   cmd->callback([o] { run(*o); });
 });
 

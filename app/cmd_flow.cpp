@@ -57,7 +57,8 @@ const bool flow_registered = rheomag::app::register_command([](CLI::App& root) {
   CLI::App* cmd = root.add_subcommand(
       "flow",
       "Pressure drop of one MR-fluid gap (Bingham / Herschel-Bulkley) at a given yield stress\n"
-      "and flow. All values SI. annular: axial flow through an annulus of radial clearance --gap\n"
+      "and flow. SI unless a unit is written. annular: axial flow through an annulus of radial "
+      "clearance --gap\n"
       "about the mean radius --radius, over --length. slit: parallel plates --gap apart, --width\n"
       "across, --length along the flow. radial: flow through a disk gap of axial clearance --gap\n"
       "between --r-in and --r-out.\n"
@@ -78,21 +79,33 @@ const bool flow_registered = rheomag::app::register_command([](CLI::App& root) {
          "Gap kind: annular, slit or radial")
       ->required()
       ->check(CLI::IsMember({"annular", "slit", "radial"}));
-  cmd->add_option("--gap", options->gap.gap, "Gap clearance h [m]")->required();
-  cmd->add_option("--length", options->gap.length, "annular, slit: active length L [m]");
-  cmd->add_option("--radius", options->gap.radius, "annular: mean radius R of the gap [m]");
-  cmd->add_option("--width", options->gap.width, "slit: width b across the flow [m]");
-  cmd->add_option("--r-in", options->gap.r_in, "radial: inner radius [m]");
-  cmd->add_option("--r-out", options->gap.r_out, "radial: outer radius [m]");
-  cmd->add_option("--tau-y", options->gap.tau_y, "Yield stress tau_y [Pa] (>= 0)")->required();
+  rheomag::app::add_quantity(cmd, "--gap", options->gap.gap, rheomag::QuantityKind::length,
+                             "Gap clearance h")
+      ->required();
+  rheomag::app::add_quantity(cmd, "--length", options->gap.length, rheomag::QuantityKind::length,
+                             "annular, slit: active length L");
+  rheomag::app::add_quantity(cmd, "--radius", options->gap.radius, rheomag::QuantityKind::length,
+                             "annular: mean radius R of the gap");
+  rheomag::app::add_quantity(cmd, "--width", options->gap.width, rheomag::QuantityKind::length,
+                             "slit: width b across the flow");
+  rheomag::app::add_quantity(cmd, "--r-in", options->gap.r_in, rheomag::QuantityKind::length,
+                             "radial: inner radius");
+  rheomag::app::add_quantity(cmd, "--r-out", options->gap.r_out, rheomag::QuantityKind::length,
+                             "radial: outer radius");
+  rheomag::app::add_quantity(cmd, "--tau-y", options->gap.tau_y, rheomag::QuantityKind::pressure,
+                             "Yield stress tau_y (>= 0)")
+      ->required();
   cmd->add_option("--viscosity", options->gap.viscosity,
                   "Plastic viscosity mu [Pa s] (consistency K [Pa s^n] with --flow-index)")
       ->required();
   cmd->add_option("--flow-index", options->gap.flow_index,
                   "Herschel-Bulkley exponent n (default 1: Bingham; annular and slit)");
-  cmd->add_option("--flow", options->gap.flow, "Volume flow rate Q [m^3/s]")->required();
-  cmd->add_option("--wall-velocity", options->gap.wall_velocity,
-                  "Velocity U of the inner (moving) wall along the flow [m/s] (default 0)");
+  rheomag::app::add_quantity(cmd, "--flow", options->gap.flow, rheomag::QuantityKind::flow,
+                             "Volume flow rate Q")
+      ->required();
+  rheomag::app::add_quantity(cmd, "--wall-velocity", options->gap.wall_velocity,
+                             rheomag::QuantityKind::velocity,
+                             "Velocity U of the inner (moving) wall along the flow (default 0)");
   cmd->add_option_function<std::string>(
          "--model",
          [options](const std::string& model) {

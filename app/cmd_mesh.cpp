@@ -18,13 +18,14 @@ using namespace rheomag;
 
 struct MeshCommandOptions {
   std::string case_path;
+  std::vector<std::string> settings;  // --set KEY=VALUE
   std::string vtk;
   std::optional<int> order;
   bool json = false;
 };
 
 void run(const MeshCommandOptions& o) {
-  cases::Case c = cases::load_case(o.case_path);
+  cases::Case c = app::load_case(o.case_path, o.settings);
   if (o.order) c.problem.order = *o.order;
   const auto [closed, m] = magnetostatics::close_and_mesh(c.problem);
   const mesh::MeshQuality quality = mesh::measure_quality(m, closed.geometry);
@@ -36,11 +37,14 @@ void run(const MeshCommandOptions& o) {
   if (o.json) {
     nlohmann::json j = mesh::quality_json(quality);
     j["case"] = c.name;
+    if (!o.settings.empty()) j["set"] = o.settings;
     if (!o.vtk.empty()) j["vtk"] = o.vtk;
     rheomag::app::print_json(j, 2);
     return;
   }
-  std::cout << "case " << c.name << " (" << o.case_path << ")\n" << mesh::format_quality(quality);
+  std::cout << "case " << c.name << " (" << o.case_path << ")\n";
+  if (!o.settings.empty()) std::cout << c.description << "\n";  // the --set edits
+  std::cout << mesh::format_quality(quality);
   if (!o.vtk.empty()) std::cout << "wrote " << o.vtk << "\n";
 }
 
@@ -52,6 +56,7 @@ const bool mesh_registered = rheomag::app::register_command([](CLI::App& root) {
       "refinement, per-region sizes and at least `min_gap_elements` elements across every fluid\n"
       "gap. Prints element counts, minimum angle, aspect ratio and per-region statistics.");
   cmd->add_option("CASE", o->case_path, "Case file (.toml) or FEMM model (.fem)")->required();
+  rheomag::app::add_set_option(cmd, o->settings);
   cmd->add_option("--vtk", o->vtk, "Write the mesh with region ids and names to this .vtu file")
       ->check(rheomag::app::output_file());
   cmd->add_option("--order", o->order, "Lagrange element order, 1 or 2 (default: the case's)")

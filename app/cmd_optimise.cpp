@@ -9,6 +9,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "app/command.hpp"
 #include "app/progress_lines.hpp"
@@ -19,6 +20,7 @@ namespace {
 
 struct OptimiseCli {
   std::string case_file;
+  std::vector<std::string> settings;  // --set KEY=VALUE: the starting design
   std::string out_dir = ".";
   bool json = false;
   bool verbose = false;
@@ -50,7 +52,7 @@ nlohmann::json design_json(const rheomag::optimise::DesignReport& d,
 
 int run_optimise(const OptimiseCli& o) {
   using namespace rheomag;
-  const auto c = cases::load_case(o.case_file);
+  const auto c = app::load_case(o.case_file, o.settings);
   optimise::OptimiseOptions options;
   options.out_dir = o.out_dir;
   options.print_level = o.verbose && !o.json ? 5 : 0;
@@ -126,6 +128,7 @@ const bool optimise_registered = rheomag::app::register_command([](CLI::App& roo
   cmd->add_option("case", o->case_file, "Case file (.toml) with an [optimise] table")
       ->required()
       ->check(CLI::ExistingFile);
+  rheomag::app::add_set_option(cmd, o->settings);
   cmd->add_option("--out", o->out_dir, "Output directory (default: current directory)")
       ->check(rheomag::app::non_empty());
   cmd->add_flag("--json", o->json, "Print one JSON object to stdout");

@@ -17,6 +17,7 @@ using namespace rheomag;
 
 struct PlotCommandOptions {
   std::string case_path;
+  std::vector<std::string> settings;  // --set KEY=VALUE
   std::string out;
   std::optional<double> current;
   std::vector<double> currents;
@@ -26,7 +27,7 @@ struct PlotCommandOptions {
 
 void run(const PlotCommandOptions& o) {
   const figures::PictureSolve solved = figures::solve_for_pictures(
-      cases::load_case(o.case_path), o.current, o.currents, o.sweep_points);
+      app::load_case(o.case_path, o.settings), o.current, o.currents, o.sweep_points);
   for (const auto& path : figures::write_solve_pictures(o.out, solved.view(), o.map))
     std::cout << "wrote " << path.string() << "\n";
 }
@@ -44,12 +45,12 @@ const bool plot_registered = app::register_command([](CLI::App& root) {
   cmd->add_option("--out", o->out, "Folder to write the pictures into (created if absent)")
       ->required()
       ->check(app::non_empty());
-  cmd->add_option("--current", o->current,
-                  "Current of every circuit for the field pictures [A] (default: the case's)");
-  cmd->add_option("--currents", o->currents,
-                  "Currents of the lambda(I), L(I) picture [A], e.g. 0,0.5,1 (default: "
-                  "--sweep-points from 0 to 1.5 x the case's current)")
-      ->delimiter(',');
+  app::add_set_option(cmd, o->settings);
+  app::add_quantity(cmd, "--current", o->current, QuantityKind::current,
+                    "Current of every circuit for the field pictures (default: the case's)");
+  app::add_quantities(cmd, "--currents", o->currents, QuantityKind::current,
+                      "Currents of the lambda(I), L(I) picture, e.g. 0,0.5,1 (default: "
+                      "--sweep-points from 0 to 1.5 x the case's current)");
   cmd->add_option("--sweep-points", o->sweep_points, "Points of the default current sweep")
       ->check(app::in_domain(Domain::between(2, 1000).whole()));
   cmd->add_option("--width", o->map.width, "Field map width [px] (default 1000)")

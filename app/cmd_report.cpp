@@ -17,6 +17,7 @@ using namespace rheomag;
 
 struct ReportCommandOptions {
   std::string case_path;
+  std::vector<std::string> settings;  // --set KEY=VALUE
   std::string out;
   std::optional<double> current;
   std::vector<double> currents;
@@ -24,7 +25,7 @@ struct ReportCommandOptions {
 };
 
 void run(const ReportCommandOptions& o) {
-  const cases::Case c = cases::load_case(o.case_path);
+  const cases::Case c = app::load_case(o.case_path, o.settings);
   const figures::PictureSolve solved =
       figures::solve_for_pictures(c, o.current, o.currents, o.sweep_points);
   const double current =
@@ -47,12 +48,12 @@ const bool report_registered = app::register_command([](CLI::App& root) {
   cmd->add_option("--out", o->out, "Folder to write report.html into (created if absent)")
       ->required()
       ->check(app::non_empty());
-  cmd->add_option("--current", o->current,
-                  "Current of every circuit [A] (default: the case's currents)");
-  cmd->add_option("--currents", o->currents,
-                  "Currents of the lambda(I), L(I) picture [A] (default: --sweep-points from 0 "
-                  "to 1.5 x the case's current)")
-      ->delimiter(',');
+  app::add_set_option(cmd, o->settings);
+  app::add_quantity(cmd, "--current", o->current, QuantityKind::current,
+                    "Current of every circuit (default: the case's currents)");
+  app::add_quantities(cmd, "--currents", o->currents, QuantityKind::current,
+                      "Currents of the lambda(I), L(I) picture (default: --sweep-points from 0 "
+                      "to 1.5 x the case's current)");
   cmd->add_option("--sweep-points", o->sweep_points, "Points of the default current sweep")
       ->check(app::in_domain(Domain::between(2, 1000).whole()));
   cmd->callback([o] { run(*o); });

@@ -46,7 +46,8 @@ const bool shear_registered = rheomag::app::register_command([](CLI::App& root) 
   CLI::App* cmd = root.add_subcommand(
       "shear",
       "Torque of a shear-mode MR device (Bingham / Herschel-Bulkley) at a given yield stress\n"
-      "and speed. All values SI. drum: fluid between an inner cylinder of radius --r-in\n"
+      "and speed. SI unless a unit is written. drum: fluid between an inner cylinder of radius "
+      "--r-in\n"
       "rotating at --speed and a fixed outer cylinder --r-out, over --length (exact Couette\n"
       "flow, partial yielding where the stress, falling as 1/r^2, drops below tau_y). disc: a\n"
       "disc ring --r-in..--r-out rotating --gap away from --faces fixed faces (fully yielded\n"
@@ -62,18 +63,28 @@ const bool shear_registered = rheomag::app::register_command([](CLI::App& root) 
          "Device kind: drum or disc")
       ->required()
       ->check(CLI::IsMember({"drum", "disc"}));
-  cmd->add_option("--r-in", options->device.r_in, "Inner radius [m]")->required();
-  cmd->add_option("--r-out", options->device.r_out, "Outer radius [m]")->required();
-  cmd->add_option("--length", options->device.length, "drum: axial length [m]");
-  cmd->add_option("--gap", options->device.gap, "disc: axial gap to each face [m]");
+  rheomag::app::add_quantity(cmd, "--r-in", options->device.r_in, rheomag::QuantityKind::length,
+                             "Inner radius")
+      ->required();
+  rheomag::app::add_quantity(cmd, "--r-out", options->device.r_out, rheomag::QuantityKind::length,
+                             "Outer radius")
+      ->required();
+  rheomag::app::add_quantity(cmd, "--length", options->device.length, rheomag::QuantityKind::length,
+                             "drum: axial length");
+  rheomag::app::add_quantity(cmd, "--gap", options->device.gap, rheomag::QuantityKind::length,
+                             "disc: axial gap to each face");
   cmd->add_option("--faces", options->device.faces, "disc: number of sheared faces (default 2)");
-  cmd->add_option("--tau-y", options->device.tau_y, "Yield stress tau_y [Pa] (>= 0)")->required();
+  rheomag::app::add_quantity(cmd, "--tau-y", options->device.tau_y, rheomag::QuantityKind::pressure,
+                             "Yield stress tau_y (>= 0)")
+      ->required();
   cmd->add_option("--viscosity", options->device.viscosity,
                   "Plastic viscosity mu [Pa s] (consistency K [Pa s^n] with --flow-index)")
       ->required();
   cmd->add_option("--flow-index", options->device.flow_index,
                   "Herschel-Bulkley exponent n (default 1: Bingham)");
-  cmd->add_option("--speed", options->device.speed, "Angular speed omega of the rotor [rad/s]")
+  rheomag::app::add_quantity(cmd, "--speed", options->device.speed,
+                             rheomag::QuantityKind::angular_speed,
+                             "Angular speed omega of the rotor")
       ->required();
   cmd->add_flag("--json", options->json, "Print one JSON object to stdout");
   cmd->callback([cmd, options] { run_shear(*cmd, *options); });

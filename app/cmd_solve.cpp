@@ -8,96 +8,82 @@
 #include <vector>
 
 #include "app/command.hpp"
+#include "app/solve_command.hpp"
 #include "case/case_file.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "core/memory_limit.hpp"
-#include "figures/gap_theta.hpp"
 #include "figures/solve_pictures.hpp"
 #include "magnetostatics/femm_ans.hpp"
 #include "magnetostatics/report.hpp"
 #include "magnetostatics/solve_output.hpp"
 #include "magnetostatics/solve_problem.hpp"
-#include "magnetostatics3d/report3d.hpp"
-#include "magnetostatics3d/solve3d.hpp"
 #include "plot/figure.hpp"
 
 namespace {
 
 using namespace rheomag::magnetostatics;
 using namespace rheomag::cases;
-
-struct SolveCommandOptions {
-  std::string case_path;
-  std::optional<double> current;
-  std::vector<double> sweep;
-  std::string vtk, ans, plot;  // .vtu, FEMM .ans, picture (.png / .svg)
-  std::optional<int> order;
-  std::vector<double> points;          // r1, z1, r2, z2, ... [m]
-  std::vector<std::string> integrals;  // REGION:KIND
-  std::vector<std::string> lines;      // x1,y1:x2,y2
-  int line_points = 101;
-  bool json = false, three_d = false, full = false;
-  std::string mesher = "tetgen";
-  std::string max_memory;  // --max-memory text ("8G"); empty: the default limit
-};
+using rheomag::app::SolveCommandOptions;
 
 void check_current(double current, const char* option) {
   if (!std::isfinite(current))
     throw rheomag::InputError(std::string(option) + ": expected a finite current in A");
 }
 
-/// `solve --3d`: the case revolved about z with its [[feature]] cuts (magnetostatics3d).
-void run_3d(const SolveCommandOptions& o, const Case& c) {
-  if (!o.sweep.empty() || o.order || !o.integrals.empty() || !o.lines.empty() || !o.ans.empty())
+/// `solve --current I1,I2,..`: the case solved at each current in turn (one mesh, each solve
+/// warm-started), one summary (text) or one document (JSON, under "solutions") per current.
+void run_currents(const SolveCommandOptions& o, const Case& c) {
+  if (!o.vtk.empty() || !o.ans.empty() || !o.plot.empty() || !o.sweep.empty())
     throw rheomag::InputError(
-        "--sweep, --order, --integral, --line and --ans are not available with --3d");
-  namespace m3 = rheomag::magnetostatics3d;
-  const m3::Mesher3d mesher = m3::kMesher3dNames.parse(o.mesher, "--mesher");
-  m3::Solve3dOptions options =
-      mesher == m3::Mesher3d::swept ? m3::swept_options() : m3::Solve3dOptions{};
-  options.force_full = o.full;
-  if (!o.max_memory.empty())
-    options.max_memory = rheomag::parse_memory_size(o.max_memory, "--max-memory");
-  if (!o.json) {
-    options.progress = [](const rheomag::ProgressEvent& e) {
-      std::cerr << "3d: " << e.stage << " (" << e.elapsed << " s)"
-                << (e.detail.empty() ? "" : ": " + e.detail) << std::endl;
-    };
+        "--current with several values solves each in turn; --vtk, --ans, --plot and --sweep "
+        "take one --current (for a table of lambda, L and the gap B against current use --sweep)");
+  SolveResult solved = solve_problem(c.problem);
+  nlohmann::json documents = nlohmann::json::array();
+  for (std::size_t k = 0; k < o.currents.size(); ++k) {
+    const std::vector<double> currents(c.problem.circuits.size(), o.currents[k]);
+    // The first current is the one solve_problem solved at.
+    const Solution solution =
+        k == 0 ? solved.solution : solved.solver->solve(currents, &solved.solution.a);
+    const Results results = k == 0 ? solved.results : compute_results(*solved.solver, solution);
+    SolveOutput out;
+    out.case_name = c.name, out.case_path = o.case_path, out.description = c.description;
+    out.mesh_seconds = k == 0 ? solved.mesh_seconds : 0.0;
+    out.probes = probe_field(*solved.solver, solution, o.points);
+    out.integrals = block_integrals(*solved.solver, solution, o.integrals);
+    for (const std::string& line : o.lines)
+      out.lines.push_back(line_field(*solved.solver, solution, line, o.line_points));
+    if (o.json) {
+      documents.push_back(solve_output_json(*solved.solver, results, out));
+    } else {
+      std::cout << (k == 0 ? "" : "\n") << "=== --current " << o.currents[k] << " A ===\n"
+                << solve_output_text(*solved.solver, results, out);
+    }
   }
-  const m3::Solve3dResult solved = m3::solve_problem_3d(c.problem, m3::read_features(c), options);
-  if (!o.vtk.empty()) m3::write_results_vtu_3d(o.vtk, solved);
-  if (!o.plot.empty())
-    rheomag::figures::gap_theta_figure(solved.results, c.name, 800, 700).write(o.plot, "--plot");
-  if (o.json) {
-    nlohmann::json j = m3::results_json_3d(solved.results);
-    j["case"] = c.name;
-    j["mesh_seconds"] = solved.mesh_seconds;
-    if (!o.vtk.empty()) j["vtk"] = o.vtk;
-    if (!o.plot.empty()) j["plot"] = o.plot;
-    rheomag::app::print_json(j, 2);
-    return;
-  }
-  std::cout << "case " << c.name << " (" << o.case_path << ")\n";
-  if (!c.description.empty()) std::cout << c.description << "\n";
-  std::cout << m3::results_summary_3d(solved.results);
-  if (!o.vtk.empty()) std::cout << "\nwrote " << o.vtk << " (open it in ParaView)\n";
-  if (!o.plot.empty()) std::cout << "wrote " << o.plot << " (B_avg_theta of each gap)\n";
+  if (o.json)
+    rheomag::app::print_json(
+        {{"case", c.name}, {"set", o.settings}, {"currents", o.currents}, {"solutions", documents}},
+        2);
 }
 
 void run(const SolveCommandOptions& o) {
   if (!o.plot.empty() && !rheomag::plot::is_picture_path(o.plot))
     throw rheomag::InputError("--plot: expected a file name ending in .png or .svg");
-  Case c = load_case(o.case_path);
+  Case c = rheomag::app::load_case(o.case_path, o.settings);
   Problem& problem = c.problem;
-  if (o.current) {
-    check_current(*o.current, "--current");
+  for (double i : o.currents) check_current(i, "--current");
+  if (!o.currents.empty()) {
     if (problem.circuits.empty())
       throw rheomag::InputError(o.case_path + ": --current given but the case has no circuit");
-    for (Circuit& circuit : problem.circuits) circuit.current = *o.current;
+    for (Circuit& circuit : problem.circuits) circuit.current = o.currents.front();
+  }
+  if (o.currents.size() > 1) {
+    if (o.three_d) throw rheomag::InputError("--3d takes one --current");
+    if (o.order) problem.order = *o.order;
+    run_currents(o, c);
+    return;
   }
   if (o.three_d) {
-    run_3d(o, c);
+    rheomag::app::run_solve_3d(o, c);
     return;
   }
   if (o.order) problem.order = *o.order;
@@ -112,7 +98,7 @@ void run(const SolveCommandOptions& o) {
   SolveOutput out;
   out.case_name = c.name, out.case_path = o.case_path, out.description = c.description;
   out.mesh_seconds = solved.mesh_seconds;
-  if (!o.sweep.empty()) out.sweep = solved.solver->sweep(0, o.sweep);
+  if (!o.sweep.empty()) out.sweep = sweep_with_gaps(*solved.solver, 0, o.sweep);
   if (!o.vtk.empty()) {
     write_results_vtu(o.vtk, *solved.solver, solved.solution, solved.results);
     out.files.emplace_back("vtk", o.vtk);
@@ -131,7 +117,9 @@ void run(const SolveCommandOptions& o) {
   for (const std::string& line : o.lines)
     out.lines.push_back(line_field(*solved.solver, solved.solution, line, o.line_points));
   if (o.json) {
-    rheomag::app::print_json(solve_output_json(*solved.solver, solved.results, out), 2);
+    nlohmann::json j = solve_output_json(*solved.solver, solved.results, out);
+    if (!o.settings.empty()) j["set"] = o.settings;  // the edits the description names
+    rheomag::app::print_json(j, 2);
   } else {
     std::cout << solve_output_text(*solved.solver, solved.results, out);
   }
@@ -148,16 +136,18 @@ const bool solve_registered = rheomag::app::register_command([](CLI::App& root) 
       "each circuit's flux linkage, secant and incremental inductance, and the stored energy.\n"
       "Exit codes: 0 success, 2 bad input, 3 Newton did not converge.");
   cmd->add_option("CASE", o->case_path, "Case file (.toml) or FEMM model (.fem)")->required();
-  cmd->add_option("--current", o->current,
-                  "Current of every circuit [A] (default: the currents in the case)");
-  cmd->add_option("--sweep", o->sweep,
-                  "Also tabulate lambda(I), L(I) of the first circuit at these currents [A], "
-                  "e.g. --sweep 0,0.25,0.5,0.75,1")
-      ->delimiter(',');
-  cmd->add_option("--point", o->points,
-                  "Also print the flux density at these points, r,z pairs in metres "
-                  "(x,y for planar models), e.g. --point 0.01,0.02,0.015,0")
-      ->delimiter(',');
+  rheomag::app::add_set_option(cmd, o->settings);
+  rheomag::app::add_quantities(
+      cmd, "--current", o->currents, rheomag::QuantityKind::current,
+      "Current of every circuit (default: the currents in the case); several, comma-separated, "
+      "are solved in turn on one mesh, e.g. --current 0.5,1");
+  rheomag::app::add_quantities(
+      cmd, "--sweep", o->sweep, rheomag::QuantityKind::current,
+      "Also tabulate lambda(I), L(I) of the first circuit and each gap's B_avg, B_max_midline "
+      "and B_max_area (docs/quantities.md) at these currents, e.g. --sweep 0,0.25,0.5,0.75,1");
+  rheomag::app::add_quantities(cmd, "--point", o->points, rheomag::QuantityKind::length,
+                               "Also print the flux density at these points, r,z pairs (x,y "
+                               "for planar models), e.g. --point 10mm,20mm,15mm,0");
   cmd->add_option("--integral", o->integrals,
                   "Also print a block integral REGION:KIND (repeatable; REGION+REGION for a body "
                   "of several): a_dot_j, energy, coenergy, area, volume, average_b, flux, force, "

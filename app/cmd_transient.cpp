@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/command.hpp"
 #include "case/case_file.hpp"
@@ -21,6 +22,7 @@ using namespace rheomag;
 
 struct TransientCliOptions {
   std::string case_path;
+  std::vector<std::string> settings;  // --set KEY=VALUE
   coupling::StepRequest request;
   std::string vtk_series;
   int vtk_stride = 1;
@@ -33,7 +35,7 @@ void run(const TransientCliOptions& o) {
   coupling::check_step_request(o.request);
   if (!o.plot.empty() && !plot::is_picture_path(o.plot))
     throw InputError("--plot: expected a file name ending in .png or .svg");
-  const cases::Case c = cases::load_case(o.case_path);
+  const cases::Case c = app::load_case(o.case_path, o.settings);
   coupling::StepRequest request = o.request;
   double last_print = 0.0;
   if (!o.quiet) {
@@ -61,14 +63,16 @@ void run(const TransientCliOptions& o) {
   if (o.json) {
     nlohmann::json j = transient::transient_json(result, step.options);
     j["case"] = c.name;
+    if (!o.settings.empty()) j["set"] = o.settings;
     j["seconds"] = seconds;
     if (series) j["vtk_series"] = o.vtk_series, j["vtk_files"] = series->files();
     if (!o.plot.empty()) j["plot"] = o.plot;
     rheomag::app::print_json(j, 2);
     return;
   }
-  std::cout << "case " << c.name << " (" << o.case_path << ")\n"
-            << transient::transient_summary(result, step.options);
+  std::cout << "case " << c.name << " (" << o.case_path << ")\n";
+  if (!o.settings.empty()) std::cout << c.description << "\n";  // the --set edits
+  std::cout << transient::transient_summary(result, step.options);
   if (series)
     std::cout << "wrote " << o.vtk_series << "/series.pvd and " << series->files()
               << " states (open it in ParaView)\n";
@@ -89,12 +93,16 @@ const bool transient_registered = app::register_command([](CLI::App& root) {
       "(slots, laminations, SMC) from the case's [transient] table.\n"
       "Exit codes: 0 success, 2 bad input, 3 a time step did not converge (the time is named).");
   cmd->add_option("CASE", o->case_path, "Case file (.toml) or FEMM model (.fem)")->required();
-  auto* current = cmd->add_option("--current", o->request.current, "Current after the step [A]");
-  auto* voltage =
-      cmd->add_option("--voltage", o->request.voltage, "Supply voltage after the step [V]");
+  app::add_set_option(cmd, o->settings);
+  auto* current = app::add_quantity(cmd, "--current", o->request.current, QuantityKind::current,
+                                    "Current after the step");
+  auto* voltage = app::add_quantity(cmd, "--voltage", o->request.voltage, QuantityKind::voltage,
+                                    "Supply voltage after the step");
   current->excludes(voltage);
-  cmd->add_option("--from", o->request.from, "Current before the step (steady state) [A]");
-  cmd->add_option("--duration", o->request.duration, "Simulated time after the step [s]")
+  app::add_quantity(cmd, "--from", o->request.from, QuantityKind::current,
+                    "Current before the step (steady state; default 0)");
+  app::add_quantity(cmd, "--duration", o->request.duration, QuantityKind::time,
+                    "Simulated time after the step, e.g. 50ms")
       ->required();
   cmd->add_option("--steps", o->request.steps, "Equal time steps (default: adaptive steps)")
       ->check(rheomag::app::in_domain(rheomag::Domain::count()));

@@ -22,6 +22,7 @@ namespace {
 
 struct ValveCli {
   std::string case_file;
+  std::vector<std::string> settings;  // --set KEY=VALUE
   std::vector<double> currents, flows;
   std::string wire;
   std::string plot;  // dp-Q picture (.png / .svg)
@@ -33,7 +34,7 @@ void run_valve(const ValveCli& o) {
   using namespace rheomag;
   if (!o.plot.empty() && !plot::is_picture_path(o.plot))
     throw InputError("--plot: expected a file name ending in .png or .svg");
-  const auto c = cases::load_case(o.case_file);
+  const auto c = app::load_case(o.case_file, o.settings);
   valve::ValveOptions options = valve::read_valve_options(c);
   if (!o.wire.empty()) {
     try {
@@ -54,9 +55,11 @@ void run_valve(const ValveCli& o) {
   if (!o.plot.empty()) figures::valve_curves_figure(report, 900, 800).write(o.plot, "--plot");
   if (o.json) {
     nlohmann::json j = valve::valve_json(report);
+    if (!o.settings.empty()) j["set"] = o.settings;
     if (!o.plot.empty()) j["plot"] = o.plot;
     app::print_json(j, 2);
   } else {
+    if (!o.settings.empty()) std::cout << c.description << "\n";  // the --set edits
     std::cout << valve::valve_text(report);
     if (!o.plot.empty()) std::cout << "wrote " << o.plot << " (dp-Q, dynamic range)\n";
   }
@@ -73,14 +76,13 @@ const bool valve_registered = rheomag::app::register_command([](CLI::App& root) 
       "losses count when the case lists them ([[valve.passage]], [[valve.loss]]). See\n"
       "docs/fluid.md.");
   cmd->add_option("case", o->case_file, "Case file (.toml)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--current", o->currents,
-                  "Coil currents [A], comma-separated "
-                  "(default: the case's circuit current)")
-      ->delimiter(',');
-  cmd->add_option("--flow", o->flows,
-                  "Flow rates [m^3/s], comma-separated "
-                  "(default: [valve] flow)")
-      ->delimiter(',');
+  rheomag::app::add_set_option(cmd, o->settings);
+  rheomag::app::add_quantities(cmd, "--current", o->currents, rheomag::QuantityKind::current,
+                               "Coil currents, comma-separated (default: the case's circuit "
+                               "current)");
+  rheomag::app::add_quantities(cmd, "--flow", o->flows, rheomag::QuantityKind::flow,
+                               "Flow rates, comma-separated (default: [valve] flow), e.g. "
+                               "--flow 1.5L/min,3L/min");
   cmd->add_option("--wire", o->wire, "Wire, e.g. \"AWG 24\" or \"0.5 mm\" (default: [valve] wire)")
       ->check(rheomag::app::non_empty());
   cmd->add_option("--temperature", o->temperature,

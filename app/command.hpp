@@ -7,12 +7,16 @@
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "app/finite_stdout.hpp"
+#include "case/case_file.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/quantity_domain.hpp"
+#include "core/units.hpp"
 #include "lumped/recording.hpp"
 
 namespace rheomag::app {
@@ -28,6 +32,72 @@ void setup_commands(CLI::App& root);
 
 /// Reads a recording (CSV + sidecar) and prints the reader's warnings on stderr.
 lumped::Recording load_recording(const std::string& csv_path);
+
+/// Loads a case (TOML or .fem) and applies the command's `--set KEY=VALUE` settings through the
+/// typed key API (cases::with_settings): one implementation for every command that takes a case.
+cases::Case load_case(const std::string& path, const std::vector<std::string>& settings);
+
+/// Adds the repeatable `--set KEY=VALUE` option of a command that takes a case.
+inline CLI::Option* add_set_option(CLI::App* cmd, std::vector<std::string>& settings) {
+  return cmd
+      ->add_option("--set", settings,
+                   "Change one value of the case, KEY=VALUE (repeatable), e.g. --set "
+                   "geometry.turns=800 --set geometry.gap_width=1.2mm: the case file's "
+                   "keys and its template's parameters (docs/case-format.md); a length may carry "
+                   "a unit")
+      ->type_name("KEY=VALUE")
+      ->allow_extra_args(false);  // one setting per --set: a case path after it stays the case
+}
+
+/// The help suffix of a quantity option: its SI unit and the units it accepts.
+inline std::string unit_help(QuantityKind kind) {
+  return " (units: " + accepted_units(kind) + "; " + std::string(si_unit(kind)) +
+         " when none is written)";
+}
+
+/// Adds an option of comma-separated quantities of `kind`, each with an optional unit
+/// ("--flow 1.5L/min,3L/min"), stored in SI; a bad unit exits 2 naming the option, the unit and
+/// the units accepted (core/units.hpp).
+inline CLI::Option* add_quantities(CLI::App* cmd, const std::string& name,
+                                   std::vector<double>& values, QuantityKind kind,
+                                   const std::string& help) {
+  return cmd
+      ->add_option_function<std::vector<std::string>>(
+          name,
+          [&values, kind, name](const std::vector<std::string>& texts) {
+            values = parse_quantities(texts, kind, name);
+          },
+          help + unit_help(kind))
+      ->delimiter(',')
+      ->type_name("VALUES");
+}
+
+/// Adds an option of one quantity of `kind` with an optional unit ("--duration 50ms"), in SI.
+inline CLI::Option* add_quantity(CLI::App* cmd, const std::string& name, double& value,
+                                 QuantityKind kind, const std::string& help) {
+  return cmd
+      ->add_option_function<std::string>(
+          name,
+          [&value, kind, name](const std::string& text) {
+            value = parse_quantity(text, kind, name);
+          },
+          help + unit_help(kind))
+      ->type_name("VALUE");
+}
+
+/// The same for an optional quantity (absent: the case's or the command's default).
+inline CLI::Option* add_quantity(CLI::App* cmd, const std::string& name,
+                                 std::optional<double>& value, QuantityKind kind,
+                                 const std::string& help) {
+  return cmd
+      ->add_option_function<std::string>(
+          name,
+          [&value, kind, name](const std::string& text) {
+            value = parse_quantity(text, kind, name);
+          },
+          help + unit_help(kind))
+      ->type_name("VALUE");
+}
 
 /// Validator of an output-file option: refuses an empty name and a target that is not a regular
 /// file (a device node, a directory) when the command line is parsed, before any work is done.

@@ -5,6 +5,7 @@
 #include <vtkLogger.h>
 #include <vtkObject.h>
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 #include <new>
@@ -13,6 +14,7 @@
 
 #include "app/command.hpp"
 #include "app/finite_stdout.hpp"
+#include "case/case_key.hpp"
 #include "core/blas_threads.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
@@ -37,7 +39,8 @@ bool register_command(CommandSetup setup) {
 namespace {
 
 /// The first sentence of a command's description (abbreviations such as "e.g." do not end it),
-/// cut at a word boundary to fit one line of the root --help.
+/// or its first clause when the sentence is longer than a line: the root --help never cuts a
+/// description off with "..." (tests/app checks it).
 std::string first_sentence(const std::string& text) {
   std::size_t end = 0;
   while (true) {
@@ -45,6 +48,7 @@ std::string first_sentence(const std::string& text) {
     if (end == std::string::npos) return text.substr(0, text.find('\n'));
     const bool abbreviation = (end >= 3 && text.compare(end - 3, 3, "e.g") == 0) ||
                               (end >= 3 && text.compare(end - 3, 3, "i.e") == 0) ||
+                              (end >= 3 && text.compare(end - 3, 3, " eq") == 0) ||
                               (end >= 1 && text[end - 1] == '*');
     if (!abbreviation && (end + 1 == text.size() || text[end + 1] == ' ' || text[end + 1] == '\n'))
       break;
@@ -53,10 +57,14 @@ std::string first_sentence(const std::string& text) {
   std::string sentence = text.substr(0, end);
   for (char& c : sentence)
     if (c == '\n') c = ' ';
+  // A sentence longer than a line of the root --help is summarised by its first clause (up to
+  // ':', ';' or a parenthesis), never cut off; the command's own --help shows the whole text.
   constexpr std::size_t kWidth = 90;
   if (sentence.size() > kWidth) {
-    const std::size_t space = sentence.rfind(' ', kWidth);
-    sentence = sentence.substr(0, space == std::string::npos ? kWidth : space) + " ...";
+    std::size_t clause = std::string::npos;
+    for (const char* mark : {": ", "; ", " (", ", "})
+      clause = std::min(clause, sentence.find(mark, 10));
+    if (clause != std::string::npos) sentence.resize(clause);
   }
   return sentence;
 }
@@ -67,6 +75,10 @@ lumped::Recording load_recording(const std::string& csv_path) {
   lumped::Recording rec = lumped::read_recording(csv_path);
   for (const std::string& w : rec.warnings) std::cerr << "rheomag: warning: " << w << "\n";
   return rec;
+}
+
+cases::Case load_case(const std::string& path, const std::vector<std::string>& settings) {
+  return cases::with_settings(cases::load_case(path), settings, "--set");
 }
 
 void setup_commands(CLI::App& root) {

@@ -11,6 +11,7 @@
 #include "case/toml_section.hpp"
 #include "case/wire_gauge.hpp"
 #include "core/error.hpp"
+#include "core/units.hpp"
 
 namespace rheomag::cases {
 namespace {
@@ -433,6 +434,73 @@ std::string wire_text(double n) {
   char text[48];
   std::snprintf(text, sizeof text, "%.9g mm", awg_diameter_relaxed(n) * 1e3);
   return text;
+}
+
+CaseEdit parse_setting(const Case& base, const std::string& setting, const std::string& option) {
+  const std::size_t eq = setting.find('=');
+  const std::string where = option + " " + setting;
+  if (eq == std::string::npos || eq == 0)
+    throw InputError(where + ": expected KEY=VALUE, e.g. " + option + " geometry.gap_width=1.2");
+  const std::string key_text = setting.substr(0, eq);
+  const std::string text = setting.substr(eq + 1);
+  const CaseKey key = resolve_case_key(base, key_text, option);
+  if (text.empty()) throw InputError(where + ": expected a value after '='");
+  auto number = [&]() -> double {
+    // A length parameter and a circuit current may carry a unit; the value is in file units.
+    if (key.target == KeyTarget::template_parameter && key.kind == ParameterKind::length)
+      return parse_quantity(text, QuantityKind::length, where) / key.si_per_unit;
+    if (key.target == KeyTarget::circuit_current)
+      return parse_quantity(text, QuantityKind::current, where);
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (end == text.c_str() || *end != '\0' || !std::isfinite(v))
+      throw InputError(where + ": '" + key_text + "' holds a number; got \"" + text + "\"");
+    return v;
+  };
+  switch (key.type) {
+    case KeyType::integer: {
+      const double v = number();
+      if (std::trunc(v) != v || std::fabs(v) > 9.0e15)
+        throw InputError(where + ": '" + key_text + "' holds an integer; got \"" + text + "\"");
+      return {key, static_cast<long long>(v)};
+    }
+    case KeyType::number:
+      return {key, number()};
+    case KeyType::boolean:
+      if (text == "true") return {key, true};
+      if (text == "false") return {key, false};
+      throw InputError(where + ": '" + key_text + "' holds true or false; got \"" + text + "\"");
+    case KeyType::text:
+      return {key, text};
+  }
+  throw InputError(where + ": unsupported value");
+}
+
+Case with_settings(const Case& base, const std::vector<std::string>& settings,
+                   const std::string& option) {
+  if (settings.empty()) return base;
+  std::vector<CaseEdit> edits;
+  std::string listed;
+  for (const std::string& s : settings) {
+    edits.push_back(parse_setting(base, s, option));
+    const CaseKey& key = edits.back().key;
+    // The unit of the value as the case holds it (a template length in the file's unit).
+    const std::string unit =
+        key.target == KeyTarget::template_parameter && key.kind == ParameterKind::length
+            ? (key.si_per_unit == 1.0    ? " m"
+               : key.si_per_unit == 1e-3 ? " mm"
+                                         : "")
+        : key.target == KeyTarget::circuit_current ? " A"
+                                                   : "";
+    listed += (listed.empty() ? "" : ", ") + key.written + " = " +
+              format_value(edits.back().value) + unit;
+  }
+  Case edited = with(base, edits);
+  // The file's description speaks of the unedited design (its turns, its gap): name the edits.
+  edited.description =
+      "edited with " + option + ": " + listed +
+      (base.description.empty() ? std::string() : " (the file's description no longer holds)");
+  return edited;
 }
 
 }  // namespace rheomag::cases

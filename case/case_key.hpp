@@ -66,6 +66,17 @@ struct CaseEdit {
 /// (e.g. a template's dimensions that do not fit together).
 Case with(const Case& base, const std::vector<CaseEdit>& edits);
 
+/// One "KEY=VALUE" setting of a command line (`--set geometry.coil_turns=800`): the key resolved
+/// against `base` (InputError naming `option`, the setting and the closest existing key) and the
+/// value read as the key's type (file units; a length parameter or a circuit current may also
+/// carry a unit, "1.2mm", "500mA", converted to the case's unit).
+CaseEdit parse_setting(const Case& base, const std::string& setting, const std::string& option);
+
+/// `base` with the `--set` settings applied (parse_setting + with); the case's description then
+/// names the edits (the file's own text may no longer hold, e.g. its turns).
+Case with_settings(const Case& base, const std::vector<std::string>& settings,
+                   const std::string& option);
+
 /// True when every edit only changes circuit currents (same geometry, materials and mesh).
 bool only_currents(const std::vector<CaseEdit>& edits);
 

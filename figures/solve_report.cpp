@@ -36,14 +36,16 @@ std::string key_numbers(const SolvedCase& s) {
     << r.dofs << " unknowns, " << r.newton_iterations << " Newton iterations, solved in "
     << html_number(r.seconds, 3) << " s.</p>\n";
   if (!r.gaps.empty()) {
-    o << "<h2>Fluid gaps</h2>\n<table><tr><th>gap</th><th>kind</th><th>B_avg [T] (area)</th>"
-         "<th>|B_n| avg [T]</th><th>mid-line |B| mean [T]</th><th>min</th><th>max</th></tr>\n";
+    // Column names as docs/quantities.md defines them (solve's text, JSON and the sweep CSV).
+    o << "<h2>Fluid gaps</h2>\n<table><tr><th>gap</th><th>kind</th><th>B_avg [T]</th>"
+         "<th>Bn_avg [T]</th><th>B_min_midline [T]</th><th>B_max_midline [T]</th>"
+         "<th>B_max_area [T]</th></tr>\n";
     for (const magnetostatics::GapResult& g : r.gaps) {
       o << "<tr><td>" << html_escape(g.name) << "</td><td>"
         << (g.kind == mesh::GapKind::annular ? "annular" : "radial") << "</td><td>"
         << cell(g.b.average) << "</td><td>" << cell(g.b_normal.average) << "</td><td>"
-        << cell(g.line_b.average) << "</td><td>" << cell(g.line_b.minimum) << "</td><td>"
-        << cell(g.line_b.maximum) << "</td></tr>\n";
+        << cell(g.line_b.minimum) << "</td><td>" << cell(g.line_b.maximum) << "</td><td>"
+        << cell(g.b.maximum) << "</td></tr>\n";
     }
     o << "</table>\n";
   }

@@ -274,4 +274,12 @@ Results compute_results(const MagnetostaticSolver& solver, const Solution& solut
   return res;
 }
 
+std::vector<SweepPoint> sweep_with_gaps(MagnetostaticSolver& solver, int circuit,
+                                        const std::vector<double>& currents) {
+  return solver.sweep(circuit, currents, [&solver](const Solution& s, SweepPoint& point) {
+    for (const GapResult& g : compute_results(solver, s).gaps)
+      point.gaps.push_back({g.name, g.b.average, g.line_b.maximum, g.b.maximum});
+  });
+}
+
 }  // namespace rheomag::magnetostatics

@@ -89,6 +89,11 @@ inline constexpr int kGapLineSamples = 201;
 /// Evaluates all results of `solution` (computed by `solver`).
 Results compute_results(const MagnetostaticSolver& solver, const Solution& solution);
 
+/// MagnetostaticSolver::sweep with each point's gap flux densities (B_avg, B_max_midline,
+/// B_max_area) from compute_results.
+std::vector<SweepPoint> sweep_with_gaps(MagnetostaticSolver& solver, int circuit,
+                                        const std::vector<double>& currents);
+
 /// A point of the mesh: its triangle and reference coordinates (xi, eta) there.
 struct MeshLocation {
   int element = -1;

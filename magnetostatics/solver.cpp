@@ -321,8 +321,9 @@ Solution MagnetostaticSolver::solve_with(const std::vector<double>& currents,
   return solution;
 }
 
-std::vector<SweepPoint> MagnetostaticSolver::sweep(int circuit,
-                                                   const std::vector<double>& currents) {
+std::vector<SweepPoint> MagnetostaticSolver::sweep(
+    int circuit, const std::vector<double>& currents,
+    const std::function<void(const Solution&, SweepPoint&)>& each) {
   if (circuit < 0 || circuit >= static_cast<int>(problem_.circuits.size())) {
     throw InputError("sweep of circuit " + std::to_string(circuit) + " but " +
                      std::to_string(problem_.circuits.size()) + " circuit(s) are defined");
@@ -341,6 +342,7 @@ std::vector<SweepPoint> MagnetostaticSolver::sweep(int circuit,
     point.secant_inductance =
         current != 0.0 ? point.flux_linkage / current : point.incremental_inductance;
     point.newton_iterations = s.newton.iterations;
+    if (each) each(s, point);
     table.push_back(point);
     previous = std::move(s.a);
   }

@@ -4,7 +4,9 @@
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/Core>
+#include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "case/problem.hpp"
@@ -34,6 +36,14 @@ struct Solution {
   double seconds = 0.0;                        ///< wall time of the solve
 };
 
+/// The flux density of one fluid gap at a sweep point (the quantities of docs/quantities.md).
+struct SweepGap {
+  std::string name;
+  double b_avg = 0.0;          ///< B_avg: |B| averaged over the gap's area [T]
+  double b_max_midline = 0.0;  ///< B_max_midline: largest |B| along the gap's mid-line [T]
+  double b_max_area = 0.0;     ///< B_max_area: largest |B| anywhere in the gap (corners) [T]
+};
+
 /// One row of a current sweep.
 struct SweepPoint {
   double current = 0.0;                 ///< [A]
@@ -41,6 +51,7 @@ struct SweepPoint {
   double secant_inductance = 0.0;       ///< lambda / I [H] (incremental at I = 0)
   double incremental_inductance = 0.0;  ///< dlambda/dI [H]
   int newton_iterations = 0;
+  std::vector<SweepGap> gaps;  ///< filled by sweep_with_gaps (results.hpp); empty otherwise
 };
 
 /// Nonlinear magnetostatic finite-element solver on a fixed mesh (see element_kernel.hpp for the
@@ -68,7 +79,9 @@ class MagnetostaticSolver {
   Solution solve();
   /// lambda(I) and L(I) of circuit `circuit` for each current (other circuits at their problem
   /// currents), each solve warm-started from the previous one, same factorisation analysis.
-  std::vector<SweepPoint> sweep(int circuit, const std::vector<double>& currents);
+  /// `each`, when given, is called with every point's solution and row (e.g. to add its gaps).
+  std::vector<SweepPoint> sweep(int circuit, const std::vector<double>& currents,
+                                const std::function<void(const Solution&, SweepPoint&)>& each = {});
   /// Drops the numeric factorisation but keeps the symbolic analysis: the next solve gives
   /// bitwise what a newly constructed solver of the same problem and mesh would give.
   void discard_factorisation();

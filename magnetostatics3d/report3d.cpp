@@ -34,6 +34,7 @@ nlohmann::json results_json_3d(const Results3d& results) {
                     {"B_avg", number(g.b.average)},
                     {"B_min", number(g.b.minimum)},
                     {"B_max", number(g.b.maximum)},
+                    {"B_max_area", number(g.b.maximum)},  // docs/quantities.md: over the volume
                     {"Bn_avg", number(g.b_normal.average)},
                     {"Bn_min", number(g.b_normal.minimum)},
                     {"Bn_max", number(g.b_normal.maximum)},
@@ -80,11 +81,11 @@ std::string results_summary_3d(const Results3d& results) {
                 results.newton_iterations, residual, results.seconds);
   out << line;
   if (!results.gaps.empty()) {
-    out << "\nfluid gap [T]          kind     |B| avg     min     max  |Bn| avg\n";
+    out << "\nfluid gap [T]          kind        B_avg B_min_area B_max_area    Bn_avg\n";
     for (const GapResult3d& g : results.gaps) {
-      std::snprintf(line, sizeof line, "  %-20.20s %-8s %8.3f %7.3f %7.3f %9.3f\n", g.name.c_str(),
-                    std::string(kGapKindNames.name(g.kind)).c_str(), g.b.average, g.b.minimum,
-                    g.b.maximum, g.b_normal.average);
+      std::snprintf(line, sizeof line, "  %-20.20s %-8s %8.3f %10.3f %10.3f %9.3f\n",
+                    g.name.c_str(), std::string(kGapKindNames.name(g.kind)).c_str(), g.b.average,
+                    g.b.minimum, g.b.maximum, g.b_normal.average);
       out << line;
       out << "    |B| per 10-degree sector from phi = 0:";
       for (int k = 0; k < kThetaSectors; ++k) {

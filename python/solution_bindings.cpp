@@ -83,6 +83,12 @@ void bind_solution(py::module_& m) {
           "B_avg", [](const GapView& g) { return py::object(g.stats["B_avg"]); },
           "|B| averaged over the gap's area [T]")
       .def_property_readonly(
+          "B_max_midline", [](const GapView& g) { return py::object(g.stats["B_max_midline"]); },
+          "largest |B| along the gap's mid-line [T] (docs/quantities.md)")
+      .def_property_readonly(
+          "B_max_area", [](const GapView& g) { return py::object(g.stats["B_max_area"]); },
+          "largest |B| anywhere in the gap, at the pole corners [T] (docs/quantities.md)")
+      .def_property_readonly(
           "Bn_avg", [](const GapView& g) { return py::object(g.stats["Bn_avg"]); },
           "|B_n| (normal to the walls) averaged over the area [T]")
       .def_property_readonly(

@@ -34,8 +34,10 @@ RowLayout::RowLayout(const SweepSpec& spec, std::vector<ColumnGroup> extra)
   for (const auto& circuit : problem.circuits) circuits_.push_back(circuit.name);
   const std::size_t before = names_.size();
   for (const std::string& g : gaps_) {
-    names_.push_back(g + ".b_avg_T");
-    names_.push_back(g + ".b_max_T");
+    // The names of docs/quantities.md, as solve's text and JSON print them.
+    names_.push_back(g + ".B_avg_T");
+    names_.push_back(g + ".B_max_midline_T");
+    names_.push_back(g + ".B_max_area_T");
   }
   for (const std::string& c : circuits_) {
     names_.push_back(c + ".flux_linkage_Wb");
@@ -73,15 +75,17 @@ std::string RowLayout::ok_row(const Design& design, const SolvedDesign& solved) 
   std::vector<double> values;
   const auto& results = solved.results;
   for (const std::string& g : gaps_) {
-    double average = none, maximum = none;
+    double average = none, midline = none, area = none;
     for (const auto& gap : results.gaps) {
       if (gap.name == g) {
         average = gap.b.average;
-        maximum = gap.b.maximum;
+        midline = gap.line_b.maximum;
+        area = gap.b.maximum;
       }
     }
     values.push_back(average);
-    values.push_back(maximum);
+    values.push_back(midline);
+    values.push_back(area);
   }
   for (const std::string& c : circuits_) {
     double lambda = none, secant = none, incremental = none;

@@ -33,8 +33,8 @@ struct ColumnGroup {
 inline constexpr std::size_t kMaxErrorText = 400;
 
 /// The columns of a sweep's CSV: design_id, one per axis key (as written), per fluid gap of the
-/// base case <gap>.b_avg_T and <gap>.b_max_T (|B| area average and maximum), per circuit
-/// <circuit>.flux_linkage_Wb, .inductance_H (secant) and .incremental_inductance_H,
+/// base case <gap>.B_avg_T, <gap>.B_max_midline_T and <gap>.B_max_area_T (docs/quantities.md), per
+/// circuit <circuit>.flux_linkage_Wb, .inductance_H (secant) and .incremental_inductance_H,
 /// newton_iterations, elements, the extra groups' columns, status (ok|error) and error.
 class RowLayout {
  public:

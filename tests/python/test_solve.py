@@ -38,6 +38,16 @@ def test_solution_properties_are_the_json_numbers(valve_case):
     assert [g.name for g in s.gaps] == [g["name"] for g in j["gaps"]]
 
 
+def test_gap_flux_density_vocabulary(valve_case):
+    """The names of docs/quantities.md: B_max_midline is the mid-line peak (the fixed B_max),
+    B_max_area the corner peak (B_area_max), and the corner peak is the larger."""
+    s = valve_case.solve()
+    for g, j in zip(s.gaps, s.json()["gaps"]):
+        assert g.B_max_midline == j["B_max_midline"] == j["B_max"]
+        assert g.B_max_area == j["B_max_area"] == j["B_area_max"]
+        assert g.B_avg <= g.B_max_area and g.B_max_midline <= g.B_max_area
+
+
 def test_gap_profiles(valve_case):
     s = valve_case.solve()
     for g in s.gaps:
