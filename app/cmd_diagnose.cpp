@@ -137,7 +137,7 @@ void run(const DiagnoseCliOptions& o) {
   if (o.json)
     rheomag::app::print_json(diagnose::diagnosis_json(d), 2);
   else
-    print_summary(d);
+    std::cout << diagnose::diagnosis_text(d);
 }
 
 const bool diagnose_registered = app::register_command([](CLI::App& root) {

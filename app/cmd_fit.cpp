@@ -60,7 +60,9 @@ const bool fit_registered = rheomag::app::register_command([](CLI::App& root) {
       "free run); an unstable one is reported as such instead of a FIT.");
   cmd->add_option("recording", o->request.recording, "Recording CSV (its .toml sidecar beside it)")
       ->required();
-  cmd->add_option("--model", o->request.model, "Model name (see above)")->required();
+  cmd->add_option("--model", o->request.model,
+                  "Model name: one of the list under 'Models:' in this help")
+      ->required();
   cmd->add_option("--train", o->request.train,
                   "Training samples a:b, half-open sample indices [a, b) ('a:' to the end); "
                   "default all")
@@ -72,9 +74,11 @@ const bool fit_registered = rheomag::app::register_command([](CLI::App& root) {
   cmd->add_option("--mode", o->request.mode,
                   "simulation (free run, default) or prediction (one step ahead)")
       ->transform(CLI::CheckedTransformer(
-          std::map<std::string, EvalMode>{{"simulation", EvalMode::simulation},
-                                          {"prediction", EvalMode::prediction}},
-          CLI::ignore_case));
+                      std::map<std::string, EvalMode>{{"simulation", EvalMode::simulation},
+                                                      {"prediction", EvalMode::prediction}},
+                      CLI::ignore_case)
+                      .description(""))
+      ->type_name("simulation|prediction");
   cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr (grey-box fits report them)");
   cmd->add_flag("--json", o->json,
                 "Print one JSON object: the fitted model (format, kind, model, rig, drive, output, "

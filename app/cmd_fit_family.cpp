@@ -81,12 +81,16 @@ const bool fit_family_registered = rheomag::app::register_command([](CLI::App& r
   cmd->add_option("--predict", o->predict, "Recordings to predict with the fitted model")
       ->check(rheomag::app::non_empty());
   cmd->add_option("--decimation", o->decimation,
-                  "Keep every n-th sample of each training recording in the joint fit")
+                  "Fit on every n-th sample of each training recording (samples 0, n, 2n, ...; "
+                  "the FIT of each recording is still computed on every sample)")
+      ->capture_default_str()
       ->check(rheomag::app::in_domain(rheomag::Domain::between(1, 100).whole()));
   cmd->add_option("--starts", o->starts, "Multi-start count of the fit")
+      ->capture_default_str()
       ->check(rheomag::app::in_domain(rheomag::Domain::between(1, 16).whole()));
   cmd->add_option("--max-substep", o->max_substep,
                   "[s] longest RK4 substep inside the fit (stiff states shorten it further)")
+      ->capture_default_str()
       ->check(rheomag::app::in_domain(rheomag::Domain::between(1e-6, 1.0, "s")));
   cmd->add_option("--report", o->report,
                   "Write DIR/report.html: measured vs model loops of every recording, parameters "

@@ -45,9 +45,13 @@ nlohmann::json design_json(const rheomag::optimise::DesignReport& d,
     if (std::isfinite(s.constraint.upper)) c["max"] = s.constraint.upper;
     constraints.push_back(c);
   }
-  return {{"objective", d.objective},   {"feasible", d.feasible},
-          {"variables", variables},     {"quantities", quantities},
-          {"constraints", constraints}, {"variables_at_bounds", d.variables_at_bounds}};
+  return {{"objective", d.objective},
+          {"feasible", d.feasible},
+          {"violations", rheomag::optimise::violations_json(d)},
+          {"variables", variables},
+          {"quantities", quantities},
+          {"constraints", constraints},
+          {"variables_at_bounds", d.variables_at_bounds}};
 }
 
 int run_optimise(const OptimiseCli& o) {
@@ -65,6 +69,7 @@ int run_optimise(const OptimiseCli& o) {
                           {"status", r.status},
                           {"converged", r.converged},
                           {"iterations", r.iterations},
+                          {"objective_change", optimise::objective_change_text(r)},
                           {"initial", design_json(r.initial, r.spec)},
                           {"optimal", design_json(r.optimal, r.spec)},
                           {"conflicts", r.conflicts},

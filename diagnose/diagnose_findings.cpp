@@ -2,6 +2,10 @@
 
 #include "diagnose/diagnose_findings.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
 #include "diagnose/diagnose_text.hpp"
 
 namespace rheomag::diagnose {
@@ -25,6 +29,127 @@ std::string separating_measurement(const Candidate& a, const Candidate& b) {
   if (auto how = b.separating_measurement(a); !how.empty()) return how;
   return "excite the device at several frequencies and amplitudes: the two effects scale "
          "differently with rate and amplitude";
+}
+
+std::string selection_stage(int step) {
+  return "selection step " + std::to_string(step + 1);
+}
+
+std::string percent_text(double percent) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f %%", percent);
+  return text;
+}
+
+namespace {
+
+std::string significant(double value, int digits) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%#.*g", digits, value);
+  std::string out = text;
+  if (!out.empty() && out.back() == '.') out.pop_back();  // "%#g" keeps a bare point
+  return out;
+}
+
+}  // namespace
+
+std::string value_text(double value, const std::string& unit) {
+  const std::string number = significant(value, 3);
+  return unit.empty() || unit == "1" ? number : number + " " + unit;
+}
+
+std::string delay_text(const Nuisance& u) {
+  char text[160];
+  const double samples = u.delay_samples;
+  std::snprintf(text, sizeof text, "%+.3g ms (%+.2f samples, %s)", 1e3 * u.delay, samples,
+                std::abs(samples) < 0.25 ? "output and drives aligned"
+                : samples > 0.0          ? "output behind the drives"
+                                         : "output ahead of the drives");
+  return text;
+}
+
+std::string parameter_text(const Finding& f, std::size_t j, const std::string& plus_minus) {
+  const std::string unit = j < f.param_units.size() ? f.param_units[j] : "";
+  std::string text = f.param_names[j] + " = " + value_text(f.params[j], unit);
+  // A standard error is infinite (or unknown) where the parameter is not identified.
+  if (std::isfinite(f.standard_errors[j])) {
+    const std::string se = significant(f.standard_errors[j], 2);
+    text += " " + plus_minus + " " + (unit.empty() || unit == "1" ? se : se + " " + unit);
+  } else {
+    text += " (standard error unbounded)";
+  }
+  return text;
+}
+
+std::string output_unit(const Diagnosis& d) {
+  return d.output_column == "force" ? "N" : d.output_column == "current" ? "A" : "Pa";
+}
+
+std::string nuisance_text(const Nuisance& u) {
+  std::string text = "delay " + delay_text(u) + ", drives " +
+                     std::string(kDriveSamplingNames.name(u.drive_sampling)) + " between samples";
+  if (std::isfinite(u.sampling_fit_gain))
+    text += " (" + significant(u.sampling_fit_gain, 2) +
+            " FIT points better than the other convention)";
+  if (u.preyield_flow > 0.0)
+    text +=
+        ", pre-yield smoothing " + significant(100 * u.preyield_fraction, 2) + " % of peak flow";
+  return text;
+}
+
+namespace {
+
+const CandidateScore* score_of(const Diagnosis& d, const Candidate* c, int step) {
+  for (const auto& s : d.candidates)
+    if (s.effect == c && s.step == step) return &s;
+  return nullptr;
+}
+
+}  // namespace
+
+std::string ambiguity_text(const Finding& f, const Diagnosis& d) {
+  if (f.ambiguous_with.empty()) return "";
+  std::string text = "equally well explained at " + selection_stage(f.step) + " by";
+  for (std::size_t i = 0; i < f.ambiguous_with.size(); ++i) {
+    const Candidate* a = f.ambiguous_with[i];
+    text += (i == 0 ? " " : ", ") + a->name();
+    if (const CandidateScore* s = score_of(d, a, f.step); s && !s->screened)
+      text +=
+          " (FIT " + percent_text(s->fit_percent) + " against " + percent_text(f.fit_percent) + ")";
+  }
+  // What became of each tied candidate once this finding was in: screened out or not accepted
+  // later is no contradiction, it says the two explain the same part of the residual.
+  for (const Candidate* a : f.ambiguous_with)
+    for (int step = f.step + 1; step < f.step + 8; ++step) {
+      const CandidateScore* later = score_of(d, a, step);
+      if (!later) continue;
+      const bool accepted =
+          std::any_of(d.findings.begin(), d.findings.end(),
+                      [&](const Finding& g) { return g.effect == a && g.step == step; });
+      if (accepted)
+        text += "; " + a->name() + " was accepted as well at " + selection_stage(step) + ": with " +
+                f.effect->name() + " in, it still explains part of the residual";
+      else
+        text += "; " + a->name() + " was " +
+                (later->screened ? std::string("screened out") : std::string("not accepted")) +
+                " at " + selection_stage(step) + ", once " + f.effect->name() +
+                " was in: the two explain the same part of the residual, so the data name one of "
+                "them, not both";
+      break;
+    }
+  return text;
+}
+
+std::string candidate_outcome(const CandidateScore& c, const Diagnosis& d) {
+  if (c.screened) return "screened out (no decade of its parameter helps)";
+  for (const Finding& f : d.findings) {
+    if (f.step != c.step) continue;
+    if (f.effect == c.effect) return "accepted";
+    if (std::find(f.ambiguous_with.begin(), f.ambiguous_with.end(), c.effect) !=
+        f.ambiguous_with.end())
+      return "tied with " + f.effect->name() + " (reported as its equal)";
+  }
+  return "not accepted";
 }
 
 }  // namespace rheomag::diagnose

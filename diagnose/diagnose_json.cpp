@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "diagnose/candidate.hpp"
+#include "diagnose/diagnose_findings.hpp"
 #include "diagnose/diagnose_run.hpp"
 
 namespace rheomag::diagnose {
@@ -56,9 +57,10 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
                                {"regime", w.regime}});
   out["missing_physics"] = json::array();
   for (const auto& f : d.findings) {
-    json p = json::object(), u = json::object();
+    json p = json::object(), u = json::object(), units = json::object();
     for (std::size_t j = 0; j < f.params.size(); ++j) {
       p[f.param_names[j]] = f.params[j];
+      if (j < f.param_units.size()) units[f.param_names[j]] = f.param_units[j];
       u[f.param_names[j]] =
           std::isfinite(f.standard_errors[j]) ? json(f.standard_errors[j]) : json();
     }
@@ -66,6 +68,8 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
     json e = {{"name", f.effect->name()},
               {"params", p},
               {"standard_errors", u},
+              {"units", units},
+              {"accepted_at", selection_stage(f.step)},
               {"fit_percent", f.fit_percent},
               {"delta_bic", f.delta_bic},
               {"heldout_gain", f.heldout_gain},
@@ -80,6 +84,7 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
       e["ambiguous_with"] = json::array();
       for (const Candidate* a : f.ambiguous_with) e["ambiguous_with"].push_back(a->name());
       e["separating_measurement"] = f.separating_measurement;
+      e["ambiguity"] = ambiguity_text(f, d);
     }
     out["missing_physics"].push_back(e);
   }
@@ -113,7 +118,8 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
          {"step", c.step + 1},
          {"fit_percent", c.screened ? nlohmann::json() : nlohmann::json(c.fit_percent)},
          {"screened", c.screened},
-         {"delta_bic", c.delta_bic}});
+         {"delta_bic", c.delta_bic},
+         {"outcome", candidate_outcome(c, d)}});
   if (d.selection.size() > 0)
     out["selection_samples"] = {{"begin", d.selection.begin}, {"end", d.selection.end}};
   out["notes"] = d.notes;

@@ -15,6 +15,7 @@
 #include "core/output_set.hpp"
 #include "core/version.hpp"
 #include "diagnose/candidate.hpp"
+#include "diagnose/diagnose_findings.hpp"
 
 namespace rheomag::diagnose {
 
@@ -101,6 +102,42 @@ std::string svg_plot(const std::string& title, const std::string& ylabel,
 
 }  // namespace
 
+std::string diagnosis_text(const Diagnosis& d) {
+  const std::string unit = output_unit(d);
+  std::ostringstream o;
+  o << "baseline FIT " << percent_text(d.baseline_fit_percent) << " (" << kCalibrationStage
+    << ")\n";
+  for (const auto& item : d.includes)
+    o << "  baseline has " << item.name << ": " << item.source << "\n";
+  o << "  nuisance (" << kCalibrationStage << "): " << nuisance_text(d.nuisance) << "\n";
+  for (const auto& w : d.mismatch)
+    o << "  mismatch of the baseline " << w.t_start << "-" << w.t_end
+      << " s: " << percent_text(100 * w.share) << " of its residual energy (" << w.regime << ")\n";
+  if (d.findings.empty()) o << "missing physics: none\n";
+  for (const auto& f : d.findings) {
+    o << "missing physics: " << f.effect->name() << " (accepted at " << selection_stage(f.step)
+      << ", FIT " << percent_text(f.fit_percent) << " once added)\n";
+    if (!f.params.empty()) {
+      o << "    parameters (" << kFinalStage << "):";
+      for (std::size_t j = 0; j < f.params.size(); ++j)
+        o << (j == 0 ? " " : ", ") << parameter_text(f, j);
+      o << "\n";
+    }
+    o << "    " << f.evidence << "\n";
+    if (!f.ambiguous_with.empty())
+      o << "    " << ambiguity_text(f, d) << "\n    to separate them: " << f.separating_measurement
+        << "\n";
+  }
+  o << "final FIT " << percent_text(d.final_fit_percent) << " (" << kFinalStage << ")\n";
+  o << "  nuisance (" << kFinalStage << "): " << nuisance_text(d.final_nuisance) << "\n";
+  o << "unexplained: " << percent_text(100 * d.unexplained.share)
+    << " of the final residual energy lies above the noise floor (noise rms "
+    << value_text(d.unexplained.noise_sigma, unit) << ", residual rms "
+    << value_text(d.unexplained.residual_rms, unit) << ")\n";
+  for (const auto& note : d.notes) o << "note: " << note << "\n";
+  return o.str();
+}
+
 std::string diagnosis_traces_csv(const Diagnosis& d) {
   std::ostringstream o;
   o.precision(10);
@@ -121,9 +158,7 @@ std::string diagnosis_html(const Diagnosis& d) {
   }
   std::vector<Band> bands;
   for (const auto& w : d.mismatch) bands.push_back({w.t_start, w.t_end});
-  const std::string unit = d.output_column == "force"     ? "N"
-                           : d.output_column == "current" ? "A"
-                                                          : "Pa";
+  const std::string unit = output_unit(d);
   const std::string ylabel = d.output_column + " [" + unit + "]";
   std::ostringstream o;
   o << "<!DOCTYPE html>\n<html><head><meta charset='utf-8'><title>rheomag diagnosis</title>\n"
@@ -133,40 +168,35 @@ std::string diagnosis_html(const Diagnosis& d) {
        "</head><body>\n";
   o << "<h1>Diagnosis of " << html_escape(d.recording) << "</h1>\n";
   o << "<p>Output explained: <b>" << html_escape(d.output_column) << "</b>. Baseline FIT "
-    << html_number(d.baseline_fit_percent, 4) << " % &rarr; final FIT <b>"
-    << html_number(d.final_fit_percent, 4) << " %</b>.</p>\n";
+    << percent_text(d.baseline_fit_percent) << " (" << kCalibrationStage << ") &rarr; final FIT <b>"
+    << percent_text(d.final_fit_percent) << "</b> (" << kFinalStage << ").</p>\n";
   o << "<h2>Missing physics</h2>\n";
   if (d.findings.empty()) {
     o << "<p class='ok'>None: the calibrated baseline explains the recording "
          "(no candidate passed both the held-out and the BIC test).</p>\n";
   } else {
-    o << "<table><tr><th>#</th><th>effect</th><th>parameters (SI, &plusmn; 1 s.e.)</th>"
-         "<th>FIT after</th><th>evidence</th></tr>\n";
+    o << "<table><tr><th>#</th><th>effect</th><th>parameters (" << kFinalStage
+      << ", &plusmn; 1 s.e.)</th><th>accepted at; FIT once added</th><th>evidence</th></tr>\n";
     int i = 1;
     for (const auto& f : d.findings) {
       o << "<tr><td>" << i++ << "</td><td><b>" << f.effect->name() << "</b>";
-      if (!f.ambiguous_with.empty()) {
-        o << "<br><span class='warn'>or equally:";
-        for (const Candidate* a : f.ambiguous_with) o << ' ' << a->name();
-        o << "</span>";
-      }
       o << "</td><td>";
       for (std::size_t j = 0; j < f.params.size(); ++j)
-        o << html_escape(f.param_names[j]) << " = " << html_number(f.params[j]) << " &plusmn; "
-          << (std::isfinite(f.standard_errors[j]) ? html_number(f.standard_errors[j], 2)
-                                                  : "unbounded")
-          << "<br>";
-      o << "</td><td>" << html_number(f.fit_percent, 4) << " %</td><td>" << html_escape(f.evidence);
+        o << html_escape(parameter_text(f, j, "\u00b1")) << "<br>";
+      o << "</td><td>" << selection_stage(f.step) << "; " << percent_text(f.fit_percent)
+        << "</td><td>" << html_escape(f.evidence);
+      if (!f.ambiguous_with.empty())
+        o << "<br><span class='warn'>" << html_escape(ambiguity_text(f, d)) << "</span>";
       if (!f.separating_measurement.empty())
         o << "<br><i>To separate: " << html_escape(f.separating_measurement) << "</i>";
       o << "</td></tr>\n";
     }
     o << "</table>\n";
   }
-  o << "<h2>Unexplained</h2>\n<p>" << html_number(100 * d.unexplained.share, 3)
-    << " % of the final residual energy lies above the white-noise floor (noise rms "
-    << html_number(d.unexplained.noise_sigma) << ", residual rms "
-    << html_number(d.unexplained.residual_rms) << " " << unit << "; that is "
+  o << "<h2>Unexplained</h2>\n<p>" << percent_text(100 * d.unexplained.share)
+    << " of the final residual energy lies above the white-noise floor (noise rms "
+    << value_text(d.unexplained.noise_sigma, unit) << ", residual rms "
+    << value_text(d.unexplained.residual_rms, unit) << "; that is "
     << html_number(100 * d.unexplained.baseline_share, 3)
     << " % of the baseline's residual energy): no candidate explains it.</p>\n";
   o << "<h2>What the baseline contained</h2>\n<table><tr><th>item</th><th>value</th>"
@@ -179,18 +209,16 @@ std::string diagnosis_html(const Diagnosis& d) {
       << "</td><td>" << html_escape(item.source) << "</td></tr>\n";
   const auto& u = d.final_nuisance;
   o << "</table>\n<h2>Recording nuisances (calibrated, not physics)</h2>\n<table>"
-    << "<tr><td>delay of the output behind the drives</td><td>" << html_number(1e3 * u.delay)
-    << " ms (" << html_number(u.delay_samples, 2) << " samples): " << html_escape(u.sampling)
+    << "<tr><th>stage</th><th>nuisances (delay positive: the output behind the drives)</th></tr>"
+    << "<tr><td>" << kCalibrationStage << "</td><td>" << html_escape(nuisance_text(d.nuisance))
+    << "</td></tr>\n<tr><td>" << kFinalStage << "</td><td>"
+    << html_escape(nuisance_text(d.final_nuisance)) << "</td></tr>\n";
+  o << "<tr><td>drive sampling (" << kFinalStage << ")</td><td>" << html_escape(u.sampling)
     << "</td></tr>\n";
-  o << "<tr><td>drive sampling convention</td><td>" << kDriveSamplingNames.name(u.drive_sampling);
-  if (std::isfinite(u.sampling_fit_gain))
-    o << " (baseline FIT " << html_number(u.sampling_fit_gain, 2)
-      << " points better than the other convention)";
-  o << "</td></tr>\n";
   if (u.preyield_flow > 0.0)
-    o << "<tr><td>pre-yield smoothness of the static map</td><td>plug switch width "
-      << html_number(u.preyield_flow) << " m^3/s (" << html_number(100 * u.preyield_fraction, 2)
-      << " % of the peak flow)</td></tr>\n";
+    o << "<tr><td>pre-yield smoothness of the static map (" << kFinalStage
+      << ")</td><td>plug switch width " << html_escape(value_text(u.preyield_flow, "m^3/s"))
+      << "</td></tr>\n";
   if (u.velocity_filter_bandwidth > 0.0)
     o << "<tr><td>noisy velocity smoothed (cubic Savitzky-Golay, zero phase)</td><td>-3 dB at "
       << html_number(u.velocity_filter_bandwidth) << " Hz</td></tr>\n";
@@ -213,7 +241,7 @@ std::string diagnosis_html(const Diagnosis& d) {
     const double margin = 0.5 * (w.t_end - w.t_start);
     o << "<h2>Zoom on the worst window (" << html_number(w.t_start) << "&ndash;"
       << html_number(w.t_end) << " s, " << html_escape(w.regime) << ", "
-      << html_number(100 * w.share, 3) << " % of the residual energy)</h2>\n"
+      << percent_text(100 * w.share) << " of the residual energy)</h2>\n"
       << svg_plot("worst window", ylabel, d.t,
                   {{"measured", "#999", &d.measured},
                    {"baseline", "#d62728", &d.baseline.prediction},
@@ -224,13 +252,14 @@ std::string diagnosis_html(const Diagnosis& d) {
        "[s]</th><th>share of residual</th><th>regime</th></tr>\n";
   for (const auto& w : d.mismatch)
     o << "<tr><td>" << html_number(w.t_start) << "</td><td>" << html_number(w.t_end) << "</td><td>"
-      << html_number(100 * w.share, 3) << " %</td><td>" << html_escape(w.regime) << "</td></tr>\n";
+      << percent_text(100 * w.share) << "</td><td>" << html_escape(w.regime) << "</td></tr>\n";
   o << "</table>\n<h2>Residual statistics of the baseline</h2>\n<p>Lag-1 autocorrelation "
     << html_number(d.baseline_stats.lag1_autocorrelation, 3)
     << ", Ljung&ndash;Box Q(20) = " << html_number(d.baseline_stats.ljung_box_q, 4) << " ("
     << (d.baseline_stats.white ? "white" : "not white")
     << "); after: " << (d.final_stats.white ? "white" : "not white")
-    << ". Measured output lags the baseline by "
+    << ". Cross-correlation of the measured output with the calibrated baseline's prediction "
+       "(its delay already applied): the output lags it by a further "
     << html_number(1e3 * d.baseline_stats.output_lag, 3)
     << " ms.</p>\n<table><tr><th>signal</th>"
        "<th>peak correlation with residual</th><th>lag [s]</th></tr>\n";
@@ -243,12 +272,17 @@ std::string diagnosis_html(const Diagnosis& d) {
     o << "<tr><td>" << html_escape(l.input) << "</td><td>" << html_number(l.opening, 3)
       << "</td><td>" << html_number(l.slow_fast_ratio, 3) << "</td><td>"
       << (l.rate_independent ? "yes" : "no") << "</td></tr>\n";
-  o << "</table>\n<h2>Candidates tried</h2>\n<table><tr><th>step</th><th>effect</th><th>FIT "
-       "%</th><th>&Delta;BIC</th></tr>\n";
+  o << "</table>\n<h2>Candidates tried (forward selection)</h2>\n<p>Each step fits every "
+       "candidate on top of the model so far; screening comes first: a candidate whose "
+       "parameter helps at no decade is scored there and not fitted. A candidate tied with the "
+       "one accepted at a step is usually screened out at the next: the accepted one already "
+       "explains what it would.</p>\n<table><tr><th>stage</th><th>effect</th><th>FIT "
+       "(selection)</th><th>&Delta;BIC</th><th>outcome</th></tr>\n";
   for (const auto& c : d.candidates)
-    o << "<tr><td>" << c.step + 1 << "</td><td>" << c.effect->name() << "</td><td>"
-      << (c.screened ? std::string("screened out") : html_number(c.fit_percent, 4)) << "</td><td>"
-      << html_number(c.delta_bic, 4) << "</td></tr>\n";
+    o << "<tr><td>" << selection_stage(c.step) << "</td><td>" << c.effect->name() << "</td><td>"
+      << (c.screened ? std::string("&ndash;") : percent_text(c.fit_percent)) << "</td><td>"
+      << html_number(c.delta_bic, 4) << "</td><td>" << html_escape(candidate_outcome(c, d))
+      << "</td></tr>\n";
   o << "</table>\n";
   if (!d.notes.empty()) {
     o << "<h2>Notes</h2><ul>";

@@ -8,6 +8,10 @@
 
 namespace rheomag::diagnose {
 
+/// The plain-text summary of `rheomag diagnose`: each value labelled with the stage it comes from
+/// (baseline calibration, selection step N, final fit), parameters with units, FIT to 0.1 %.
+std::string diagnosis_text(const Diagnosis& d);
+
 /// The report as one self-contained HTML page (inline SVG, no external resources).
 std::string diagnosis_html(const Diagnosis& d);
 

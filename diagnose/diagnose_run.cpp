@@ -244,6 +244,7 @@ Diagnosis diagnose(const lumped::Recording& recording, const DiagnoseOptions& op
   for (auto& f : d.findings) {
     for (const auto& p : f.effect->params(model)) {
       f.param_names.push_back(p.name);
+      f.param_units.push_back(p.unit);
       f.params.push_back(current.values[offset]);
       f.standard_errors.push_back(current.standard_errors[offset]);
       ++offset;

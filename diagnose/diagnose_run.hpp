@@ -60,10 +60,12 @@ struct CandidateScore {
 /// One accepted piece of missing physics.
 struct Finding {
   const Candidate* effect;  ///< a registered candidate (candidate_registry.hpp)
+  int step = 0;             ///< the forward-selection step that accepted it (0: the first)
   std::vector<std::string> param_names;
-  std::vector<double> params;           ///< SI, from the final joint re-fit
-  std::vector<double> standard_errors;  ///< SI
-  double fit_percent = 0.0;             ///< FIT% once this effect was added
+  std::vector<std::string> param_units;  ///< SI unit of each parameter ("1": dimensionless)
+  std::vector<double> params;            ///< SI, from the final joint re-fit
+  std::vector<double> standard_errors;   ///< SI
+  double fit_percent = 0.0;              ///< FIT% once this effect was added (selection stage)
   double delta_bic = 0.0;
   double heldout_gain = 0.0;  ///< fraction by which the held-out squared error fell
   double share = 0.0;         ///< share of the residual energy above the noise floor it removed

@@ -255,6 +255,7 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evi
     const auto& best = tried.front();
     Finding f;
     f.effect = best.effect;
+    f.step = step;
     f.fit_percent = lumped::fit_percent(y, best.fit.prediction);
     f.delta_bic = best.delta_bic;
     f.heldout_gain = gain;

@@ -64,10 +64,26 @@ void print_held_out_summary(std::ostream& out, const FamilyFit& r) {
 
 }  // namespace
 
+std::string decimation_text(int decimation) {
+  if (decimation <= 1)
+    return "samples: the fit uses every sample of each training recording (--decimation 1)";
+  const int last = decimation % 10, tens = decimation % 100 / 10;
+  const char* suffix = tens == 1   ? "th"
+                       : last == 1 ? "st"
+                       : last == 2 ? "nd"
+                       : last == 3 ? "rd"
+                                   : "th";
+  return format_text(
+      "samples: the fit uses every %d%s sample of each training recording (--decimation %d, "
+      "default 4: samples 0, %d, %d, ...; 1/%d of the cost); the FIT and RE below are computed "
+      "on every sample",
+      decimation, suffix, decimation, decimation, 2 * decimation, decimation);
+}
+
 void write_family_fit_text(const FamilyFit& r, std::size_t recordings, int decimation,
                            std::ostream& out) {
-  out << format_text("model %s, joint fit on %zu recordings (every %d-th sample)\n",
-                     r.fit.model.c_str(), recordings, decimation);
+  out << format_text("model %s, joint fit on %zu recordings\n", r.fit.model.c_str(), recordings);
+  out << decimation_text(decimation) << "\n";
   out << format_text("  %-24s %14s %-13s %-13s\n", "parameter", "value", "+- classical",
                      "+- between recordings");
   const auto error_column = [&out](const std::optional<double>& e) {
@@ -80,10 +96,9 @@ void write_family_fit_text(const FamilyFit& r, std::size_t recordings, int decim
     out << format_text("  %-24s %14.6g", p.name.c_str(), p.value);
     error_column(p.standard_error);
     error_column(p.standard_error_between_recordings);
+    const std::string remark = parameter_remark(p);
     out << format_text(" %s%s\n", p.unit.c_str(),
-                       p.fixed      ? " (fixed)"
-                       : p.at_bound ? " (at bound)"
-                                    : "");
+                       remark.empty() ? "" : (" (" + remark + ")").c_str());
   }
   print_members(out, "training recordings:", r.training);
   if (!r.predicted.empty()) print_members(out, "predicted recordings:", r.predicted);

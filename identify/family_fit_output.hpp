@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <nlohmann/json.hpp>
 #include <ostream>
+#include <string>
 
 #include "identify/current_dependent_fit.hpp"
 #include "lumped/recording.hpp"
@@ -16,9 +17,13 @@ namespace rheomag::identify {
 nlohmann::json family_fit_json(const FamilyFit& r, const lumped::RecordingMeta& meta,
                                int decimation, bool cross_validate);
 
-/// The text report: parameters with both standard errors, then FIT%, RE and repeatability of the
-/// training, predicted and held-out recordings (`recordings` training recordings, every
-/// `decimation`-th sample).
+/// The sample rule of a joint fit in words: which samples the fit uses (every `decimation`-th of
+/// each training recording, the --decimation option) and that the metrics use them all.
+std::string decimation_text(int decimation);
+
+/// The text report: the sample rule, parameters with both standard errors, then FIT%, RE and
+/// repeatability of the training, predicted and held-out recordings (`recordings` training
+/// recordings, every `decimation`-th sample).
 void write_family_fit_text(const FamilyFit& r, std::size_t recordings, int decimation,
                            std::ostream& out);
 

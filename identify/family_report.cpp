@@ -107,42 +107,56 @@ std::string field_dependence(const FamilyFit& r) {
                      [&](double l) { return std::abs(l - m.field) < 1e-9 * (1 + std::abs(l)); }))
       levels.push_back(m.field);
   std::sort(levels.begin(), levels.end());
-  std::map<std::string, double> value;
   std::vector<double> values;
-  for (const FittedParameter& p : r.fit.params) {
-    value[p.name] = p.value;
-    values.push_back(p.value);
-  }
+  for (const FittedParameter& p : r.fit.params) values.push_back(p.value);
   const bool damper = r.fit.setup.kind == lumped::PhenoKind::damper &&
                       values.size() == lumped::pheno_params(lumped::PhenoKind::damper).size();
   const auto field = [&](double level) {
     return damper ? lumped::pheno_detail::damper_effective_field(values.data(), level) : level;
   };
+  const std::vector<FieldDependence> dependent = field_dependent_parameters(r.fit.params);
+  if (dependent.empty()) return "<p>(no field-dependent parameters)</p>\n";
   std::ostringstream o;
   o << "<table><tr><th>parameter</th>";
   for (double l : levels) o << "<th>u = " << html_number(l, 3) << "</th>";
   o << "</tr>\n";
-  bool any = false;
-  for (const FittedParameter& p : r.fit.params) {
-    const auto first = value.find(p.name + "_per_field");
-    if (first == value.end()) continue;
-    const auto second = value.find(p.name + "_per_field2");
-    any = true;
-    o << "<tr><td>" << html_escape(p.name) << " [" << html_escape(p.unit) << "]</td>";
+  for (const FieldDependence& d : dependent) {
+    const FittedParameter& p = r.fit.params[d.base];
+    o << "<tr><td>" << html_escape(d.name) << " [" << html_escape(p.unit) << "]</td>";
     for (double l : levels) {
       const double u = field(l);
       o << "<td>"
-        << html_number(p.value + first->second * u +
-                       (second == value.end() ? 0.0 : second->second * u * u))
+        << html_number(values[d.base] + values[d.linear] * u +
+                       (d.quadratic ? values[*d.quadratic] * u * u : 0.0))
         << "</td>";
     }
     o << "</tr>\n";
   }
   o << "</table>\n";
-  return any ? o.str() : "<p>(no field-dependent parameters)</p>\n";
+  return o.str();
 }
 
 }  // namespace
+
+std::vector<FieldDependence> field_dependent_parameters(
+    const std::vector<FittedParameter>& params) {
+  const auto find = [&](const std::string& name) -> std::optional<std::size_t> {
+    for (std::size_t k = 0; k < params.size(); ++k)
+      if (params[k].name == name) return k;
+    return std::nullopt;
+  };
+  std::vector<FieldDependence> out;
+  for (std::size_t k = 0; k < params.size(); ++k) {
+    const std::string& name = params[k].name;
+    if (const auto linear = find(name + "_per_field")) {
+      out.push_back({name, k, *linear, find(name + "_per_field2")});
+    } else if (name.size() > 2 && name.compare(name.size() - 2, 2, "_a") == 0) {
+      const std::string stem = name.substr(0, name.size() - 2);
+      if (const auto b = find(stem + "_b")) out.push_back({stem, k, *b, std::nullopt});
+    }
+  }
+  return out;
+}
 
 std::string family_report_html(const FamilyFit& r, const std::vector<lumped::Recording>& training,
                                const std::vector<lumped::Recording>& prediction) {
@@ -186,11 +200,7 @@ std::string family_report_html(const FamilyFit& r, const std::vector<lumped::Rec
   for (const FittedParameter& p : r.fit.params)
     o << "<tr><td>" << html_escape(p.name) << "</td><td>" << html_number(p.value, 5) << "</td><td>"
       << se_cell(p.standard_error) << "</td><td>" << se_cell(p.standard_error_between_recordings)
-      << "</td><td>" << html_escape(p.unit) << "</td><td>"
-      << (p.fixed             ? "held"
-          : p.at_bound        ? "at bound"
-          : !p.standard_error ? "not identified"
-                              : "")
+      << "</td><td>" << html_escape(p.unit) << "</td><td>" << html_escape(parameter_remark(p))
       << "</td></tr>\n";
   o << "</table>\n<h2>Field dependence</h2>\n" << field_dependence(r) << "<h2>Loops</h2>\n";
   for (std::size_t i = 0; i < training.size(); ++i)

@@ -3,7 +3,9 @@
 // every recording (inline SVG, no external resources), the parameter table with standard errors,
 // the field-dependent parameters at each field level, and the metrics per recording.
 
+#include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,6 +13,18 @@
 #include "lumped/recording.hpp"
 
 namespace rheomag::identify {
+
+/// A parameter whose value depends on the field u: base + linear u (+ quadratic u^2), indices
+/// into the fit's parameters.
+struct FieldDependence {
+  std::string name;  ///< "yield" (base + yield_per_field ...), "alpha" (alpha_a + alpha_b u)
+  std::size_t base = 0, linear = 0;
+  std::optional<std::size_t> quadratic;  ///< NAME_per_field2
+};
+
+/// The field-dependent parameters of a grey-box model: X with X_per_field (and X_per_field2),
+/// and the Bouc-Wen pairs X_a + X_b u (alpha, c0, c1).
+std::vector<FieldDependence> field_dependent_parameters(const std::vector<FittedParameter>& params);
 
 /// The report of `fit` (fitted on `training`, predicting `prediction`, in the order of
 /// fit.training / fit.predicted) as one self-contained HTML page.

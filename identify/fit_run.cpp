@@ -105,6 +105,7 @@ FitReport grey_box_report(
   report.standard_errors = nlohmann::json::object();
   for (const auto& p : fit.params) {
     if (p.fixed && fit.model == "valve-chain") continue;  // no compliance: the drive is Q itself
+    report.parameters.push_back(p);
     report.params[p.name] = p.value;
     report.standard_errors[p.name] = p.standard_error && std::isfinite(*p.standard_error)
                                          ? nlohmann::json(*p.standard_error)
@@ -333,6 +334,19 @@ void write_fit_run_text(const FitRun& run, std::ostream& out) {
     repeatability(run.validation_repeatability);
   }
   out << format_text("parameters:\n");
+  if (!r.parameters.empty()) {  // grey-box: SI units, standard errors and the remark rule
+    for (const FittedParameter& p : r.parameters) {
+      out << format_text("  %-28s %12.6g", p.name.c_str(), p.value);
+      if (p.standard_error && std::isfinite(*p.standard_error))
+        out << format_text(" +- %-10.3g", *p.standard_error);
+      else
+        out << format_text("    %-10s", "");
+      const std::string remark = parameter_remark(p);
+      out << format_text(" %s%s\n", p.unit.c_str(),
+                         remark.empty() ? "" : ("  (" + remark + ")").c_str());
+    }
+    return;
+  }
   for (const auto& [name, value] : r.params.items()) {
     out << format_text("  %-28s %.6g", name.c_str(), value.get<double>());
     if (r.standard_errors.is_object() && r.standard_errors.contains(name) &&

@@ -12,6 +12,7 @@
 
 #include "core/progress.hpp"
 #include "identify/black_box_model.hpp"
+#include "identify/greybox.hpp"
 #include "identify/stability.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording.hpp"
@@ -43,6 +44,8 @@ struct FitReport {
   nlohmann::json fitted;  ///< the fitted-model document (identify/fit_model_json.hpp)
   nlohmann::json params = nlohmann::json::object();
   nlohmann::json standard_errors;  ///< grey-box only
+  /// grey-box only: the parameters with units and standard errors (parameter_remark reads them)
+  std::vector<FittedParameter> parameters;
   lumped::Metrics train;
   std::optional<lumped::Metrics> validation;
   std::vector<double> train_output, validation_output;

@@ -12,6 +12,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <random>
 #include <stdexcept>
@@ -332,6 +333,22 @@ void centre_unidentified_offset(const FitData& data, GreyboxFit& fit, double max
 }
 
 }  // namespace
+
+std::string parameter_remark(const FittedParameter& p) {
+  if (p.fixed) return "held";
+  if (p.at_bound) return "at bound";
+  if (!p.standard_error || !std::isfinite(*p.standard_error)) return "not identified";
+  if (*p.standard_error > kPoorlyIdentifiedRelativeError * std::abs(p.value)) {
+    char text[80];
+    if (p.value == 0.0)
+      std::snprintf(text, sizeof text, "poorly identified (s.e. %.2g, value 0)", *p.standard_error);
+    else
+      std::snprintf(text, sizeof text, "poorly identified (s.e. %.2g x |value|)",
+                    *p.standard_error / std::abs(p.value));
+    return text;
+  }
+  return "";
+}
 
 const std::vector<std::string>& greybox_model_names() {
   static const std::vector<std::string> names = {"bingham", "lugre",      "bouc-wen", "maxwell",

@@ -47,6 +47,15 @@ struct FittedParameter {
   bool at_bound = false;  ///< ended on a bound
 };
 
+/// A standard error above this multiple of |value| calls a parameter poorly identified: the data
+/// do not tell its value from zero or from ten times it.
+inline constexpr double kPoorlyIdentifiedRelativeError = 1.0;
+
+/// How to read a fitted parameter, one rule for `fit` and `fit-family` (text and report):
+/// "held" (fixed), "at bound", "not identified" (no standard error), "poorly identified (s.e.
+/// 1.4e+04 x |value|)" (relative error above kPoorlyIdentifiedRelativeError) or "".
+std::string parameter_remark(const FittedParameter& p);
+
 /// Result of fit_greybox.
 struct GreyboxFit {
   std::string model;

@@ -2,6 +2,7 @@
 // One evaluated design judged against an [optimise] spec: objective, constraint status and
 // activity, variables at their bounds.
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,23 @@ inline constexpr double kFeasibilityTolerance = 1e-3;
 /// Reports one design's constraints against the spec.
 DesignReport report_design(const OptimiseSpec& spec, const std::vector<double>& x,
                            const design::Quantities& quantities);
+
+/// One constraint a design breaks: its value and the bound it passes.
+struct Violation {
+  Constraint constraint;
+  double value = 0.0;  ///< the quantity at the design (SI)
+  double limit = 0.0;  ///< the bound it passes (SI)
+  bool upper = true;   ///< above a maximum (else below a minimum)
+};
+
+/// The constraints `design` breaks beyond the feasibility tolerance, in the spec's order.
+std::vector<Violation> violations(const DesignReport& design);
+
+/// "time_constant = 0.0712 s > max 0.03 s (2.37 x the limit)".
+std::string violation_text(const Violation& v);
+
+/// The violations as JSON: [{quantity, value, limit, bound ("max" or "min"), unit, text}].
+nlohmann::json violations_json(const DesignReport& design);
 
 /// True if `a` is a better design than `b`: feasible before infeasible, then by the objective
 /// in the spec's sense.

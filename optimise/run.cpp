@@ -227,6 +227,29 @@ OptimiseResult run_optimisation(const cases::Case& c, const OptimiseOptions& opt
   return result;
 }
 
+std::string objective_change_text(const OptimiseResult& r) {
+  std::string unit;
+  if (r.spec.terms.size() == 1 && r.spec.objective != "weighted_sum")
+    unit = " " + std::string(design::quantity_unit(r.spec.terms.front().quantity));
+  const std::string start = number_text(r.initial.objective) + unit,
+                    end = number_text(r.optimal.objective) + unit;
+  std::string text = std::string(r.optimal.feasible ? "feasible" : "INFEASIBLE") +
+                     " optimum; objective " + (r.spec.maximise ? "max " : "min ") +
+                     r.spec.objective + ": ";
+  if (r.initial.feasible) return text + start + " -> " + end;
+  text += start + " at the infeasible start -> " + end;
+  if (!r.optimal.feasible) return text + " (no design meets every constraint)";
+  std::string names;
+  for (const Violation& v : violations(r.initial))
+    names += (names.empty() ? "" : ", ") + bound_text(v.constraint);
+  const bool worse = r.spec.maximise ? r.optimal.objective < r.initial.objective
+                                     : r.optimal.objective > r.initial.objective;
+  return text + " at the feasible optimum" +
+         (worse ? " (not a loss: the start's value needs " + names +
+                      " broken; no feasible design reaches it)"
+                : " (the start broke " + names + ")");
+}
+
 std::string format_summary(const OptimiseResult& r) {
   std::ostringstream out;
   out << "Ipopt: " << r.status << " after " << r.iterations << " iterations, " << r.fe_solves
@@ -260,15 +283,16 @@ std::string format_summary(const OptimiseResult& r) {
     std::snprintf(line, sizeof line, "%-28s %14.6g %14.6g\n", label.c_str(), a, b);
     out << line;
   }
+  const std::vector<Violation> broken = violations(r.initial);
+  out << "\nstarting design (the case as written): "
+      << (broken.empty() ? "feasible\n" : "INFEASIBLE, it breaks\n");
+  for (const Violation& v : broken) out << "  " << violation_text(v) << "\n";
   if (!r.spec.constraints.empty()) out << "\nconstraints (optimal design):\n";
   for (const auto& s : r.optimal.constraints)
     out << "  " << bound_text(s.constraint) << ": " << number_text(s.value)
         << (s.satisfied ? (s.active ? "  active" : "  inactive") : "  VIOLATED") << "\n";
   for (const auto& key : r.optimal.variables_at_bounds) out << "  bound active: " << key << "\n";
-  out << "\n"
-      << (r.optimal.feasible ? "feasible" : "INFEASIBLE") << " optimum; objective "
-      << (r.spec.maximise ? "max " : "min ") << r.spec.objective << ": "
-      << number_text(r.initial.objective) << " -> " << number_text(r.optimal.objective) << "\n";
+  out << "\n" << objective_change_text(r) << "\n";
   if (!r.conflicts.empty()) {
     out << "No feasible design found within the bounds; the conflicting constraints at the "
            "least-violating design:\n";

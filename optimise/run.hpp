@@ -61,8 +61,14 @@ struct OptimiseResult {
 /// design that cannot be evaluated).
 OptimiseResult run_optimisation(const cases::Case& c, const OptimiseOptions& options);
 
+/// "feasible optimum; objective max dp_on: A -> B" with the objective's unit; for a start that
+/// breaks a constraint it says so and, when the feasible optimum's objective is worse, that the
+/// start's value needs the broken constraints (not a loss of the optimiser).
+std::string objective_change_text(const OptimiseResult& result);
+
 /// The initial-vs-optimal table (quantities, constraint activity, status; the combinations and
-/// the Pareto front when present) as text.
+/// the Pareto front when present) as text; the starting design's feasibility with each broken
+/// constraint (value and limit).
 std::string format_summary(const OptimiseResult& result);
 
 }  // namespace rheomag::optimise

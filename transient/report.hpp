@@ -9,9 +9,11 @@
 namespace rheomag::transient {
 
 /// Keys: drive, value, from, resistance, scheme, time, current, flux_linkage, eddy_power, gaps
-/// [{name, B_avg, B_final, t63, t90}], final_current, final_flux_linkage, t63, t90 (null when not
-/// reached), eddy_loss, copper_loss, energy {...}, steps, rejected_steps, newton_iterations,
-/// factorizations, dofs, seconds (SI units).
+/// [{name, B_avg, B_final, t63, t90, reduced_model}], final_current, final_flux_linkage, t63, t90
+/// (null when not reached), reduced_model ({form, lags [{weight, time_constant}], delay,
+/// max_error, rule, two_lag_fit}: transient::fit_reduced_model of the flux linkage), eddy_loss,
+/// copper_loss, energy {...}, steps, rejected_steps, newton_iterations, factorizations, dofs,
+/// seconds (SI units).
 nlohmann::json transient_json(const TransientResult& result, const TransientOptions& options);
 
 /// Error of lambda measured against half steps (relative to its change) above which a run of

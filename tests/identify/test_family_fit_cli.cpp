@@ -253,3 +253,19 @@ TEST(FitFamilyCli, ReportRendersInHeadlessChromium) {
     fs::copy_file(png, keep, fs::copy_options::overwrite_existing);
   fs::remove_all(dir);
 }
+
+// Issue 34: fit-family fitted on every 4th sample without saying what that means; the text now
+// states the rule (identify::decimation_text) and gives every parameter's unit and remark.
+TEST(FitFamilyCli, TextStatesTheSampleRule) {
+  const fs::path dir = fresh_dir("rule");
+  const std::string a = write_recording_at(dir, "a.csv", 0.0);
+  const std::string b = write_recording_at(dir, "b.csv", 1.0);
+  const CliRun r = run_fit_family(a + " " + b + " --model bingham --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("samples: the fit uses every 4th sample of each training recording "
+                       "(--decimation 4, default 4"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("N/A"), std::string::npos) << r.out;  // yield_per_field [N/A]
+  fs::remove_all(dir);
+}

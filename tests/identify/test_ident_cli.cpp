@@ -172,3 +172,44 @@ TEST_F(FitCli, PlotWritesAPng) {
   f.read(magic, 8);
   EXPECT_EQ(std::string(magic + 1, 3), "PNG");
 }
+
+// Issue 34: the grey-box text gave no units and did not flag parameters the data cannot fix;
+// it now gives each parameter's SI unit and the remark fit-family gives (identify::
+// parameter_remark): this recording has no current, so the field terms are held. Reference: the
+// model's parameter table (lumped/phenomenological.cpp: yield [N], viscous [N/(m/s)], written
+// N/m/s).
+TEST_F(FitCli, GreyBoxTextGivesUnitsAndRemarks) {
+  const CliRun r = run_cli(csv + " --model bingham --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto line_of = [&](const std::string& name) {
+    const auto at = r.out.find("\n  " + name + " ");
+    if (at == std::string::npos) return std::string();
+    return r.out.substr(at + 1, r.out.find('\n', at + 1) - at - 1);
+  };
+  EXPECT_NE(line_of("yield").find(" N"), std::string::npos) << r.out;
+  EXPECT_NE(line_of("viscous").find(" N/m/s"), std::string::npos) << r.out;
+  EXPECT_NE(line_of("yield_per_field").find("(held)"), std::string::npos) << r.out;
+}
+
+// Issue 34: `fit --help` said "(see above)" for the model list and showed CLI11's internals for
+// --mode ("{prediction->1,simulation->0} OR {1,0}"); fit-family's --help showed no defaults.
+TEST(FitHelp, NamesTheModesAndTheDefaults) {
+  const CliRun fit = rheomag::cli_test::run_rheomag("fit --help");
+  ASSERT_EQ(fit.code, 0) << fit.err;
+  EXPECT_EQ(fit.out.find("->"), std::string::npos) << fit.out;
+  EXPECT_EQ(fit.out.find("see above"), std::string::npos) << fit.out;
+  EXPECT_NE(fit.out.find("simulation|prediction"), std::string::npos) << fit.out;
+  const CliRun family = rheomag::cli_test::run_rheomag("fit-family --help");
+  ASSERT_EQ(family.code, 0) << family.err;
+  // CLI11 prints a captured default after the type: "--decimation INT:... [1, 100]=4".
+  for (const std::string option : {"--decimation", "--starts", "--max-substep"}) {
+    const auto at = family.out.find("  " + option + " ");
+    ASSERT_NE(at, std::string::npos) << family.out;
+    const std::string line = family.out.substr(at, family.out.find('\n', at) - at);
+    EXPECT_NE(line.find(option == "--decimation" ? "=4"
+                        : option == "--starts"   ? "=2"
+                                                 : "=0.002"),
+              std::string::npos)
+        << line;
+  }
+}
