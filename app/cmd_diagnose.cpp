@@ -80,48 +80,6 @@ std::string shipped_sidecar(const std::string& recording) {
       o.recording + " --model M --json > MODEL.json')");
 }
 
-void print_summary(const diagnose::Diagnosis& d) {
-  std::cout << "baseline FIT " << d.baseline_fit_percent << " %\n";
-  for (const auto& item : d.includes)
-    std::cout << "  baseline has " << item.name << ": " << item.source << "\n";
-  const auto& u = d.nuisance;
-  std::cout << "  nuisance: delay " << 1e3 * u.delay << " ms (" << u.delay_samples << " samples)"
-            << ", drives " << diagnose::kDriveSamplingNames.name(u.drive_sampling)
-            << " between samples";
-  if (std::isfinite(u.sampling_fit_gain))
-    std::cout << " (" << u.sampling_fit_gain << " FIT points better than the other convention)";
-  if (u.preyield_flow > 0.0)
-    std::cout << ", pre-yield smoothing " << 100 * u.preyield_fraction << " % of peak flow";
-  std::cout << "\n";
-  for (const auto& w : d.mismatch)
-    std::cout << "  mismatch " << w.t_start << "-" << w.t_end << " s: " << 100 * w.share
-              << " % of residual (" << w.regime << ")\n";
-  if (d.findings.empty()) std::cout << "missing physics: none\n";
-  for (const auto& f : d.findings) {
-    std::cout << "missing physics: " << f.effect->name();
-    for (std::size_t j = 0; j < f.params.size(); ++j) {
-      std::cout << "  " << f.param_names[j] << " = " << f.params[j];
-      // A standard error is infinite (or unknown) where the parameter is not identified.
-      if (std::isfinite(f.standard_errors[j]))
-        std::cout << " +- " << f.standard_errors[j];
-      else
-        std::cout << " (standard error unbounded)";
-    }
-    std::cout << "  (FIT " << f.fit_percent << " %)\n    " << f.evidence << "\n";
-    if (!f.ambiguous_with.empty()) {
-      std::cout << "    equally well explained by:";
-      for (auto a : f.ambiguous_with) std::cout << ' ' << a->name();
-      std::cout << "\n    to separate them: " << f.separating_measurement << "\n";
-    }
-  }
-  std::cout << "final FIT " << d.final_fit_percent << " %\n";
-  std::cout << "unexplained: " << 100 * d.unexplained.share
-            << " % of the final residual energy lies above the noise floor (noise rms "
-            << d.unexplained.noise_sigma << ", residual rms " << d.unexplained.residual_rms
-            << ")\n";
-  for (const auto& note : d.notes) std::cout << "note: " << note << "\n";
-}
-
 /// Reads the recording, diagnoses it and prints or writes the result.
 void run(const DiagnoseCliOptions& o) {
   auto rec = read_input(o);
