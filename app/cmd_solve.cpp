@@ -12,6 +12,7 @@
 #include "case/case_file.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/memory_limit.hpp"
 #include "figures/solve_pictures.hpp"
 #include "magnetostatics/femm_ans.hpp"
 #include "magnetostatics/report.hpp"
@@ -32,12 +33,20 @@ void check_current(double current, const char* option) {
 
 /// `solve --current I1,I2,..`: the case solved at each current in turn (one mesh, each solve
 /// warm-started), one summary (text) or one document (JSON, under "solutions") per current.
+/// The solve's settings from the options: the memory bound of the 2D mesh (--max-memory).
+rheomag::magnetostatics::SolveOptions solve_options(const SolveCommandOptions& o) {
+  rheomag::magnetostatics::SolveOptions options;
+  if (!o.max_memory.empty())
+    options.mesh.max_memory = rheomag::parse_memory_size(o.max_memory, "--max-memory");
+  return options;
+}
+
 void run_currents(const SolveCommandOptions& o, const Case& c) {
   if (!o.vtk.empty() || !o.ans.empty() || !o.plot.empty() || !o.sweep.empty())
     throw rheomag::InputError(
         "--current with several values solves each in turn; --vtk, --ans, --plot and --sweep "
         "take one --current (for a table of lambda, L and the gap B against current use --sweep)");
-  SolveResult solved = solve_problem(c.problem);
+  SolveResult solved = solve_problem(c.problem, solve_options(o));
   nlohmann::json documents = nlohmann::json::array();
   for (std::size_t k = 0; k < o.currents.size(); ++k) {
     const std::vector<double> currents(c.problem.circuits.size(), o.currents[k]);
@@ -91,10 +100,7 @@ void run(const SolveCommandOptions& o) {
   if (!o.sweep.empty() && problem.circuits.empty())
     throw rheomag::InputError(o.case_path + ": --sweep given but the case has no circuit");
 
-  rheomag::magnetostatics::SolveOptions options;
-  if (!o.max_memory.empty())
-    options.mesh.max_memory = rheomag::parse_memory_size(o.max_memory, "--max-memory");
-  SolveResult solved = solve_problem(problem, options);
+  SolveResult solved = solve_problem(problem, solve_options(o));
   SolveOutput out;
   out.case_name = c.name, out.case_path = o.case_path, out.description = c.description;
   out.mesh_seconds = solved.mesh_seconds;
