@@ -72,23 +72,11 @@ inline CLI::Option* add_quantities(CLI::App* cmd, const std::string& name,
       ->type_name("VALUES");
 }
 
-/// Adds an option of one quantity of `kind` with an optional unit ("--duration 50ms"), in SI.
-inline CLI::Option* add_quantity(CLI::App* cmd, const std::string& name, double& value,
+/// Adds an option of one quantity of `kind` with an optional unit ("--duration 50ms"), in SI;
+/// `value` is a double or a std::optional<double> (absent: the case's or the command's default).
+template <class Target>
+inline CLI::Option* add_quantity(CLI::App* cmd, const std::string& name, Target& value,
                                  QuantityKind kind, const std::string& help) {
-  return cmd
-      ->add_option_function<std::string>(
-          name,
-          [&value, kind, name](const std::string& text) {
-            value = parse_quantity(text, kind, name);
-          },
-          help + unit_help(kind))
-      ->type_name("VALUE");
-}
-
-/// The same for an optional quantity (absent: the case's or the command's default).
-inline CLI::Option* add_quantity(CLI::App* cmd, const std::string& name,
-                                 std::optional<double>& value, QuantityKind kind,
-                                 const std::string& help) {
   return cmd
       ->add_option_function<std::string>(
           name,
