@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/command.hpp"
+#include "app/progress_lines.hpp"
 #include "case/case_file.hpp"
 #include "magnetostatics/solve_problem.hpp"
 #include "mesh/quality.hpp"
@@ -27,7 +28,10 @@ struct MeshCommandOptions {
 void run(const MeshCommandOptions& o) {
   cases::Case c = app::load_case(o.case_path, o.settings);
   if (o.order) c.problem.order = *o.order;
-  const auto [closed, m] = magnetostatics::close_and_mesh(c.problem);
+  // A mesh of hundreds of thousands of triangles takes a while: its progress after 2 s.
+  magnetostatics::SolveOptions options;
+  options.mesh.progress = app::progress_lines("mesh", std::cerr, 2.0, 2.0);
+  const auto [closed, m] = magnetostatics::close_and_mesh(c.problem, options);
   const mesh::MeshQuality quality = mesh::measure_quality(m, closed.geometry);
   if (!o.vtk.empty()) {
     std::vector<std::string> names;

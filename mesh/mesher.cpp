@@ -6,6 +6,7 @@
 #include <CGAL/Delaunay_mesher_2.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -125,11 +126,10 @@ std::vector<double> region_sizes(const Pslg& pslg, const MeshOptions& options,
 }
 
 /// Refuses meshes whose estimated element count exceeds options.max_elements, or whose solve
-/// would need more than options.max_memory.
-void check_mesh_size(const Pslg& pslg, const MeshOptions& options,
-                     const std::vector<detail::RegionGeometry>& geometry,
-                     const std::vector<double>& size) {
-  if (options.max_elements <= 0) return;
+/// would need more than options.max_memory; returns the estimate (triangles).
+double check_mesh_size(const Pslg& pslg, const MeshOptions& options,
+                       const std::vector<detail::RegionGeometry>& geometry,
+                       const std::vector<double>& size) {
   // Equilateral triangles of edge h have area sqrt(3)/4 h^2; refined meshes are about twice as
   // dense, hence the factor 2.
   double estimate = 0.0;
@@ -139,6 +139,7 @@ void check_mesh_size(const Pslg& pslg, const MeshOptions& options,
       estimate += 2.0 * geometry[r].area / (std::sqrt(3.0) / 4.0 * size[r] * size[r]);
       if (smallest == size.size() || size[r] < size[smallest]) smallest = r;
     }
+  if (options.max_elements <= 0) return estimate;
   const double max_memory = options.max_memory > 0.0 ? options.max_memory : default_memory_limit();
   const double bytes = estimate * solve_bytes_per_triangle(options.order);
   if (estimate > static_cast<double>(options.max_elements) || bytes > max_memory) {
@@ -160,6 +161,7 @@ void check_mesh_size(const Pslg& pslg, const MeshOptions& options,
                         "ulimit -v, cgroup)") +
         "; expected larger mesh sizes (the smallest is " + smallest_size.str() + ")");
   }
+  return estimate;
 }
 
 double automatic_size(const Cdt& cdt) {
@@ -242,6 +244,16 @@ Mesh extract_mesh(const Cdt& fine, const Cdt& coarse, const SizeField& field) {
 }  // namespace
 
 Mesh generate_mesh(const Pslg& pslg, const MeshOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  // Progress: triangles made (twice the vertices) of the estimate, timed from the start.
+  double estimate = 0.0;
+  const auto report = [&](const char* stage, double done) {
+    if (!options.progress) return;
+    const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+    // The estimate counts the requested sizes, not the refinement that small features force:
+    // past it, the total is unknown (no count, no time left) rather than "800000 of 1632".
+    options.progress({stage, done, done <= estimate ? estimate : 0.0, elapsed.count(), "", false});
+  };
   check_options(pslg, options);
   const PreparedPslg prepared = prepare_pslg(pslg);
 
@@ -254,15 +266,19 @@ Mesh generate_mesh(const Pslg& pslg, const MeshOptions& options) {
   const double default_size =
       options.default_size > 0.0 ? options.default_size : automatic_size(coarse);
   std::vector<double> size = region_sizes(pslg, options, geometry, default_size);
-  check_mesh_size(pslg, options, geometry, size);
+  estimate = check_mesh_size(pslg, options, geometry, size);
+  report("geometry checked", 0.0);
   auto field = std::make_shared<const SizeField>(coarse, size, options.grading);
 
   Cdt fine = coarse;
   // Start from a lattice at the target sizes: the refinement then only repairs the boundary
   // layers and graded zones instead of growing every region from its corners.
   Cdt::Face_handle hint;
-  for (const CgalPoint& p : detail::lattice_points(coarse, size, *field))
+  for (const CgalPoint& p : detail::lattice_points(coarse, size, *field)) {
     hint = fine.insert(p, hint)->face();
+    if (fine.number_of_vertices() % 20000 == 0)
+      report("inserting the lattice", 2.0 * static_cast<double>(fine.number_of_vertices()));
+  }
   bool anything_to_mesh = false;
   for (auto f = fine.all_faces_begin(); f != fine.all_faces_end(); ++f) {
     bool meshed = false;
@@ -282,7 +298,16 @@ Mesh generate_mesh(const Pslg& pslg, const MeshOptions& options) {
   CGAL::Delaunay_mesher_2<Cdt, SizeFieldCriteria> mesher(fine,
                                                          SizeFieldCriteria(shape_bound, field));
   mesher.init(/*domain_specified=*/true);
-  mesher.refine_mesh();
+  if (options.progress) {
+    // One step at a time (the order refine_mesh takes), reporting every 20 000 points.
+    const auto made = [&fine] { return 2.0 * static_cast<double>(fine.number_of_vertices()); };
+    report("refining", made());
+    for (long step = 1; mesher.try_one_step_refine_mesh(); ++step)
+      if (step % 20000 == 0) report("refining", made());
+    report("refined", made());
+  } else {
+    mesher.refine_mesh();
+  }
 
   Mesh mesh = extract_mesh(fine, coarse, *field);
   return options.order == 2 ? elevate_to_p2(mesh) : mesh;

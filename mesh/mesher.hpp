@@ -1,6 +1,7 @@
 #pragma once
 // Quality triangulation of a PSLG: CGAL constrained Delaunay refinement with per-region sizes.
 
+#include "core/progress.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/pslg.hpp"
 
@@ -21,6 +22,10 @@ struct MeshOptions {
   long max_elements = 5'000'000;           ///< refuse (InputError) meshes estimated larger
   double max_memory = 0.0;                 ///< refuse meshes whose solve is estimated to need
                                            ///< more [bytes]; 0 = default_memory_limit()
+  /// Hears the meshing's progress: the checked geometry, then triangles made (twice the
+  /// vertices) of the estimate every 20 000 points inserted, and the end (the same mesh as
+  /// without it). Empty: no reports.
+  ProgressCallback progress;
 };
 
 /// Memory a 2D solve needs per triangle of `order` [bytes], for the estimate before meshing:
