@@ -42,8 +42,18 @@ std::vector<BhPoint> checked_bh_table(const std::vector<std::pair<double, double
   return table;
 }
 
+ThermalProperties read_thermal_properties(const TomlSection& section) {
+  ThermalProperties t;
+  t.conductivity = section.quantity("conductivity", Domain::positive("W/(m K)"));
+  t.density = section.quantity("density", Domain::positive("kg/m^3"));
+  t.specific_heat = section.quantity("specific_heat", Domain::positive("J/(kg K)"));
+  t.source = section.string("source").value_or("");
+  return t;
+}
+
 LibraryMaterial read_material(const TomlSection& section) {
-  section.allow_only({"name", "source", "uncertainty", "mu_r", "bh", "conductivity", "rheology"});
+  section.allow_only(
+      {"name", "source", "uncertainty", "mu_r", "bh", "conductivity", "rheology", "thermal"});
   LibraryMaterial result;
   Material& m = result.magnetic;
   m.name = section.required_string("name");
@@ -57,6 +67,10 @@ LibraryMaterial read_material(const TomlSection& section) {
     m.mu_r = section.positive_or("mu_r", 1.0);
   }
   if (auto rheology = section.table("rheology")) result.rheology = rheology->raw();
+  if (auto thermal = section.table("thermal")) {
+    thermal->allow_only(kThermalKeys);
+    m.thermal = read_thermal_properties(*thermal);
+  }
   m.fluid = result.rheology.has_value();
   return result;
 }
@@ -73,11 +87,15 @@ MaterialLibrary MaterialLibrary::load(const std::filesystem::path& directory) {
   for (const auto& path : files) {
     const toml::table root = parse_toml_file(path.string());
     const TomlSection top(root, "", path.string());
-    top.allow_only({"material", "rheology"});
+    top.allow_only({"material", "rheology", "thermal"});
     const std::optional<TomlSection> material = top.table("material");
     if (!material) top.fail("material", "missing [material] table");
     LibraryMaterial entry = read_material(*material);
     if (auto rheology = top.table("rheology")) entry.rheology = rheology->raw();
+    if (auto thermal = top.table("thermal")) {
+      thermal->allow_only(kThermalKeys);
+      entry.magnetic.thermal = read_thermal_properties(*thermal);
+    }
     entry.magnetic.fluid = entry.rheology.has_value();
     entry.file = path.string();
     if (library.find(entry.magnetic.name))

@@ -30,7 +30,17 @@ std::string normalised_material_name(std::string_view name);
 std::vector<BhPoint> checked_bh_table(const std::vector<std::pair<double, double>>& pairs,
                                       const std::string& where);
 
-/// Reads a material table (keys name, source, uncertainty, mu_r, bh, conductivity, rheology).
+/// The keys of a material's [thermal] table.
+inline const std::vector<std::string_view> kThermalKeys{"conductivity", "density", "specific_heat",
+                                                        "source", "uncertainty"};
+
+/// Reads the keys of a [thermal] table (the caller checks for unknown keys): conductivity
+/// [W/(m K)], density [kg/m^3], specific_heat [J/(kg K)] (each > 0) and source; InputError
+/// naming file, line and key otherwise.
+ThermalProperties read_thermal_properties(const TomlSection& section);
+
+/// Reads a material table (keys name, source, uncertainty, mu_r, bh, conductivity, rheology,
+/// thermal).
 LibraryMaterial read_material(const TomlSection& section);
 
 /// All materials of one directory of TOML files, looked up by name.

@@ -18,6 +18,16 @@ struct BhPoint {
   double h = 0.0;
 };
 
+/// Heat conduction and storage of a material (the [thermal] table of a material file).
+struct ThermalProperties {
+  double conductivity = 0.0;   ///< thermal conductivity k [W/(m K)]
+  double density = 0.0;        ///< [kg/m^3]
+  double specific_heat = 0.0;  ///< c_p [J/(kg K)]
+  std::string source;          ///< where the data come from
+  /// Volumetric heat capacity rho c_p [J/(m^3 K)].
+  double heat_capacity() const { return density * specific_heat; }
+};
+
 /// A magnetic material: linear (relative permeability) or nonlinear (B-H table).
 struct Material {
   std::string name;
@@ -27,6 +37,8 @@ struct Material {
   std::string source;                  ///< where the data come from
   double coercivity = 0.0;             ///< permanent magnet: H_c [A/m], B = mu0 mu_r (H + H_c m)
   bool fluid = false;  ///< an MR fluid of the materials library: a medium a body moves through
+  /// Thermal data; empty: the material is outside the thermal model (surroundings, e.g. air).
+  std::optional<ThermalProperties> thermal;
 };
 
 /// A series circuit driving one or more coil regions.

@@ -111,6 +111,28 @@ YieldStressCurve parse_yield_stress(const toml::table& rheology, const std::stri
                    *model + "\"; expected \"table\", \"polynomial\", \"carlson\" or \"none\"");
 }
 
+/// A finite number of [rheology] (`fallback` when absent) in `domain`; InputError naming the key.
+double number_in(const toml::table& table, const std::string& key, const std::string& origin,
+                 const Domain& domain, double fallback) {
+  const toml::node* node = table.get(key);
+  if (!node) return fallback;
+  const std::optional<double> value = node->value<double>();
+  if (!value) throw InputError(where(origin, key, node) + ": expected " + domain.describe());
+  const std::string problem = domain.violation(*value);
+  if (!problem.empty()) throw InputError(where(origin, key, node) + ": " + problem);
+  return *value;
+}
+
+FluidTemperatureLaw parse_temperature_law(const toml::table& rheology, const std::string& origin) {
+  FluidTemperatureLaw law;
+  law.reference = number_in(rheology, "temperature", origin, kFluidTemperature, law.reference);
+  law.activation_temperature = number_in(rheology, "viscosity_activation_temperature", origin,
+                                         Domain::non_negative("K"), 0.0);
+  law.yield_stress_coefficient = number_in(rheology, "yield_stress_temperature_coefficient", origin,
+                                           Domain::between(-0.02, 0.02, "1/K"), 0.0);
+  return law;
+}
+
 }  // namespace
 
 Fluid parse_fluid(std::string_view toml_text, const std::string& origin) {
@@ -136,6 +158,7 @@ Fluid parse_fluid(std::string_view toml_text, const std::string& origin) {
   fluid.source = (*rheology)["source"].value_or(
       document["material"]["source"].value_or(document["source"].value_or(std::string{})));
   fluid.yield_stress = parse_yield_stress(*rheology, origin);
+  fluid.temperature = parse_temperature_law(*rheology, origin);
   return fluid;
 }
 

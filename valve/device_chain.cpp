@@ -13,6 +13,7 @@ DeviceChain::DeviceChain(const cases::Case& c, std::string device)
 DeviceChain::DeviceChain(const cases::Case& c, std::string device, ValveOptions options)
     : device_(std::move(device)), valve_options_(std::move(options)) {
   fluid_ = case_fluid(c);
+  reference_fluid_ = fluid_;
   if (c.problem.circuits.empty())
     throw InputError(c.source.string() + ": the case has no coil circuit");
   solver_ = make_device_solver(c);
@@ -26,6 +27,16 @@ CoilProperties DeviceChain::coil(double current, double inductance) const {
         ": the coil resistance needs the wire: set [valve] wire = \"AWG 24\" (or \"0.5 mm\") "
         "in the case (or pass --wire where the command offers it)");
   return coil_properties(coil_, current, inductance);
+}
+
+void DeviceChain::set_fluid_temperature(double celsius) {
+  fluid_ = fluid::fluid_at_temperature(reference_fluid_, celsius);
+}
+
+void DeviceChain::set_coil_temperature(double celsius) {
+  const std::string problem = kCoilTemperature.violation(celsius);
+  if (!problem.empty()) throw InputError(device_ + ": coil temperature: " + problem);
+  coil_.temperature = celsius;
 }
 
 std::vector<double> currents_or_case(const cases::Case& c, const std::vector<double>& currents) {

@@ -31,9 +31,18 @@ class DeviceChain {
   DeviceChain(const cases::Case& c, std::string device);
   /// The same with the [valve] options given (e.g. overridden on the command line).
   DeviceChain(const cases::Case& c, std::string device, ValveOptions options);
+  virtual ~DeviceChain() = default;  ///< a valve, damper or brake chain may be held as a chain
   /// Coil quantities at `current` with inductance `inductance` (needs [valve] wire).
   CoilProperties coil(double current, double inductance) const;
   const fluid::Fluid& fluid() const { return fluid_; }
+  /// Evaluates the next points with the fluid at `celsius` [deg C] (its temperature law,
+  /// fluid/fluid_temperature.hpp); InputError outside the law's range.
+  void set_fluid_temperature(double celsius);
+  /// Evaluates the next points with the winding at `celsius` [deg C] (its resistance);
+  /// InputError outside kCoilTemperature.
+  void set_coil_temperature(double celsius);
+  /// The field solver (its problem and mesh are those of the device's thermal model).
+  const magnetostatics::MagnetostaticSolver& solver() const { return *solver_; }
   /// Reports the evaluation's progress (points done of currents x points) to `progress`.
   void set_progress(ProgressCallback progress) { progress_ = std::move(progress); }
 
@@ -66,8 +75,13 @@ class DeviceChain {
     for (double current : currents) {
       stage = format_text("%s at %.6g A", device_.c_str(), current);
       report();
-      const DeviceField field = solve_at_current(*solver_, current);
-      for (Point& p : visit(*solver_, field, point_done)) points.push_back(std::move(p));
+      // The field does not depend on the fluid's or the coil's temperature: the last one is
+      // reused for the same current (a thermal fixed point evaluates one current many times).
+      if (!last_field_ || last_current_ != current) {
+        last_field_ = std::make_unique<DeviceField>(solve_at_current(*solver_, current));
+        last_current_ = current;
+      }
+      for (Point& p : visit(*solver_, *last_field_, point_done)) points.push_back(std::move(p));
     }
     return points;
   }
@@ -75,9 +89,12 @@ class DeviceChain {
   std::string device_;
   std::unique_ptr<magnetostatics::MagnetostaticSolver> solver_;
   fluid::Fluid fluid_;
+  fluid::Fluid reference_fluid_;  ///< the case's fluid at its reference temperature
   ValveOptions valve_options_;
   CoilSpec coil_;
   ProgressCallback progress_;
+  std::unique_ptr<DeviceField> last_field_;  ///< the field of the last current solved
+  double last_current_ = 0.0;
 };
 
 }  // namespace rheomag::valve
