@@ -29,6 +29,9 @@ std::string_view quantity_unit(Quantity q) {
       return "m";
     case Quantity::temperature_rise:
       return "K";
+    case Quantity::coil_temperature:
+    case Quantity::fluid_temperature:
+      return "deg C";
     case Quantity::force_on:
     case Quantity::force_off:
       return "N";

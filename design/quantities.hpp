@@ -41,10 +41,12 @@ enum class Quantity {
   /// t90 of the slowest gap's mean |B| after a voltage step on and off, eddy currents included
   /// (transient magnetics): the slower of the two [s]
   response_time,
+  coil_temperature,   ///< steady mean winding temperature, FE heat conduction (thermal/) [deg C]
+  fluid_temperature,  ///< steady largest temperature in the fluid gaps, likewise [deg C]
 };
 
 /// Number of quantities.
-inline constexpr std::size_t kQuantityCount = 25;
+inline constexpr std::size_t kQuantityCount = 27;
 
 /// The quantities' names as written in case files and outputs.
 inline constexpr auto kQuantityNames = enum_names<Quantity>({
@@ -73,6 +75,8 @@ inline constexpr auto kQuantityNames = enum_names<Quantity>({
     {Quantity::mass, "mass"},
     {Quantity::torque_per_mass, "torque_per_mass"},
     {Quantity::response_time, "response_time"},
+    {Quantity::coil_temperature, "coil_temperature"},
+    {Quantity::fluid_temperature, "fluid_temperature"},
 });
 
 /// The quantities of a valve at the design flow ([optimise] flow).

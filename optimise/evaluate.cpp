@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "design/response_time.hpp"
 #include "mesh/triangle.hpp"
+#include "thermal/design_temperature.hpp"
 #include "valve/coil.hpp"
 #include "valve/solved_valve.hpp"
 
@@ -56,11 +57,16 @@ OptimiseEvaluator::OptimiseEvaluator(cases::Case base, OptimiseSpec spec)
   fluid_ = valve::case_fluid(base_);
   if (base_.problem.circuits.empty()) throw InputError(where + ": the case has no coil circuit");
   valve_ = valve::read_valve_options(base_);
-  static const std::vector<design::Quantity> needs_wire = {
-      design::Quantity::resistance,  design::Quantity::time_constant,
-      design::Quantity::power,       design::Quantity::current_density,
-      design::Quantity::copper_fill, design::Quantity::temperature_rise,
-      design::Quantity::rise_time,   design::Quantity::response_time};
+  static const std::vector<design::Quantity> needs_wire = {design::Quantity::resistance,
+                                                           design::Quantity::time_constant,
+                                                           design::Quantity::power,
+                                                           design::Quantity::current_density,
+                                                           design::Quantity::copper_fill,
+                                                           design::Quantity::temperature_rise,
+                                                           design::Quantity::rise_time,
+                                                           design::Quantity::response_time,
+                                                           design::Quantity::coil_temperature,
+                                                           design::Quantity::fluid_temperature};
   for (design::Quantity q : needs_wire)
     if (valve_.wire.empty() && uses(spec_, q))
       throw InputError(where + ": \"" + design::quantity_name(q) +
@@ -143,6 +149,7 @@ design::Quantities OptimiseEvaluator::evaluate(const std::vector<double>& x) {
   if (results.gaps.empty()) throw InputError(base_.source.string() + ": the case has no fluid gap");
 
   design::Quantities q;
+  double fluid_power = 0.0;  // dissipated in the gaps at the operating point [W]
   valve::ValveOptions valve = valve_varies_ ? valve::read_valve_options(c) : valve_;
   if (gauge_index_ >= 0) {  // the design's own wire (typed, as the case holds it)
     valve.wire = c.input.winding.wire;
@@ -153,6 +160,7 @@ design::Quantities OptimiseEvaluator::evaluate(const std::vector<double>& x) {
     q[design::Quantity::dp_on] = solved.point(spec_.flow).dp_total;
     q[design::Quantity::dp_off] = solved.zero_field_point(spec_.flow).dp_total;
     q[design::Quantity::dynamic_range] = q[design::Quantity::dp_on] / q[design::Quantity::dp_off];
+    fluid_power = q[design::Quantity::dp_on] * spec_.flow;
   }
   q[design::Quantity::b_gap] = solved.b_average();
   q[design::Quantity::min_gap] = solved.min_clearance();
@@ -165,10 +173,12 @@ design::Quantities OptimiseEvaluator::evaluate(const std::vector<double>& x) {
     q[design::Quantity::force_on] = on.force;
     q[design::Quantity::force_off] = off.force;
     q[design::Quantity::force_range] = (on.force - on.force_gas) / (off.force - off.force_gas);
+    fluid_power = (on.force - on.force_gas) * on.velocity;
   }
   if (brake_) {
     const valve::SolvedBrake brake(solver, field.solution, results, fluid_, *brake_);
     q[design::Quantity::torque_on] = brake.point(spec_.speed).torque.torque;
+    fluid_power = q[design::Quantity::torque_on] * spec_.speed;
     q[design::Quantity::torque_off] = brake.zero_field().point(spec_.speed).torque.torque;
   }
 
@@ -236,6 +246,19 @@ design::Quantities OptimiseEvaluator::evaluate(const std::vector<double>& x) {
     q[design::Quantity::temperature_rise] = spec_.thermal_resistance > 0.0
                                                 ? p.power * spec_.thermal_resistance
                                                 : p.power / (spec_.heat_transfer * surface);
+    if (uses(spec_, design::Quantity::coil_temperature) ||
+        uses(spec_, design::Quantity::fluid_temperature)) {
+      thermal::DesignHeat heat;
+      heat.coil_power = p.power;
+      heat.coil_temperature = coil.temperature;
+      heat.fluid_power = fluid_power;
+      heat.flow = spec_.flow;
+      heat.duty = spec_.duty;
+      heat.copper_fill = p.copper_fill;
+      const thermal::DeviceTemperatures t = thermal::design_temperatures(c, solver, heat);
+      q[design::Quantity::coil_temperature] = t.coil_mean;
+      q[design::Quantity::fluid_temperature] = t.fluid_max;
+    }
     if (uses(spec_, design::Quantity::rise_time)) {
       const double final_current = spec_.supply_voltage / p.resistance;
       std::vector<double> sample_currents, flux;

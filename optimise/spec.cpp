@@ -160,7 +160,7 @@ OptimiseSpec read_optimise_spec(const cases::Case& c) {
     throw InputError(file + ": the case has no [optimise] table (docs/optimisation.md)");
   section->allow_only({"objective", "sense", "current", "flow", "max_iterations", "tolerance",
                        "step", "variable", "constraint", "supply_voltage", "heat_transfer",
-                       "thermal_resistance", "pareto", "enumerate", "velocity", "speed",
+                       "thermal_resistance", "duty", "pareto", "enumerate", "velocity", "speed",
                        "density"});
   OptimiseSpec spec;
   read_objective(*section, spec);
@@ -185,6 +185,7 @@ OptimiseSpec read_optimise_spec(const cases::Case& c) {
   spec.supply_voltage = section->non_negative_or("supply_voltage", 0.0);
   spec.heat_transfer = section->positive_or("heat_transfer", 10.0);
   spec.thermal_resistance = section->non_negative_or("thermal_resistance", 0.0);
+  spec.duty = section->quantity_or("duty", Domain::between(0.0, 1.0), 1.0);
 
   const auto variables = section->table_array("variable");
   if (variables.empty())

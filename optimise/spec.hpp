@@ -75,6 +75,7 @@ struct OptimiseSpec {
   double supply_voltage = 0.0;      ///< driver voltage step for rise_time [V] (0: not given)
   double heat_transfer = 10.0;      ///< coil outer surface to ambient [W/(m^2 K)]
   double thermal_resistance = 0.0;  ///< coil to ambient [K/W]; > 0 overrides heat_transfer
+  double duty = 1.0;  ///< fraction of the time at the operating point (coil/fluid_temperature)
   std::optional<ParetoSpec> pareto;
   std::vector<DiscreteChoice> choices;  ///< [optimise] enumerate
 };

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/format_text.hpp"
+#include "thermal/device_regions.hpp"
 #include "thermal/heat_solver.hpp"
 #include "valve/brake.hpp"
 #include "valve/damper.hpp"
@@ -37,14 +38,9 @@ DeviceHeatModel::DeviceHeatModel(const cases::Case& c, const OperatingPoint& poi
       break;
   }
   const cases::Problem& problem = chain_->solver().problem();
-  for (std::size_t r = 0; r < problem.regions.size(); ++r) {
-    const cases::RegionData& data = problem.regions[r];
-    if (data.circuit >= 0 || data.turns != 0.0 || data.current_density != 0.0)
-      coil_regions_.push_back(static_cast<int>(r));
-    if (problem.geometry.regions[r].gap != mesh::GapKind::none)
-      gap_regions_.push_back(static_cast<int>(r));
-  }
-  region_area_ = region_volumes(problem, chain_->solver().mesh());
+  coil_regions_ = thermal::coil_regions(problem);
+  gap_regions_ = thermal::gap_regions(problem);
+  region_volume_ = region_volumes(problem, chain_->solver().mesh());
   copper_fill_ = chain_->coil(point.current, 0.0).copper_fill;
 }
 
@@ -55,19 +51,6 @@ int DeviceHeatModel::gap_region(const std::string& name) const {
   return -1;
 }
 
-void DeviceHeatModel::spread(double power, const std::vector<int>& regions,
-                             std::vector<double>& out) const {
-  double volume = 0.0;
-  for (int r : regions) volume += region_area_[r];
-  if (regions.empty() || !(volume > 0.0)) {
-    if (power != 0.0)
-      throw InputError("thermal: heat " + format_text("%.6g W", power) +
-                       " but no region to place it in");
-    return;
-  }
-  for (int r : regions) out[r] += power * region_area_[r] / volume;
-}
-
 DeviceHeat DeviceHeatModel::heat(double coil_celsius, double fluid_celsius) {
   chain_->set_coil_temperature(coil_celsius);
   chain_->set_fluid_temperature(fluid_celsius);
@@ -76,7 +59,7 @@ DeviceHeat DeviceHeatModel::heat(double coil_celsius, double fluid_celsius) {
   const valve::CoilProperties coil = chain_->coil(point_.current, 0.0);
   h.coil_resistance = coil.resistance;
   h.coil_power = point_.duty * coil.power;
-  spread(h.coil_power, coil_regions_, h.region_power);
+  spread_power(h.coil_power, coil_regions_, region_volume_, h.region_power);
   const std::vector<double> currents{point_.current}, values{point_.value};
   double unplaced = 0.0;  // dissipation not tied to one gap: spread over all gaps
   if (point_.motion == Motion::flow) {
@@ -113,7 +96,7 @@ DeviceHeat DeviceHeatModel::heat(double coil_celsius, double fluid_celsius) {
         unplaced += power;
     }
   }
-  spread(unplaced, gap_regions_, h.region_power);
+  spread_power(unplaced, gap_regions_, region_volume_, h.region_power);
   if (!std::isfinite(h.coil_power) || !std::isfinite(h.fluid_power))
     throw ConvergenceError("thermal: the device's heat is not finite");
   return h;

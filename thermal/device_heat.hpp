@@ -54,17 +54,18 @@ class DeviceHeatModel {
   const std::vector<int>& gap_regions() const { return gap_regions_; }
   /// Copper area / winding area of the coil (from the wire and turns).
   double copper_fill() const { return copper_fill_; }
+  /// Volume of each region of the field problem [m^3].
+  const std::vector<double>& region_volume() const { return region_volume_; }
   /// The operating point.
   const OperatingPoint& point() const { return point_; }
 
  private:
-  void spread(double power, const std::vector<int>& regions, std::vector<double>& out) const;
   int gap_region(const std::string& name) const;  // -1 if no gap region has that name
 
   OperatingPoint point_;
   std::unique_ptr<valve::DeviceChain> chain_;
   std::vector<int> coil_regions_, gap_regions_;
-  std::vector<double> region_area_;  // meridian area x 2 pi r-weight: volume per region [m^3]
+  std::vector<double> region_volume_;  // [m^3]
   double copper_fill_ = 0.0;
 };
 

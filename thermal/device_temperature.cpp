@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/format_text.hpp"
+#include "thermal/device_regions.hpp"
 
 namespace rheomag::thermal {
 
@@ -24,14 +25,6 @@ void over_regions(const HeatSolution& s, const std::vector<int>& regions, double
   }
   mean = volume > 0.0 ? integral / volume : NAN;
   if (regions.empty()) max = NAN;
-}
-
-/// Heat source densities [W/m^3] of a device heat.
-std::vector<double> densities(const DeviceHeat& heat, const HeatSolution& any) {
-  std::vector<double> q(heat.region_power.size(), 0.0);
-  for (std::size_t r = 0; r < q.size(); ++r)
-    if (heat.region_power[r] != 0.0) q[r] = heat.region_power[r] / any.regions[r].volume;
-  return q;
 }
 
 /// The heat at the temperatures of `t` (or at the fixed temperature); a temperature outside
@@ -79,7 +72,7 @@ SteadyDevice steady_device(DeviceHeatModel& device, HeatSolver& solver,
   };
   for (int k = 1; k <= options.max_iterations; ++k) {
     const DeviceHeat heat = heat_or_runaway(t);
-    solver.set_sources(densities(heat, solution));
+    solver.set_sources(source_densities(heat.region_power, device.region_volume()));
     solution = solver.steady();
     const DeviceTemperatures next = device_temperatures(solution, device);
     const double change =
@@ -122,7 +115,7 @@ DeviceTransient transient_device(DeviceHeatModel& device, HeatSolver& solver,
     }
     sample.coil_power = heat.coil_power;
     sample.fluid_power = heat.fluid_power;
-    solver.set_sources(densities(heat, s));  // for the next step
+    solver.set_sources(source_densities(heat.region_power, device.region_volume()));  // next step
     if (limit && !out.time_to_limit && sample.temperatures.hottest() >= *limit) {
       // Linear interpolation between the last two states.
       if (out.samples.empty()) {

@@ -97,6 +97,25 @@ std::vector<double> region_volumes(const cases::Problem& problem, const mesh::Me
   return volume;
 }
 
+double temperature_at(const mesh::Mesh& mesh, const Eigen::VectorXd& temperature, mesh::Point p) {
+  const int per = mesh.nodes_per_triangle();
+  for (const auto& t : mesh.triangles) {
+    const mesh::Point v0 = mesh.nodes[t[0]], v1 = mesh.nodes[t[1]], v2 = mesh.nodes[t[2]];
+    const double r10 = v1.r - v0.r, r20 = v2.r - v0.r, z10 = v1.z - v0.z, z20 = v2.z - v0.z;
+    const double det = r10 * z20 - r20 * z10;
+    const double xi = ((p.r - v0.r) * z20 - (p.z - v0.z) * r20) / det;
+    const double eta = (r10 * (p.z - v0.z) - z10 * (p.r - v0.r)) / det;
+    constexpr double kSlack = -1e-12;
+    if (xi < kSlack || eta < kSlack || xi + eta > 1.0 - kSlack) continue;
+    double n[ms::kMaxElementNodes], d_xi[ms::kMaxElementNodes], d_eta[ms::kMaxElementNodes];
+    ms::lagrange_basis(mesh.order, xi, eta, n, d_xi, d_eta);
+    double value = 0.0;
+    for (int i = 0; i < per; ++i) value += n[i] * temperature[t[i]];
+    return value;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
 double HeatSolution::balance_error() const {
   double out = storage_power + exchange_heat_flow;
   for (double flow : surface_heat_flow) out += flow;

@@ -43,6 +43,10 @@ struct HeatSolution {
 /// Volume of each region of `mesh` [m^3] (planar: times `depth`); index as Problem::regions.
 std::vector<double> region_volumes(const cases::Problem& problem, const mesh::Mesh& mesh);
 
+/// The temperature of nodal field `temperature` at point `p` (the shape functions of the
+/// triangle holding it); NaN outside the mesh or the thermal model.
+double temperature_at(const mesh::Mesh& mesh, const Eigen::VectorXd& temperature, mesh::Point p);
+
 /// Heat conduction on one mesh with one HeatModel.
 class HeatSolver {
  public:

@@ -50,9 +50,8 @@ nlohmann::json number(double v) {
 /// entering at `inlet`, beta = rho c_p Q / V (ThroughFlow in docs/thermal.md).
 void add_through_flow(HeatModel& model, const DeviceHeatModel& device, double flow, double inlet) {
   const cases::Problem& problem = device.solver().problem();
-  const std::vector<double> volume = region_volumes(problem, device.solver().mesh());
   double gaps = 0.0;
-  for (int r : device.gap_regions()) gaps += volume[r];
+  for (int r : device.gap_regions()) gaps += device.region_volume()[r];
   const cases::Material& fluid =
       problem.materials[problem.regions[device.gap_regions().front()].material];
   if (!fluid.thermal)
@@ -99,6 +98,9 @@ ThermalReport run_thermal(const cases::Case& c, const ThermalRequest& request) {
     report.steady = steady_device(device, solver, coupling, spec.ambient);
     report.field = report.steady.solution;
   }
+  if (!device.coil_regions().empty() && !device.gap_regions().empty())
+    report.network =
+        fit_network(solver, device.coil_regions(), device.gap_regions(), device.region_volume());
   const cases::Problem& problem = field.problem();
   for (std::size_t r = 0; r < problem.regions.size(); ++r) {
     const HeatRegion& data = solver.model().regions[r];
@@ -186,6 +188,15 @@ std::string thermal_text(const ThermalReport& r) {
         "fluid through-flow", "advection", r.field.exchange_heat_flow);
   out << format_text("energy balance: %.2g of the sources (copper fill %.3f, %d unknowns)\n",
                      r.balance_error, r.copper_fill, r.unknowns);
+  if (r.network) {
+    const ThermalNetwork& n = *r.network;
+    const Eigen::Vector2d tau = n.time_constants();
+    out << format_text(
+        "two-node network (coil, fluid+body): C = %.4g, %.4g J/K; R = [%.4g %.4g; "
+        "%.4g %.4g] K/W; time constants %.4g s, %.4g s\n",
+        n.capacity[0], n.capacity[1], n.resistance(0, 0), n.resistance(0, 1), n.resistance(1, 0),
+        n.resistance(1, 1), tau[0], tau[1]);
+  }
   std::string outside;
   for (const RegionReport& region : r.regions)
     if (!region.active) outside += (outside.empty() ? "" : ", ") + region.name;
@@ -261,6 +272,16 @@ nlohmann::json thermal_json(const ThermalReport& r) {
     regions.push_back(one);
   }
   j["regions"] = regions;
+  if (r.network) {
+    const ThermalNetwork& n = *r.network;
+    const Eigen::Vector2d tau = n.time_constants();
+    j["network"] = {
+        {"capacity", {n.capacity[0], n.capacity[1]}},
+        {"resistance",
+         {{n.resistance(0, 0), n.resistance(0, 1)}, {n.resistance(1, 0), n.resistance(1, 1)}}},
+        {"baseline", {n.baseline[0], n.baseline[1]}},
+        {"time_constants", {tau[0], tau[1]}}};
+  }
   return j;
 }
 

@@ -11,6 +11,7 @@
 #include "core/progress.hpp"
 #include "thermal/device_temperature.hpp"
 #include "thermal/heat_model.hpp"
+#include "thermal/thermal_network.hpp"
 
 namespace rheomag::thermal {
 
@@ -47,9 +48,10 @@ struct ThermalReport {
   std::vector<SurfaceCondition> surfaces;
   std::vector<double> surface_heat_flow;  ///< per surface [W] (of the reported state)
   double balance_error = 0.0;
-  HeatSolution field;  ///< the reported state (steady, or the transient's last)
-  int unknowns = 0;    ///< temperatures solved for
-  mesh::Mesh mesh;     ///< the mesh of the field
+  HeatSolution field;                     ///< the reported state (steady, or the transient's last)
+  int unknowns = 0;                       ///< temperatures solved for
+  std::optional<ThermalNetwork> network;  ///< the two-node network (a device with gaps)
+  mesh::Mesh mesh;                        ///< the mesh of the field
   std::vector<std::string> region_names;
 };
 
