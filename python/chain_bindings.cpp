@@ -7,6 +7,7 @@
 #include "coupling/step_request.hpp"
 #include "python/bindings.hpp"
 #include "python/handles.hpp"
+#include "thermal/thermal_report.hpp"
 #include "transient/report.hpp"
 #include "valve/brake_report.hpp"
 #include "valve/damper_report.hpp"
@@ -75,6 +76,33 @@ py::object step_response(const CaseHandle& h, double duration, std::optional<dou
   return to_python(j);
 }
 
+py::object thermal_dict(const CaseHandle& h, std::optional<double> current,
+                        std::optional<double> flow, std::optional<double> velocity,
+                        std::optional<double> speed, double duty,
+                        std::optional<double> temperature, std::optional<double> duration,
+                        int steps, std::optional<double> limit) {
+  if (flow.has_value() + velocity.has_value() + speed.has_value() > 1)
+    throw InputError("thermal: give at most one of flow, velocity and speed");
+  thermal::ThermalRequest r;
+  r.point.duty = duty;
+  r.point.current = current.value_or(h.c->problem.circuits.empty()
+                                         ? 0.0
+                                         : h.c->problem.circuits.back().current);
+  if (flow) r.point.motion = thermal::Motion::flow, r.point.value = *flow;
+  if (velocity) r.point.motion = thermal::Motion::velocity, r.point.value = *velocity;
+  if (speed) r.point.motion = thermal::Motion::speed, r.point.value = *speed;
+  r.temperature = temperature;
+  r.duration = duration;
+  r.steps = steps;
+  r.limit = limit;
+  nlohmann::json j;
+  {
+    py::gil_scoped_release release;
+    j = thermal::thermal_json(thermal::run_thermal(*h.c, r));
+  }
+  return to_python(j);
+}
+
 }  // namespace
 
 void bind_chain(py::class_<CaseHandle>& c) {
@@ -90,6 +118,14 @@ void bind_chain(py::class_<CaseHandle>& c) {
         py::arg("speeds") = std::vector<double>{},
         "Torque-speed of the case's brake at `currents` [A] x `speeds` [rad/s]; the dict of "
         "`rheomag brake --json` (torques in N m).");
+  c.def("thermal", &thermal_dict, py::kw_only(), py::arg("current") = py::none(),
+        py::arg("flow") = py::none(), py::arg("velocity") = py::none(),
+        py::arg("speed") = py::none(), py::arg("duty") = 1.0, py::arg("temperature") = py::none(),
+        py::arg("duration") = py::none(), py::arg("steps") = 200, py::arg("limit") = py::none(),
+        "Coil and fluid temperatures at one operating point (a valve's flow [m^3/s], a damper's "
+        "velocity [m/s] or a brake's speed [rad/s]; duty in [0, 1]): steady and coupled, at a "
+        "given temperature [deg C], or heating from ambient for `duration` [s]; the dict of "
+        "`rheomag thermal --json` (docs/thermal.md).");
   c.def("transient", &step_response, py::kw_only(), py::arg("duration"),
         py::arg("current") = py::none(), py::arg("voltage") = py::none(),
         py::arg("from_current") = 0.0, py::arg("steps") = 0, py::arg("tolerance") = 1e-4,

@@ -1,4 +1,4 @@
-"""Case.valve / damper / brake / transient against the CLI's --json (issue 30).
+"""Case.valve / damper / brake / thermal / transient against the CLI's --json (issue 30).
 
 Reference: the CLI of the same build on the same case; both build their dict with the same
 library function, so the numbers must be equal to the last digit (no tolerance). Wall-clock keys
@@ -32,6 +32,13 @@ def test_brake_equals_cli():
     py = rheomag.Case.load(BRAKE).brake(currents=[1.0], speeds=[10.0])
     cli = cli_json("brake", BRAKE, "--current", "1", "--speed", "10")
     assert without_timing(py) == without_timing(cli)
+
+
+def test_thermal_equals_cli(valve_case):
+    py = valve_case.thermal(current=0.8, flow=1e-6, duty=0.5)
+    cli = cli_json("thermal", VALVE, "--current", "0.8", "--flow", "1e-6", "--duty", "0.5")
+    assert without_timing(py) == without_timing(cli)
+    assert abs(py["balance_error"]) < 1e-8
 
 
 def test_transient_equals_cli_and_reports_progress(valve_case):
