@@ -92,7 +92,7 @@ BENCHMARK(BM_NonlinearSolve)
     ->UseRealTime();
 
 /// The same solve by nested iteration (nested_solve.hpp): the pot core solved on meshes with
-/// half, a quarter, ... the cells per millimetre (down to about 1e4 unknowns, coarsest first,
+/// half, a quarter, ... the cells per millimetre (down to about 1.5e4 unknowns, coarsest first,
 /// their setup timed), each interpolated onto the next, Newton on the fine mesh last. Second
 /// argument: the most CG iterations with an old factorisation (0: the default reuse rule; else
 /// also no refactorisation on a changed tangent while CG converges, FactorReuse).

@@ -20,7 +20,8 @@ struct NestedOptions {
 /// Solves `fine`'s problem at `currents` on each mesh of `coarser` (coarsest first; a solver per
 /// mesh, built with fine's options but no dlambda/dI), each started from the previous solution
 /// interpolated (prolongation.hpp), then `fine` from the last one. The result is fine's solution
-/// to its own tolerance; only its Newton start differs from a plain fine.solve(currents).
+/// to its own tolerance; only its Newton start differs from a plain fine.solve(currents). When a
+/// coarse solve does not converge, the fine solve starts from A = 0. InputError as fine.solve.
 Solution solve_nested(MagnetostaticSolver& fine, const std::vector<mesh::Mesh>& coarser,
                       const std::vector<double>& currents, const NestedOptions& options = {});
 

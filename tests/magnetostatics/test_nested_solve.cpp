@@ -103,5 +103,17 @@ TEST(NestedSolve, WithoutCoarseMeshesIsThePlainSolve) {
   EXPECT_EQ(solve_nested(a, {}, {2.0}).flux_linkage[0], b.solve().flux_linkage[0]);
 }
 
+TEST(NestedSolve, CoarseFailureFallsBackToThePlainSolve) {
+  // Reference: a plain solve of an identical solver. A coarse tolerance of 0 cannot be met (the
+  // residual stagnates at rounding), so the coarse Newton throws ConvergenceError; the nested
+  // solve then runs the fine Newton from A = 0: bitwise the plain solve's lambda.
+  const test::PotCore core;
+  MagnetostaticSolver a = pot_core_solver(1.5, {}), b = pot_core_solver(1.5, {});
+  NestedOptions impossible;
+  impossible.coarse_tolerance = 0.0;
+  const Solution nested = solve_nested(a, {test::pot_core_mesh(core, 0.75, 2)}, {2.0}, impossible);
+  EXPECT_EQ(nested.flux_linkage[0], b.solve().flux_linkage[0]);
+}
+
 }  // namespace
 }  // namespace rheomag::magnetostatics
