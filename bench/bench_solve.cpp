@@ -8,8 +8,10 @@
 #include <sys/resource.h>
 
 #include <cstdlib>
+#include <limits>
 #include <string>
 
+#include "magnetostatics/nested_solve.hpp"
 #include "magnetostatics/serial_openmp.hpp"
 #include "magnetostatics/solver.hpp"
 #include "tests/magnetostatics/pot_core.hpp"
@@ -34,10 +36,11 @@ double process_cpu_seconds() {
          1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
 }
 
-/// Nonlinear solve at 2 A (B_gap ~ 1 T) from A = 0, then dlambda/dI at the solution (as the CLI
-/// does); setup (mesh, pattern, symbolic analysis) excluded. Each timed solve starts from a
-/// fresh solver state (no factorisation kept from an earlier solve), as a first `rheomag solve`.
-void BM_NonlinearSolve(benchmark::State& state) {
+/// Times `solve` (a nonlinear solve at 2 A from A = 0 and dlambda/dI, given a freshly built
+/// solver on the about `state.range(0)`-unknown pot-core mesh; setup excluded) and reports
+/// the solver's counters.
+template <class Solve>
+void time_solves(benchmark::State& state, const SolveOptions& options, Solve solve) {
   const test::PotCore core;
   const Material steel = test::aisi1010();
   if (steel.bh.empty()) {
@@ -47,20 +50,21 @@ void BM_NonlinearSolve(benchmark::State& state) {
   const Problem problem = test::pot_core_problem(steel, 400, 2.0, 2);
   const mesh::Mesh mesh = test::pot_core_mesh(core, cells_per_mm(state.range(0)), 2);
   int iterations = 0, local_steps = 0, factorizations = 0, cg = 0, dofs = 0;
-  double cpu = 0.0;
+  double cpu = 0.0, lambda = 0.0, inductance = 0.0;
   for (auto _ : state) {
     state.PauseTiming();
-    MagnetostaticSolver solver(problem, mesh);
+    MagnetostaticSolver solver(problem, mesh, options);
     state.ResumeTiming();
     const double cpu_start = process_cpu_seconds();
-    const Solution s = solver.solve();
+    const Solution s = solve(solver);
     cpu += process_cpu_seconds() - cpu_start;
     iterations = s.newton.iterations;
     local_steps = s.newton.local_steps;
     factorizations = solver.factorizations();
     cg = solver.reuse_iterations();
     dofs = solver.dofs().free_count();
-    benchmark::DoNotOptimize(s.flux_linkage);
+    lambda = s.flux_linkage[0];
+    inductance = s.incremental_inductance[0];
   }
   state.counters["cpu_s"] = cpu / static_cast<double>(state.iterations());
   state.counters["dofs"] = dofs;
@@ -68,6 +72,15 @@ void BM_NonlinearSolve(benchmark::State& state) {
   state.counters["local_steps"] = local_steps;
   state.counters["factorisations"] = factorizations;
   state.counters["cg_iterations"] = cg;
+  state.counters["lambda_uWb"] = lambda * 1e6;
+  state.counters["dlambda_dI_uH"] = inductance * 1e6;
+}
+
+/// Nonlinear solve at 2 A (B_gap ~ 1 T) from A = 0, then dlambda/dI at the solution (as the CLI
+/// does); setup (mesh, pattern, symbolic analysis) excluded. Each timed solve starts from a
+/// fresh solver state (no factorisation kept from an earlier solve), as a first `rheomag solve`.
+void BM_NonlinearSolve(benchmark::State& state) {
+  time_solves(state, {}, [](MagnetostaticSolver& solver) { return solver.solve(); });
 }
 BENCHMARK(BM_NonlinearSolve)
     ->Arg(10'000)
@@ -75,6 +88,33 @@ BENCHMARK(BM_NonlinearSolve)
     ->Arg(100'000)
     ->Arg(300'000)
     ->Arg(1'000'000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+/// The same solve by nested iteration (nested_solve.hpp): the pot core solved on meshes with
+/// half, a quarter, ... the cells per millimetre (down to about 1.5e4 unknowns, coarsest first,
+/// their setup timed), each interpolated onto the next, Newton on the fine mesh last. Second
+/// argument: the most CG iterations with an old factorisation (0: the default reuse rule; else
+/// also no refactorisation on a changed tangent while CG converges, FactorReuse).
+void BM_NestedSolve(benchmark::State& state) {
+  const test::PotCore core;
+  std::vector<mesh::Mesh> coarser;
+  for (double dofs = state.range(0) / 4.0; dofs >= 1.5e4; dofs /= 4.0) {
+    coarser.insert(coarser.begin(), test::pot_core_mesh(core, cells_per_mm(dofs), 2));
+  }
+  SolveOptions options;
+  if (state.range(1) > 0) {
+    options.reuse.refactor_change = std::numeric_limits<double>::infinity();
+    options.reuse.max_iterations = static_cast<int>(state.range(1));
+  }
+  time_solves(state, options, [&](MagnetostaticSolver& solver) {
+    std::vector<double> currents{solver.problem().circuits[0].current};
+    return solve_nested(solver, coarser, currents);
+  });
+  state.counters["levels"] = static_cast<double>(coarser.size() + 1);
+}
+BENCHMARK(BM_NestedSolve)
+    ->ArgsProduct({{10'000, 100'000, 1'000'000}, {0, 30}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "magnetostatics/cholmod_status.hpp"
+#include "magnetostatics/huge_pages.hpp"
 #include "magnetostatics/local_correction.hpp"
 #include "magnetostatics/preconditioned_cg.hpp"
 #include "magnetostatics/serial_openmp.hpp"
@@ -122,6 +123,7 @@ MagnetostaticSolver::MagnetostaticSolver(cases::Problem problem, mesh::Mesh mesh
     tangent_ = assembler_->pattern();
   }
   if (dofs_.reduced_count() > 0) {
+    use_huge_pages_for_cholmod();
     const SerialOpenMp serial;
     cholesky_.analyzePattern(tangent_);
     throw_if_out_of_memory(cholesky_);
@@ -190,7 +192,7 @@ void MagnetostaticSolver::prepare_jacobian(const Eigen::VectorXd& a_nodes) {
   // to pay.
   const Eigen::Map<const Eigen::VectorXd> values(tangent_.valuePtr(), tangent_.nonZeros());
   const bool changed = !has_factor_ || (values - factored_values_).norm() >
-                                           kRefactorChange * factored_values_.norm();
+                                           options_.reuse.refactor_change * factored_values_.norm();
   if (changed || refactor_next_ || linear_) factorize_tangent();
 }
 
@@ -215,11 +217,12 @@ Eigen::VectorXd MagnetostaticSolver::solve_jacobian(const Eigen::VectorXd& rhs, 
   if (factor_current_) return solve_factorized(rhs);
   Eigen::VectorXd x;
   const SerialOpenMp serial;
-  const CgResult cg = preconditioned_cg(tangent_, cholesky_, rhs, tolerance, kReuseIterations, x,
-                                        functional_tolerance);
+  const int budget = options_.reuse.max_iterations;
+  const CgResult cg =
+      preconditioned_cg(tangent_, cholesky_, rhs, tolerance, budget, x, functional_tolerance);
   reuse_iterations_ += cg.iterations;
   if (cg.converged && x.allFinite()) {
-    if (2 * cg.iterations > kReuseIterations) refactor_next_ = true;
+    if (2 * cg.iterations > budget) refactor_next_ = true;
     return x;
   }
   // The factor was too far from this tangent: factorise it, and factorise the next one directly

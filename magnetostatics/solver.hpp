@@ -18,9 +18,21 @@
 
 namespace rheomag::magnetostatics {
 
+/// When a Newton step (or dlambda/dI) is solved by conjugate gradients preconditioned with the
+/// last factorisation instead of factorising its own Jacobian.
+struct FactorReuse {
+  /// Factorise when the tangent's stored values moved more than this (relative Euclidean norm)
+  /// from the factorised ones; infinity: always try CG with the old factor first.
+  double refactor_change = 1e-3;
+  /// Most CG iterations with the old factor; a CG that cannot reach its tolerance within them
+  /// gives up (after 3 iterations, from its rate) and the Jacobian is factorised.
+  int max_iterations = 8;
+};
+
 /// Settings of a solve.
 struct SolveOptions {
   NewtonOptions newton;                ///< Newton tolerances and limits
+  FactorReuse reuse;                   ///< frozen tangents: CG with an older factorisation
   bool incremental_inductance = true;  ///< compute dlambda/dI (one extra factorisation)
   /// Meshing, used by solve_problem only (its order and min_gap_elements come from the Problem).
   mesh::MeshOptions mesh;
@@ -59,10 +71,11 @@ struct SweepPoint {
 /// energy, and local corrections at saturating corners (newton.hpp, local_correction.hpp);
 /// CHOLMOD supernodal Cholesky whose symbolic analysis is done once in the constructor and reused
 /// by every factorisation of every solve (CHOLMOD's OpenMP regions run serially,
-/// serial_openmp.hpp). A Newton step whose Jacobian is within kRefactorChange of the last
-/// factorised one is solved by conjugate gradients preconditioned with that factorisation (to
-/// Newton's forcing tolerance); otherwise, or after a CG solve that failed or took more than
-/// kReuseIterations / 2 iterations, the Jacobian is factorised.
+/// serial_openmp.hpp; huge pages for the factor, huge_pages.hpp). A Newton step whose Jacobian
+/// is within FactorReuse::refactor_change of the last factorised one is solved by conjugate
+/// gradients preconditioned with that factorisation (to Newton's forcing tolerance); otherwise, or
+/// after a CG solve that failed or took more than FactorReuse::max_iterations / 2 iterations, the
+/// Jacobian is factorised.
 class MagnetostaticSolver {
  public:
   /// Takes the problem (regions, materials, circuits, boundaries) and a mesh of it
@@ -112,13 +125,15 @@ class MagnetostaticSolver {
   /// Conjugate-gradient iterations done with a reused factorisation so far.
   int reuse_iterations() const { return reuse_iterations_; }
 
-  /// Most CG iterations accepted with a reused factorisation before refactorising.
-  static constexpr int kReuseIterations = 8;
+  /// Most CG iterations accepted with a reused factorisation before refactorising (the default
+  /// of FactorReuse::max_iterations).
+  static constexpr int kReuseIterations = FactorReuse{}.max_iterations;
   /// Relative change of the tangent's values (Euclidean norm over the stored entries) since the
   /// last factorisation above which the Jacobian is factorised rather than solved by CG with the
   /// old factor (measured: 4e-5 -> 3 CG iterations, 4e-4 -> 6, 2e-3 -> no convergence in 8; a
-  /// CG attempt that cannot converge gives up after about 3 iterations).
-  static constexpr double kRefactorChange = 1e-3;
+  /// CG attempt that cannot converge gives up after about 3 iterations; the default of
+  /// FactorReuse::refactor_change).
+  static constexpr double kRefactorChange = FactorReuse{}.refactor_change;
 
  private:
   class System;
