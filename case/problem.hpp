@@ -38,7 +38,7 @@ struct Material {
   double coercivity = 0.0;             ///< permanent magnet: H_c [A/m], B = mu0 mu_r (H + H_c m)
   bool fluid = false;  ///< an MR fluid of the materials library: a medium a body moves through
   /// Thermal data; empty: the material is outside the thermal model (surroundings, e.g. air).
-  std::optional<ThermalProperties> thermal;
+  std::optional<ThermalProperties> thermal{};
 };
 
 /// A series circuit driving one or more coil regions.

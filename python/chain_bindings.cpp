@@ -78,16 +78,14 @@ py::object step_response(const CaseHandle& h, double duration, std::optional<dou
 
 py::object thermal_dict(const CaseHandle& h, std::optional<double> current,
                         std::optional<double> flow, std::optional<double> velocity,
-                        std::optional<double> speed, double duty,
-                        std::optional<double> temperature, std::optional<double> duration,
-                        int steps, std::optional<double> limit) {
+                        std::optional<double> speed, double duty, std::optional<double> temperature,
+                        std::optional<double> duration, int steps, std::optional<double> limit) {
   if (flow.has_value() + velocity.has_value() + speed.has_value() > 1)
     throw InputError("thermal: give at most one of flow, velocity and speed");
   thermal::ThermalRequest r;
   r.point.duty = duty;
-  r.point.current = current.value_or(h.c->problem.circuits.empty()
-                                         ? 0.0
-                                         : h.c->problem.circuits.back().current);
+  r.point.current =
+      current.value_or(h.c->problem.circuits.empty() ? 0.0 : h.c->problem.circuits.back().current);
   if (flow) r.point.motion = thermal::Motion::flow, r.point.value = *flow;
   if (velocity) r.point.motion = thermal::Motion::velocity, r.point.value = *velocity;
   if (speed) r.point.motion = thermal::Motion::speed, r.point.value = *speed;

@@ -13,30 +13,7 @@
 
 namespace rheomag::thermal {
 
-namespace {
-
-constexpr double kCopperAlpha = 0.00393;  // 1/K at 20 C, valve/coil.hpp's copper_resistivity
-
-/// Mean and maximum of the coil and gap regions of `s`.
-DeviceTemperatures temperatures_of(const HeatSolution& s, const std::vector<int>& coil,
-                                   const std::vector<int>& gaps) {
-  const auto over = [&](const std::vector<int>& regions, double& mean, double& max) {
-    double volume = 0.0, integral = 0.0;
-    max = regions.empty() ? NAN : -INFINITY;
-    for (int r : regions) {
-      volume += s.regions[r].volume;
-      integral += s.regions[r].mean * s.regions[r].volume;
-      max = std::max(max, s.regions[r].max);
-    }
-    mean = volume > 0.0 ? integral / volume : NAN;
-  };
-  DeviceTemperatures t;
-  over(coil, t.coil_mean, t.coil_max);
-  over(gaps, t.fluid_mean, t.fluid_max);
-  return t;
-}
-
-}  // namespace
+constexpr double kCopperAlpha = valve::kCopperTemperatureCoefficient;
 
 DeviceTemperatures design_temperatures(const cases::Case& c,
                                        const magnetostatics::MagnetostaticSolver& solver,
@@ -62,11 +39,11 @@ DeviceTemperatures design_temperatures(const cases::Case& c,
   std::vector<double> power(problem.regions.size(), 0.0);
   spread_power(1.0, coil, volume, power);
   thermal.set_sources(source_densities(power, volume));
-  const DeviceTemperatures unit = temperatures_of(thermal.steady(), coil, gaps);
+  const DeviceTemperatures unit = temperatures_over(thermal.steady(), coil, gaps);
   power.assign(problem.regions.size(), 0.0);
   spread_power(heat.duty * heat.fluid_power, gaps, volume, power);
   thermal.set_sources(source_densities(power, volume));
-  const DeviceTemperatures base = temperatures_of(thermal.steady(), coil, gaps);
+  const DeviceTemperatures base = temperatures_over(thermal.steady(), coil, gaps);
   // unit - ambient is the rise per coil watt (the problem is linear; ambient appears once).
   const double b = unit.coil_mean - spec.ambient;
   const double p20 =
@@ -82,7 +59,7 @@ DeviceTemperatures design_temperatures(const cases::Case& c,
   // are not the sums of the two fields' maxima).
   spread_power(p20 * (1.0 + kCopperAlpha * (coil_mean - 20.0)), coil, volume, power);
   thermal.set_sources(source_densities(power, volume));
-  t = temperatures_of(thermal.steady(), coil, gaps);
+  t = temperatures_over(thermal.steady(), coil, gaps);
   return t;
 }
 

@@ -13,20 +13,6 @@ namespace rheomag::thermal {
 
 namespace {
 
-/// Volume-weighted mean and maximum over `regions`.
-void over_regions(const HeatSolution& s, const std::vector<int>& regions, double& mean,
-                  double& max) {
-  double volume = 0.0, integral = 0.0;
-  max = -INFINITY;
-  for (int r : regions) {
-    volume += s.regions[r].volume;
-    integral += s.regions[r].mean * s.regions[r].volume;
-    max = std::max(max, s.regions[r].max);
-  }
-  mean = volume > 0.0 ? integral / volume : NAN;
-  if (regions.empty()) max = NAN;
-}
-
 /// The heat at the temperatures of `t` (or at the fixed temperature); a temperature outside
 /// the models' range there means the device runs away: ConvergenceError.
 DeviceHeat heat_at(DeviceHeatModel& device, const CouplingOptions& options,
@@ -47,12 +33,33 @@ DeviceHeat heat_at(DeviceHeatModel& device, const CouplingOptions& options,
 
 }  // namespace
 
+double mean_over(const HeatSolution& solution, const std::vector<int>& regions) {
+  double volume = 0.0, integral = 0.0;
+  for (int r : regions) {
+    volume += solution.regions[r].volume;
+    integral += solution.regions[r].mean * solution.regions[r].volume;
+  }
+  return volume > 0.0 ? integral / volume : NAN;
+}
+
+DeviceTemperatures temperatures_over(const HeatSolution& solution, const std::vector<int>& coil,
+                                     const std::vector<int>& gaps) {
+  const auto max_over = [&](const std::vector<int>& regions) {
+    double max = regions.empty() ? NAN : -INFINITY;
+    for (int r : regions) max = std::max(max, solution.regions[r].max);
+    return max;
+  };
+  DeviceTemperatures t;
+  t.coil_mean = mean_over(solution, coil);
+  t.coil_max = max_over(coil);
+  t.fluid_mean = mean_over(solution, gaps);
+  t.fluid_max = max_over(gaps);
+  return t;
+}
+
 DeviceTemperatures device_temperatures(const HeatSolution& solution,
                                        const DeviceHeatModel& device) {
-  DeviceTemperatures t;
-  over_regions(solution, device.coil_regions(), t.coil_mean, t.coil_max);
-  over_regions(solution, device.gap_regions(), t.fluid_mean, t.fluid_max);
-  return t;
+  return temperatures_over(solution, device.coil_regions(), device.gap_regions());
 }
 
 SteadyDevice steady_device(DeviceHeatModel& device, HeatSolver& solver,

@@ -20,6 +20,13 @@ struct DeviceTemperatures {
   double hottest() const { return coil_max > fluid_max ? coil_max : fluid_max; }
 };
 
+/// Volume-weighted mean temperature of `regions` in `solution` (NaN without regions).
+double mean_over(const HeatSolution& solution, const std::vector<int>& regions);
+
+/// Volume-weighted means and nodal maxima of the `coil` and `gaps` regions of `solution`.
+DeviceTemperatures temperatures_over(const HeatSolution& solution, const std::vector<int>& coil,
+                                     const std::vector<int>& gaps);
+
 /// The coil and gap temperatures of `solution` (volume-weighted means, nodal maxima).
 DeviceTemperatures device_temperatures(const HeatSolution& solution, const DeviceHeatModel& device);
 

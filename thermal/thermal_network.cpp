@@ -7,22 +7,9 @@
 
 #include "core/error.hpp"
 #include "thermal/device_regions.hpp"
+#include "thermal/device_temperature.hpp"
 
 namespace rheomag::thermal {
-
-namespace {
-
-/// Volume-weighted mean of `regions` in `s`.
-double mean_of(const HeatSolution& s, const std::vector<int>& regions) {
-  double volume = 0.0, integral = 0.0;
-  for (int r : regions) {
-    volume += s.regions[r].volume;
-    integral += s.regions[r].mean * s.regions[r].volume;
-  }
-  return integral / volume;
-}
-
-}  // namespace
 
 Eigen::Vector2d ThermalNetwork::steady(const Eigen::Vector2d& power) const {
   return baseline + resistance * power;
@@ -58,14 +45,14 @@ ThermalNetwork fit_network(HeatSolver& solver, const std::vector<int>& coil,
   const std::size_t regions = volume.size();
   solver.set_sources(std::vector<double>(regions, 0.0));
   const HeatSolution none = solver.steady();
-  n.baseline = {mean_of(none, coil), mean_of(none, fluid)};
+  n.baseline = {mean_over(none, coil), mean_over(none, fluid)};
   for (int column = 0; column < 2; ++column) {
     std::vector<double> power(regions, 0.0);
     spread_power(1.0, column == 0 ? coil : fluid, volume, power);
     solver.set_sources(source_densities(power, volume));
     const HeatSolution s = solver.steady();
-    n.resistance(0, column) = mean_of(s, coil) - n.baseline[0];
-    n.resistance(1, column) = mean_of(s, fluid) - n.baseline[1];
+    n.resistance(0, column) = mean_over(s, coil) - n.baseline[0];
+    n.resistance(1, column) = mean_over(s, fluid) - n.baseline[1];
   }
   solver.set_sources(std::vector<double>(regions, 0.0));
   const std::vector<double> c = solver.region_heat_capacity();

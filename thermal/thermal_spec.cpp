@@ -6,7 +6,6 @@
 #include "case/material_library.hpp"
 #include "case/toml_section.hpp"
 #include "core/error.hpp"
-#include "fluid/fluid_temperature.hpp"
 
 namespace rheomag::thermal {
 

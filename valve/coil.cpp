@@ -20,7 +20,7 @@ double copper_resistivity(double temperature) {
   if (!why.empty())
     throw InputError("coil temperature: " + why +
                      " (where the linear resistivity of copper holds)");
-  const double rho = 1.7241e-8 * (1.0 + 0.00393 * (temperature - 20.0));
+  const double rho = 1.7241e-8 * (1.0 + kCopperTemperatureCoefficient * (temperature - 20.0));
   if (!(rho > 0.0)) throw std::logic_error("copper resistivity <= 0 inside its domain");
   return rho;
 }

@@ -19,6 +19,9 @@ using cases::wire_diameter;
 /// copper: -250 C gave R = -0.291 Ohm.
 inline constexpr Domain kCoilTemperature = Domain::between(-200.0, 250.0, "deg C");
 
+/// Temperature coefficient of annealed copper's resistivity at 20 C [1/K] (IEC 60028).
+inline constexpr double kCopperTemperatureCoefficient = 0.00393;
+
 /// Resistivity of annealed copper [Ohm m] at `temperature` [deg C]: 1.7241e-8 (100 % IACS at
 /// 20 C) x (1 + 0.00393 (T - 20)). Throws InputError outside kCoilTemperature.
 double copper_resistivity(double temperature);

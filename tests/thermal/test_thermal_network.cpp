@@ -9,20 +9,12 @@
 #include "case/case_file.hpp"
 #include "thermal/device_heat.hpp"
 #include "thermal/device_regions.hpp"
+#include "thermal/device_temperature.hpp"
 #include "thermal/model_from_case.hpp"
 #include "thermal/thermal_network.hpp"
 
 namespace rheomag::thermal {
 namespace {
-
-double mean_of(const HeatSolution& s, const std::vector<int>& regions) {
-  double v = 0.0, integral = 0.0;
-  for (int r : regions) {
-    v += s.regions[r].volume;
-    integral += s.regions[r].mean * s.regions[r].volume;
-  }
-  return integral / v;
-}
 
 TEST(ThermalNetwork, SteadyExactAndStepResponseCloseToTheFeTransient) {
   const cases::Case c =
@@ -40,8 +32,8 @@ TEST(ThermalNetwork, SteadyExactAndStepResponseCloseToTheFeTransient) {
   solver.set_sources(source_densities(regional, device.region_volume()));
   const HeatSolution fe = solver.steady();
   const Eigen::Vector2d steady = n.steady(power);
-  EXPECT_NEAR(steady[0], mean_of(fe, device.coil_regions()), 1e-9 * (steady[0] - 20.0));
-  EXPECT_NEAR(steady[1], mean_of(fe, device.gap_regions()), 1e-9 * (steady[1] - 20.0));
+  EXPECT_NEAR(steady[0], mean_over(fe, device.coil_regions()), 1e-9 * (steady[0] - 20.0));
+  EXPECT_NEAR(steady[1], mean_over(fe, device.gap_regions()), 1e-9 * (steady[1] - 20.0));
   // Step response from ambient: the network's coil mean against the FE's over 3 slow time
   // constants. Two nodes cannot hold the FE's fast internal modes, so they differ early on;
   // measured worst difference 0.53 % of the final rise (the test allows 2 %).
@@ -50,7 +42,7 @@ TEST(ThermalNetwork, SteadyExactAndStepResponseCloseToTheFeTransient) {
   const double rise = steady[0] - 20.0;
   solver.transient(solver.uniform(20.0), tau / 100.0, 300, [&](const HeatSolution& s) {
     const Eigen::Vector2d net = n.after(Eigen::Vector2d::Constant(20.0), power, s.time);
-    worst = std::max(worst, std::abs(net[0] - mean_of(s, device.coil_regions())) / rise);
+    worst = std::max(worst, std::abs(net[0] - mean_over(s, device.coil_regions())) / rise);
     return true;
   });
   EXPECT_LT(worst, 0.02);
