@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <mutex>
 #include <numeric>
 
@@ -36,16 +37,30 @@ double mean_field(const lumped::Recording& rec, const std::string& model) {
 }
 
 /// The half (0 or 1) of each training recording: in order of field level (ties in training
-/// order), alternately into the two halves, so that each half holds every level it can.
+/// order), the k-th recording of the l-th level into half (k + l) mod 2, so that each half holds
+/// every level it can and, with two tests a level, not the same test condition at every level.
+/// Levels closer than 1e-3 of the largest |field| are one.
 std::vector<int> halves(const std::vector<lumped::Recording>& training, const std::string& model) {
   std::vector<double> field;
-  for (const lumped::Recording& r : training) field.push_back(mean_field(r, model));
+  double largest = 0.0;
+  for (const lumped::Recording& r : training) {
+    field.push_back(mean_field(r, model));
+    largest = std::max(largest, std::abs(field.back()));
+  }
   std::vector<std::size_t> order(training.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return field[a] < field[b]; });
   std::vector<int> half(training.size());
-  for (std::size_t i = 0; i < order.size(); ++i) half[order[i]] = static_cast<int>(i % 2);
+  std::size_t level = 0, k = 0;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    if (i > 0 && field[order[i]] - field[order[i - k]] > 1e-3 * largest) {
+      ++level;
+      k = 0;
+    }
+    half[order[i]] = static_cast<int>((k + level) % 2);
+    ++k;
+  }
   return half;
 }
 

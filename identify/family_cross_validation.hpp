@@ -17,7 +17,8 @@ void check_cross_validation(const std::vector<lumped::Recording>& training,
                             const std::string& model);
 
 /// The two halves whose fits start the refits: the training recordings in order of their mean
-/// field (ties in training order), alternately into the first and the second half.
+/// field (ties in training order), the k-th recording of the l-th field level into half
+/// (k + l) mod 2 (levels closer than 1e-3 of the largest |field| are one).
 std::vector<std::vector<lumped::Recording>> cross_validation_halves(
     const std::vector<lumped::Recording>& training, const std::string& model);
 

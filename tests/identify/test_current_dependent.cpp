@@ -155,15 +155,18 @@ TEST(CurrentDependent, CrossValidationPredictsEachRecordingFromTheOthers) {
   EXPECT_NEAR(held.level->pure_fit_percent, 100.0 * (1.0 - 0.1 / 1.1), 0.2);
   EXPECT_FALSE(r.training[scaled].level.has_value());  // training rows are fitted, not predicted
 
-  // The halves: every field level (0, 0.5, 1 A) in each, three recordings each.
+  // The halves: every field level (0, 0.5, 1 A) in each, and both frequencies (two tests a
+  // level: the first half 0.1 Hz at 0 and 1 A, 0.25 Hz at 0.5 A), in training order.
   const std::vector<std::vector<Recording>> halves = cross_validation_halves(training, "lugre");
   ASSERT_EQ(halves.size(), 2u);
-  for (const std::vector<Recording>& half : halves) {
-    ASSERT_EQ(half.size(), 3u);
-    EXPECT_DOUBLE_EQ(half[0].column("current")[0], 0.0);
-    EXPECT_DOUBLE_EQ(half[1].column("current")[0], 0.5);
-    EXPECT_DOUBLE_EQ(half[2].column("current")[0], 1.0);
-  }
+  ASSERT_EQ(halves[0].size(), 3u);
+  ASSERT_EQ(halves[1].size(), 3u);
+  EXPECT_EQ(halves[0][0].csv_path, training[0].csv_path);  // 0.1 Hz, 0 A
+  EXPECT_EQ(halves[0][1].csv_path, training[2].csv_path);  // 0.1 Hz, 1 A
+  EXPECT_EQ(halves[0][2].csv_path, training[4].csv_path);  // 0.25 Hz, 0.5 A
+  EXPECT_EQ(halves[1][0].csv_path, training[1].csv_path);  // 0.1 Hz, 0.5 A
+  EXPECT_EQ(halves[1][1].csv_path, training[3].csv_path);  // 0.25 Hz, 0 A
+  EXPECT_EQ(halves[1][2].csv_path, training[5].csv_path);  // 0.25 Hz, 1 A
   const auto in_half = [&](const std::vector<Recording>& half) {
     return std::any_of(half.begin(), half.end(),
                        [&](const Recording& h) { return h.csv_path == training[scaled].csv_path; });
