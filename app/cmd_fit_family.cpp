@@ -29,6 +29,8 @@ struct FamilyOptions {
   std::string model;
   int decimation = 4;
   int starts = 2;
+  int threads = 0;
+  int refit_iterations = 10;
   double max_substep = 2e-3;
   bool json = false;
   bool quiet = false;
@@ -56,7 +58,9 @@ void run_fit_family(const FamilyOptions& o) {
   options.decimation = o.decimation;
   options.greybox.starts = o.starts;
   options.greybox.max_substep = o.max_substep;
+  options.greybox.threads = o.threads;
   options.cross_validate = o.cross_validate;
+  options.refit_iterations = o.refit_iterations;
   if (!o.quiet) options.greybox.progress = rheomag::app::progress_lines("fit-family", std::cerr);
   const FamilyFit r = fit_current_dependent(training, o.model, prediction, options);
   if (!o.report.empty()) write_family_report(o.report, r, training, prediction);
@@ -88,6 +92,11 @@ const bool fit_family_registered = rheomag::app::register_command([](CLI::App& r
   cmd->add_option("--starts", o->starts, "Multi-start count of the fit")
       ->capture_default_str()
       ->check(rheomag::app::in_domain(rheomag::Domain::between(1, 16).whole()));
+  cmd->add_option("--threads", o->threads,
+                  "Threads of the fit's starts and of the --cross-validate refits (0: one per "
+                  "core); the result does not depend on it while it is at most --starts")
+      ->capture_default_str()
+      ->check(rheomag::app::in_domain(rheomag::Domain::between(0, 256).whole()));
   cmd->add_option("--max-substep", o->max_substep,
                   "[s] longest RK4 substep inside the fit (stiff states shorten it further)")
       ->capture_default_str()
@@ -100,12 +109,20 @@ const bool fit_family_registered = rheomag::app::register_command([](CLI::App& r
                 "Print one JSON object: the fitted model (readable back as a model file, "
                 "docs/fit-model-json.md), params, train and prediction (arrays of {file, "
                 "field, fit_percent, rmse_percent, re, mean_removed, band_rms, band_percent, "
-                "repeatability_percent}), "
+                "repeatability_percent, level_fit_percent, level_pure_fit_percent, level_gain, "
+                "level_offset, level_window_s}), "
                 "held_out (the same, with --cross-validate), mode");
   cmd->add_flag("--cross-validate", o->cross_validate,
                 "Also refit once without each training recording and predict it (leave one "
-                "recording out): the FIT to expect on a test the fit has not seen. Costs one more "
-                "fit per training recording; JSON key held_out, a report column");
+                "recording out): the FIT to expect on a test the fit has not seen. Costs a fit of "
+                "each half of the recordings and one short refit per training recording, run "
+                "side by side (--threads); JSON key held_out, a report column");
+  cmd->add_option("--refit-iterations", o->refit_iterations,
+                  "--cross-validate: iterations of each refit, started from the fit of the half "
+                  "of the recordings that does not hold the left-out one; 0: every refit from the "
+                  "nominal start with --starts (the slower cold refits)")
+      ->capture_default_str()
+      ->check(rheomag::app::in_domain(rheomag::Domain::between(0, 1000).whole()));
   cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr");
   cmd->callback([o]() { run_fit_family(*o); });
 });

@@ -1,6 +1,8 @@
 // Benchmarks of issue 14's speed targets on the UTFSM damper recordings (shared/data/utfsm):
 // single grey-box fits on 25 mm / 0.5 Hz / 1 A (target < 5 s wall) and the 15-recording 25 mm
-// family fit (target < 30 s wall), with the FIT of the prediction of 10 mm / 1 Hz as counters.
+// family fit (target < 30 s wall), with the FIT of the prediction of 10 mm / 1 Hz as counters;
+// and issue 35's cross-validated family fit of the 25 mm tests (`fit-family --cross-validate`,
+// damper, 2 starts), cold refits against refits started from the other half's fit.
 // "Time" is wall time, "CPU" the whole process's CPU time (the starts run on every core).
 
 #include <benchmark/benchmark.h>
@@ -42,13 +44,20 @@ BENCHMARK(BM_SingleFit)
     ->MeasureProcessCPUTime()
     ->UseRealTime();
 
-void BM_FamilyFit25mm(benchmark::State& state) {
-  const std::string model = kModels[static_cast<std::size_t>(state.range(0))];
-  state.SetLabel(model);
-  std::vector<Recording> training, prediction;
+/// The 15 utfsm 25 mm recordings (0.1, 0.25, 0.5 Hz at every current).
+std::vector<Recording> recordings_25mm() {
+  std::vector<Recording> training;
   for (const char* f : {"25mm0x1Hz", "25mm0x25Hz", "25mm0x5Hz"})
     for (const std::string& c : kCurrents)
       training.push_back(read_recording(kData + f + c + ".csv"));
+  return training;
+}
+
+void BM_FamilyFit25mm(benchmark::State& state) {
+  const std::string model = kModels[static_cast<std::size_t>(state.range(0))];
+  state.SetLabel(model);
+  const std::vector<Recording> training = recordings_25mm();
+  std::vector<Recording> prediction;
   for (const std::string& c : kCurrents)
     prediction.push_back(read_recording(kData + "10mm1Hz" + c + ".csv"));
   for (auto _ : state) {
@@ -60,6 +69,32 @@ void BM_FamilyFit25mm(benchmark::State& state) {
 }
 BENCHMARK(BM_FamilyFit25mm)
     ->DenseRange(0, 7)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+
+/// `fit-family 25mm*.csv --model damper --cross-validate` (2 starts, every 4th sample) with
+/// --refit-iterations = the argument (0: cold refits from nominal, as before issue 35).
+void BM_CrossValidate25mm(benchmark::State& state) {
+  const std::vector<Recording> training = recordings_25mm();
+  FamilyFitOptions options;
+  options.greybox.starts = 2;
+  options.cross_validate = true;
+  options.refit_iterations = static_cast<int>(state.range(0));
+  state.SetLabel(options.refit_iterations == 0 ? "cold refits" : "refits from the other half");
+  for (auto _ : state) {
+    const FamilyFit r = fit_current_dependent(training, "damper", {}, options);
+    std::vector<double> held;
+    for (const FamilyMember& m : r.held_out) held.push_back(m.metrics.fit_percent);
+    std::sort(held.begin(), held.end());
+    state.counters["lowest_held_out_fit_percent"] = held.front();
+    state.counters["median_held_out_fit_percent"] = held[held.size() / 2];
+  }
+}
+BENCHMARK(BM_CrossValidate25mm)
+    ->Arg(0)
+    ->Arg(10)
     ->Unit(benchmark::kSecond)
     ->Iterations(1)
     ->MeasureProcessCPUTime()

@@ -30,6 +30,14 @@ FamilyMember evaluate_family_member(const lumped::Recording& rec, const GreyboxF
   return m;
 }
 
+FamilyMember predict_family_member(const lumped::Recording& rec, const GreyboxFit& fit) {
+  FamilyMember m = evaluate_family_member(rec, fit);
+  m.band = prediction_band(rec, fit);
+  m.level = calibrate_level(rec.t, rec.column(fit.setup.motion_column),
+                            rec.column(fit.setup.output_column), m.simulated);
+  return m;
+}
+
 /// Refuses a training recording given twice: the same file under two names (on disk), or the
 /// same samples under two names.
 static void refuse_duplicate_recordings(const std::vector<lumped::Recording>& training) {
@@ -141,7 +149,8 @@ FamilyFit fit_current_dependent(const std::vector<lumped::Recording>& training,
   // Each recording simulated at its full rate with the fitted parameters.
   const std::size_t members = training.size() + prediction.size();
   const auto evaluate = [&](const lumped::Recording& r, std::vector<FamilyMember>& into) {
-    into.push_back(evaluate_family_member(r, out.fit));
+    into.push_back(&into == &out.training ? evaluate_family_member(r, out.fit)
+                                          : predict_family_member(r, out.fit));
     if (!options.greybox.progress) return;
     ProgressEvent e;
     e.stage = "simulating every recording with the fitted " + out.fit.model;
@@ -151,10 +160,7 @@ FamilyFit fit_current_dependent(const std::vector<lumped::Recording>& training,
     options.greybox.progress(e);
   };
   for (const lumped::Recording& r : training) evaluate(r, out.training);
-  for (const lumped::Recording& r : prediction) {
-    evaluate(r, out.predicted);
-    out.predicted.back().band = prediction_band(r, out.fit);
-  }
+  for (const lumped::Recording& r : prediction) evaluate(r, out.predicted);
   if (options.cross_validate) out.held_out = cross_validate_family(training, model, options);
   return out;
 }

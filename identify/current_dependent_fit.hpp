@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "identify/greybox.hpp"
+#include "identify/level_calibration.hpp"
 #include "identify/prediction_band.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording.hpp"
@@ -20,6 +21,10 @@ struct FamilyFitOptions {
   int decimation = 4;      ///< keep every n-th sample of each recording in the joint fit
   /// Also refit once without each training recording and predict it (leave-one-recording-out).
   bool cross_validate = false;
+  /// Levenberg-Marquardt iterations of each cross-validation refit, which starts (one start) from
+  /// the fit of the half of the recordings without the held-out one; 0: every refit from the
+  /// nominal start with the greybox options' starts and iterations (the cold refits of before).
+  int refit_iterations = 10;
 };
 
 /// Metrics of the fitted model on one recording of the family (free run, full rate).
@@ -36,6 +41,10 @@ struct FamilyMember {
   /// periodic drive with a periodic output reaches there (repeatability_percent); empty if the
   /// drive is not periodic.
   std::optional<double> repeatability;
+  /// Predicted and held-out recordings: the prediction with one level (gain and offset) fitted on
+  /// the recording's first cycle and scored on the rest (calibrate_level); empty for the training
+  /// recordings or where no calibration window exists.
+  std::optional<LevelCalibration> level;
   std::vector<double> simulated;  ///< free-run model output at the recording's samples
 };
 
@@ -64,6 +73,10 @@ void check_family(const std::vector<lumped::Recording>& training,
 /// The fitted model `fit` on one recording: its free run at the recording's full rate and the
 /// metrics against the recording's output (the band is left empty).
 FamilyMember evaluate_family_member(const lumped::Recording& rec, const GreyboxFit& fit);
+
+/// The fitted model `fit` predicting a recording it was not fitted on: evaluate_family_member
+/// plus the prediction's band (prediction_band) and its calibrated level (calibrate_level).
+FamilyMember predict_family_member(const lumped::Recording& rec, const GreyboxFit& fit);
 
 /// Fits `model` (a grey-box name) jointly on `training` (joined, see join_recordings) so that its
 /// field-scaled parameters are linear functions of the current, then simulates every training

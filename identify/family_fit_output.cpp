@@ -12,6 +12,12 @@ namespace rheomag::identify {
 
 namespace {
 
+/// `value` of the member's calibrated level, null without one.
+template <class Value>
+nlohmann::json level_json(const FamilyMember& m, Value LevelCalibration::*value) {
+  return m.level ? nlohmann::json((*m.level).*value) : nlohmann::json();
+}
+
 nlohmann::json member_json(const FamilyMember& m) {
   return {{"file", m.csv_path},
           {"field", m.field},
@@ -22,14 +28,22 @@ nlohmann::json member_json(const FamilyMember& m) {
           {"band_rms", m.band ? nlohmann::json(m.band->rms) : nlohmann::json()},
           {"band_percent", m.band ? nlohmann::json(m.band->percent) : nlohmann::json()},
           {"repeatability_percent",
-           m.repeatability ? nlohmann::json(*m.repeatability) : nlohmann::json()}};
+           m.repeatability ? nlohmann::json(*m.repeatability) : nlohmann::json()},
+          {"level_fit_percent", level_json(m, &LevelCalibration::fit_percent)},
+          {"level_pure_fit_percent", level_json(m, &LevelCalibration::pure_fit_percent)},
+          {"level_gain", level_json(m, &LevelCalibration::gain)},
+          {"level_offset", level_json(m, &LevelCalibration::offset)},
+          {"level_window_s", level_json(m, &LevelCalibration::seconds)}};
 }
 
 void print_members(std::ostream& out, const char* title, const std::vector<FamilyMember>& members) {
   const bool banded = std::any_of(members.begin(), members.end(),
                                   [](const FamilyMember& m) { return m.band.has_value(); });
-  out << format_text("%s\n  %-40s %8s %8s %8s %6s%s\n", title, "recording", "field", "FIT%", "RE",
-                     "rep%", banded ? "  band% (1 sigma, parameters between recordings)" : "");
+  const bool levelled = std::any_of(members.begin(), members.end(),
+                                    [](const FamilyMember& m) { return m.level.has_value(); });
+  out << format_text("%s\n  %-40s %8s %8s %8s %6s%s%s\n", title, "recording", "field", "FIT%", "RE",
+                     "rep%", banded ? "  band%" : "",
+                     levelled ? "  after 1st cycle: FIT% pure -> 1 level (gain)" : "");
   for (const auto& m : members) {
     out << format_text("  %-40s %8.3g %8.1f %8.3f", m.csv_path.c_str(), m.field,
                        m.metrics.fit_percent, m.metrics.re);
@@ -37,7 +51,13 @@ void print_members(std::ostream& out, const char* title, const std::vector<Famil
       out << format_text(" %6.1f", *m.repeatability);
     else
       out << format_text(" %6s", "-");
-    if (m.band) out << format_text("  %5.1f", m.band->percent);
+    if (banded)
+      out << (m.band ? format_text("  %5.1f", m.band->percent) : format_text("  %5s", "-"));
+    if (m.level)
+      out << format_text("  %23.1f -> %5.1f (%.3f)", m.level->pure_fit_percent,
+                         m.level->fit_percent, m.level->gain);
+    else if (levelled)
+      out << format_text("  %23s", "-");
     out << format_text("%s\n",
                        m.mean_removed ? "  (mean removed: compared without the model's mean)" : "");
   }
@@ -60,6 +80,19 @@ void print_held_out_summary(std::ostream& out, const FamilyFit& r) {
       "held-out FIT: median %.1f %%, lowest %.1f %% (fitted on all: median %.1f %%, lowest "
       "%.1f %%)\n",
       median(held), held.front(), median(fitted), fitted.front());
+  std::vector<double> pure, levelled;
+  for (const FamilyMember& m : r.held_out)
+    if (m.level) {
+      pure.push_back(m.level->pure_fit_percent);
+      levelled.push_back(m.level->fit_percent);
+    }
+  if (pure.empty()) return;
+  std::sort(pure.begin(), pure.end());
+  std::sort(levelled.begin(), levelled.end());
+  out << format_text(
+      "held out, after the first cycle: median FIT %.1f %% pure, %.1f %% with one level per test "
+      "(lowest %.1f %% -> %.1f %%)\n",
+      median(pure), median(levelled), pure.front(), levelled.front());
 }
 
 }  // namespace
@@ -112,6 +145,11 @@ void write_family_fit_text(const FamilyFit& r, std::size_t recordings, int decim
       "rep%%: FIT of each recording's own mean cycle on its steady cycles, the most a model "
       "answering a periodic drive with a periodic output reaches there (- : drive not "
       "periodic)\n");
+  if (!r.predicted.empty() || !r.held_out.empty())
+    out << format_text(
+        "band%%: the prediction's 1-sigma band from the parameters' spread between recordings; "
+        "after 1st cycle: FIT on the samples after the first drive cycle of the prediction "
+        "itself and with one gain and offset fitted on that cycle (least squares)\n");
 }
 
 nlohmann::json family_fit_json(const FamilyFit& r, const lumped::RecordingMeta& meta,

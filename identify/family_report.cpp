@@ -177,7 +177,9 @@ std::string family_report_html(const FamilyFit& r, const std::vector<lumped::Rec
     << "</p>\n";
   o << "<h2>FIT per recording</h2>\n<table><tr><th>recording</th><th>role</th><th>field</th>"
        "<th>FIT %</th><th>RMSE %</th><th>RE</th><th>band % (1&sigma;, parameters between "
-       "recordings)</th><th>repeatability % (the recording's own mean cycle)</th></tr>\n";
+       "recordings)</th><th>repeatability % (the recording's own mean cycle)</th><th>FIT % after "
+       "the first cycle, pure</th><th>the same with one level (gain, offset on the first "
+       "cycle)</th></tr>\n";
   const auto rows = [&](const std::vector<FamilyMember>& members, const char* role) {
     for (const FamilyMember& m : members)
       o << "<tr><td>" << html_escape(m.csv_path) << "</td><td>" << role << "</td><td>"
@@ -186,6 +188,12 @@ std::string family_report_html(const FamilyFit& r, const std::vector<lumped::Rec
         << html_number(m.metrics.re, 3) << "</td><td>"
         << (m.band ? html_number(m.band->percent, 3) : std::string("&mdash;")) << "</td><td>"
         << (m.repeatability ? html_number(*m.repeatability, 3) : std::string("&mdash;"))
+        << "</td><td>"
+        << (m.level ? html_number(m.level->pure_fit_percent, 3) : std::string("&mdash;"))
+        << "</td><td>"
+        << (m.level ? html_number(m.level->fit_percent, 3) + " (gain " +
+                          html_number(m.level->gain, 3) + ")"
+                    : std::string("&mdash;"))
         << "</td></tr>\n";
   };
   rows(r.training, "fit");

@@ -276,6 +276,11 @@ void fit_data(const FitData& data, const GreyboxOptions& options, const std::str
   fit.setup.settings.output_scale = y_max;
   const bool periodic = std::any_of(data.series.begin(), data.series.end(),
                                     [](const lumped::DriveSeries& d) { return d.period > 0.0; });
+  const std::size_t n_params = lumped::pheno_params(kind).size();
+  if (!options.start.empty() && options.start.size() != n_params)
+    throw InputError(where + ": the start of the " + fit.model + " fit has " +
+                     std::to_string(options.start.size()) +
+                     " values; expected one per parameter (" + std::to_string(n_params) + ")");
   const ParamGuess guess = initial_guess(kind, all, range, fit.setup.orientation,
                                          !fit.setup.field_column.empty(), periodic);
   switch (kind) {  // free counts with and without a field input

@@ -21,7 +21,11 @@ namespace rheomag::identify {
 /// Options of a grey-box fit.
 struct GreyboxOptions {
   std::optional<lumped::SampleRange> train;  ///< samples to fit on; whole recording if empty
-  int starts = 4;           ///< multi-start: number of starting points (first = nominal)
+  int starts = 4;  ///< multi-start: number of starting points (first = nominal)
+  /// The first start's parameter values (SI, in the model's parameter order, clamped into the
+  /// bounds; held parameters keep their nominal value) instead of the nominal guess, e.g. a fit of
+  /// other recordings of the device; empty: the nominal guess. The other starts are unchanged.
+  std::vector<double> start;
   unsigned seed = 1;        ///< seed of the perturbed starting points
   int max_iterations = 60;  ///< Levenberg-Marquardt iterations per start
   int threads = 0;          ///< threads (0: one per core); same fit if starts >= it

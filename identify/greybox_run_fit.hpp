@@ -120,13 +120,16 @@ void run_fit(const FitData& data, const lumped::GreyboxSetup& setup, const Param
   for (int start = 0; start < starts; ++start) {
     for (int j = 0; j < NF; ++j) {
       const int k = free[j];
+      const double margin = 1e-6 * (guess.upper[k] - guess.lower[k]);
+      const auto inside = [&](double v) {
+        return std::clamp(v, guess.lower[k] + margin, guess.upper[k] - margin);
+      };
       double value = guess.nominal[k];
-      if (start > 0) {
-        value =
-            value != 0.0 ? value * std::exp(0.7 * normal(rng)) : 0.3 * guess.scale[k] * normal(rng);
-        const double margin = 1e-6 * (guess.upper[k] - guess.lower[k]);
-        value = std::clamp(value, guess.lower[k] + margin, guess.upper[k] - margin);
-      }
+      if (start == 0 && !options.start.empty())
+        value = inside(options.start[static_cast<std::size_t>(k)]);  // a given first start
+      if (start > 0)  // perturbed around the nominal guess
+        value = inside(value != 0.0 ? value * std::exp(0.7 * normal(rng))
+                                    : 0.3 * guess.scale[k] * normal(rng));
       thetas[static_cast<std::size_t>(start)][j] = value / guess.scale[k];
     }
   }

@@ -15,6 +15,7 @@
 
 #include "core/error.hpp"
 #include "identify/current_dependent_fit.hpp"
+#include "identify/family_cross_validation.hpp"
 #include "lumped/recording_io.hpp"
 
 using namespace rheomag::lumped;
@@ -118,8 +119,14 @@ TEST(CurrentDependent, LuGreRecoversParametersAndPredictsAThirdFrequency) {
 // FIT = 100 (1 - 0.1 / 1.1) = 90.91 % (tolerance 0.1 point: the fit's eps and motion scale come
 // from the five recordings' velocity rms, and the output is zero-mean over whole cycles only
 // after the start from rest). Fitted on all six, the scaled test pulls the fit its way, so its
-// own FIT is higher than held out (least squares). Each held-out row is exactly the prediction of
-// a family fitted without that recording (same starts and seed: 1e-9).
+// own FIT is higher than held out (least squares). With one level fitted on its first samples
+// (two cycles: no drive period from two upward crossings, so the first fifth), the held-out
+// prediction is the scaled test again: FIT above 99.8 % and gain 1.1 (0.5 %), against a pure FIT
+// of 90.91 % (0.2 point) on the same samples.
+// Each held-out row is exactly the prediction of a family fitted without that recording and
+// started from the fit of the half that does not hold it (one start, refit_iterations: 1e-9), or
+// from nominal for cold refits (same starts and seed: 1e-9), whatever the number of threads the
+// refits share (1 or 3: identical).
 TEST(CurrentDependent, CrossValidationPredictsEachRecordingFromTheOthers) {
   const std::vector<double> truth = {40.0, 260.0, 2.0, 1000.0, 90.0, 700.0, 0.4, 0.0};
   std::vector<Recording> training;
@@ -132,22 +139,65 @@ TEST(CurrentDependent, CrossValidationPredictsEachRecordingFromTheOthers) {
   FamilyFitOptions options;
   options.decimation = kDecimation;
   options.cross_validate = true;
+  options.greybox.threads = 1;
   const FamilyFit r = fit_current_dependent(training, "lugre", {}, options);
   ASSERT_EQ(r.held_out.size(), training.size());
   for (std::size_t k = 0; k < training.size(); ++k)
     EXPECT_EQ(r.held_out[k].csv_path, training[k].csv_path);
-  EXPECT_NEAR(r.held_out[scaled].metrics.fit_percent, 100.0 * (1.0 - 0.1 / 1.1), 0.1);
-  EXPECT_GT(r.training[scaled].metrics.fit_percent, r.held_out[scaled].metrics.fit_percent + 1.0);
-  ASSERT_TRUE(r.held_out[scaled].band.has_value());
+  const FamilyMember& held = r.held_out[scaled];
+  EXPECT_NEAR(held.metrics.fit_percent, 100.0 * (1.0 - 0.1 / 1.1), 0.1);
+  EXPECT_GT(r.training[scaled].metrics.fit_percent, held.metrics.fit_percent + 1.0);
+  ASSERT_TRUE(held.band.has_value());
+  ASSERT_TRUE(held.level.has_value());
+  EXPECT_EQ(held.level->samples, training[scaled].t.size() / 5);
+  EXPECT_GT(held.level->fit_percent, 99.8);
+  EXPECT_NEAR(held.level->gain, 1.1, 0.0055);
+  EXPECT_NEAR(held.level->pure_fit_percent, 100.0 * (1.0 - 0.1 / 1.1), 0.2);
+  EXPECT_FALSE(r.training[scaled].level.has_value());  // training rows are fitted, not predicted
 
+  // The halves: every field level (0, 0.5, 1 A) in each, and both frequencies (two tests a
+  // level: the first half 0.1 Hz at 0 and 1 A, 0.25 Hz at 0.5 A), in training order.
+  const std::vector<std::vector<Recording>> halves = cross_validation_halves(training, "lugre");
+  ASSERT_EQ(halves.size(), 2u);
+  ASSERT_EQ(halves[0].size(), 3u);
+  ASSERT_EQ(halves[1].size(), 3u);
+  EXPECT_EQ(halves[0][0].csv_path, training[0].csv_path);  // 0.1 Hz, 0 A
+  EXPECT_EQ(halves[0][1].csv_path, training[2].csv_path);  // 0.1 Hz, 1 A
+  EXPECT_EQ(halves[0][2].csv_path, training[4].csv_path);  // 0.25 Hz, 0.5 A
+  EXPECT_EQ(halves[1][0].csv_path, training[1].csv_path);  // 0.1 Hz, 0.5 A
+  EXPECT_EQ(halves[1][1].csv_path, training[3].csv_path);  // 0.25 Hz, 0 A
+  EXPECT_EQ(halves[1][2].csv_path, training[5].csv_path);  // 0.25 Hz, 1 A
+  const auto in_half = [&](const std::vector<Recording>& half) {
+    return std::any_of(half.begin(), half.end(),
+                       [&](const Recording& h) { return h.csv_path == training[scaled].csv_path; });
+  };
+  const std::vector<Recording>& other = in_half(halves[0]) ? halves[1] : halves[0];
+  ASSERT_FALSE(in_half(other));
+  GreyboxOptions direct = options.greybox;
+  for (const FittedParameter& p : fit_greybox_family(other, "lugre", direct, kDecimation).params)
+    direct.start.push_back(p.value);
+  direct.starts = 1;
+  direct.max_iterations = options.refit_iterations;
   std::vector<Recording> others = training;
   others.erase(others.begin() + static_cast<std::ptrdiff_t>(scaled));
-  options.cross_validate = false;
-  const FamilyFit without = fit_current_dependent(others, "lugre", {training[scaled]}, options);
-  EXPECT_NEAR(r.held_out[scaled].metrics.fit_percent, without.predicted[0].metrics.fit_percent,
-              1e-9);
+  const GreyboxFit without = fit_greybox_family(others, "lugre", direct, kDecimation);
+  EXPECT_NEAR(held.metrics.fit_percent,
+              evaluate_family_member(training[scaled], without).metrics.fit_percent, 1e-9);
 
-  options.cross_validate = true;
+  // Cold refits (refit_iterations 0): each from nominal with the main fit's starts, as an
+  // explicit fit without the recording.
+  options.refit_iterations = 0;
+  const FamilyFit cold = fit_current_dependent(training, "lugre", {}, options);
+  const GreyboxFit cold_without = fit_greybox_family(others, "lugre", options.greybox, kDecimation);
+  EXPECT_NEAR(cold.held_out[scaled].metrics.fit_percent,
+              evaluate_family_member(training[scaled], cold_without).metrics.fit_percent, 1e-9);
+  options.refit_iterations = FamilyFitOptions{}.refit_iterations;
+
+  options.greybox.threads = 3;
+  const FamilyFit shared = fit_current_dependent(training, "lugre", {}, options);
+  for (std::size_t k = 0; k < training.size(); ++k)
+    EXPECT_EQ(shared.held_out[k].metrics.fit_percent, r.held_out[k].metrics.fit_percent) << k;
+
   EXPECT_THROW(fit_current_dependent({training[0], training[1]}, "lugre", {}, options),
                rheomag::InputError);  // leaving one of two out leaves no family
 }

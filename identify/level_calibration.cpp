@@ -1,0 +1,61 @@
+// Gain and offset of a prediction fitted on a test's first cycle, scored on the rest
+// (level_calibration.hpp).
+
+#include "identify/level_calibration.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+#include "lumped/metrics.hpp"
+#include "lumped/output_smoothing.hpp"
+
+namespace rheomag::identify {
+
+std::optional<LevelCalibration> calibrate_level(const std::vector<double>& t,
+                                                const std::vector<double>& v,
+                                                const std::vector<double>& y,
+                                                const std::vector<double>& prediction) {
+  const std::size_t n = t.size();
+  if (n < 4 || v.size() != n || y.size() != n || prediction.size() != n) return std::nullopt;
+  const double period = lumped::drive_period(t, v);
+  std::size_t window = 0;
+  if (period > 0.0) {
+    // The samples before the one nearest to t[0] + period (the sampling need not divide it).
+    const double end = t.front() + period;
+    window = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), end) - t.begin());
+    if (window > 0 && (window == n || end - t[window - 1] < t[window] - end)) --window;
+  } else
+    window = static_cast<std::size_t>(kCalibrationFractionWithoutPeriod * static_cast<double>(n));
+  if (window < 2 || n - window < 2) return std::nullopt;
+  // Least squares y ~ gain x prediction + offset on the window.
+  double mp = 0.0, my = 0.0;
+  for (std::size_t i = 0; i < window; ++i) {
+    mp += prediction[i];
+    my += y[i];
+  }
+  mp /= static_cast<double>(window);
+  my /= static_cast<double>(window);
+  double spp = 0.0, spy = 0.0;
+  for (std::size_t i = 0; i < window; ++i) {
+    spp += (prediction[i] - mp) * (prediction[i] - mp);
+    spy += (prediction[i] - mp) * (y[i] - my);
+  }
+  if (!(spp > 0.0)) return std::nullopt;
+  LevelCalibration c;
+  c.samples = window;
+  c.seconds = t[window] - t.front();
+  c.gain = spy / spp;
+  c.offset = my - c.gain * mp;
+  std::vector<double> calibrated(prediction.begin() + static_cast<std::ptrdiff_t>(window),
+                                 prediction.end());
+  for (double& p : calibrated) p = c.gain * p + c.offset;
+  const std::span<const double> rest(y.data() + window, n - window);
+  c.fit_percent = lumped::compute_metrics(rest, calibrated).fit_percent;
+  c.pure_fit_percent =
+      lumped::compute_metrics(rest, std::span<const double>(prediction.data() + window, n - window))
+          .fit_percent;
+  return c;
+}
+
+}  // namespace rheomag::identify
