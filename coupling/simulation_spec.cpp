@@ -203,7 +203,8 @@ lumped::RigSpec read_rig(const toml::table& doc, const std::string& file) {
 
   TableReader effects(doc["effects"].as_table(), file, "effects");
   effects.only({"compressibility", "fluid_inertia", "magnetic_hysteresis", "eddy_currents",
-                "coil_inductance", "coil_heating", "mr_response_time", "friction"});
+                "coil_inductance", "coil_heating", "mr_response_time", "friction",
+                "fluid_heating"});
   auto effect = [&](const std::string& name) {
     return TableReader(effects.sub(name), file, "effects." + name);
   };
@@ -287,6 +288,16 @@ lumped::RigSpec read_rig(const toml::table& doc, const std::string& file) {
     th.ambient_c = e.within("ambient", valve::kCoilTemperature, 20.0,
                             "where the linear resistivity of copper holds");
     s.coil_heating = th;
+  }
+  if (auto e = effect("fluid_heating"); effect_on(e)) {
+    e.only({"enabled", "thermal_resistance", "thermal_time_constant", "viscosity_slope"});
+    lumped::FluidHeatingBlock h;
+    h.thermal_resistance = e.positive("thermal_resistance", h.thermal_resistance);
+    h.thermal_time_constant = e.positive("thermal_time_constant", h.thermal_time_constant);
+    h.viscosity_slope = e.number("viscosity_slope", h.viscosity_slope, 0.0);
+    if (s.kind == lumped::RigKind::coil_bench)
+      e.fail("enabled", "fluid_heating needs a rig with a valve (not a coil_bench)");
+    s.fluid_heating = h;
   }
   if (auto e = effect("mr_response_time"); effect_on(e)) {
     e.only({"enabled", "time_constant"});

@@ -55,18 +55,21 @@ double ValveMapBlock::yield(double current) const {
   return yield_scale * interpolate(yield_current, yield_pressure, i);
 }
 
-double ValveMapBlock::pressure_drop(double flow, double current) const {
+double ValveMapBlock::pressure_drop(double flow, double current, double viscous_factor) const {
   if (chain)
-    return chain_pressure_drop(*chain, flow, current, yield_scale, viscous_scale,
+    return chain_pressure_drop(*chain, flow, current, yield_scale, viscous_scale * viscous_factor,
                                regularisation_flow);
-  return yield(current) * smooth_sign(flow, regularisation_flow) + viscous_resistance * flow;
+  return yield(current) * smooth_sign(flow, regularisation_flow) +
+         viscous_factor * viscous_resistance * flow;
 }
 
-double ValveMapBlock::flow(double dp, double current) const {
+double ValveMapBlock::flow(double dp, double current, double viscous_factor) const {
   if (chain)
-    return chain_flow(*chain, dp, current, yield_scale, viscous_scale, regularisation_flow);
-  const double py = yield(current), width = viscous_resistance * regularisation_flow;
-  return (smooth_ramp(dp - py, width) - smooth_ramp(-dp - py, width)) / viscous_resistance;
+    return chain_flow(*chain, dp, current, yield_scale, viscous_scale * viscous_factor,
+                      regularisation_flow);
+  const double resistance = viscous_factor * viscous_resistance;
+  const double py = yield(current), width = resistance * regularisation_flow;
+  return (smooth_ramp(dp - py, width) - smooth_ramp(-dp - py, width)) / resistance;
 }
 
 double ChamberBlock::capacitance(double pressure) const {

@@ -2,6 +2,7 @@
 // Lumped blocks of the valve/damper chain, each a small set of named SI parameters with the
 // algebraic law or state derivative it contributes to x' = f(x, u, t), y = g(x, u).
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -44,6 +45,27 @@ struct ThermalBlock {
     const double capacitance = thermal_time_constant / thermal_resistance;
     return (power - (temperature_c - ambient_c) / thermal_resistance) / capacitance;
   }
+};
+
+/// Viscosity-temperature slope of MR fluids [1/K] near 40 degC: d ln(eta)/dT = -B / T^2 of an
+/// Andrade law with B = 1960 K (the value fluid/fluid_temperature states for MRF-132DG and
+/// MRC-C1L, an assumption of rheomag, docs/thermal.md) at T = 313 K.
+inline constexpr double kFluidViscosityTemperatureSlope = 0.02;
+
+/// Fluid heating in the valve or damper: the dissipated power P = dp Q (the valve's pressure drop
+/// times its flow) warms the fluid, C d(theta)/dt = P - theta / R_th, and its viscosity falls,
+/// eta / eta_0 = exp(-slope theta); the yield stress is left unchanged (its derating is ten
+/// times weaker: fluid/fluid_temperature).
+struct FluidHeatingBlock {
+  double thermal_resistance = 0.5;                           ///< [K/W] fluid to ambient
+  double thermal_time_constant = 600;                        ///< [s] R_th C_th
+  double viscosity_slope = kFluidViscosityTemperatureSlope;  ///< [1/K] -d ln(eta)/dT
+  /// d(theta)/dt [K/s] for dissipated power `power` [W] at temperature rise `rise` [K].
+  double rate(double power, double rise) const {
+    return (power * thermal_resistance - rise) / thermal_time_constant;
+  }
+  /// Viscosity over its value at the start, at temperature rise `rise` [K].
+  double viscous_factor(double rise) const { return std::exp(-viscosity_slope * rise); }
 };
 
 /// Duhem magnetic hysteresis of the coil (paper 004 eqs. 2-3):
@@ -96,11 +118,12 @@ struct ValveMapBlock {
   std::shared_ptr<const ChainMapTable> chain;  ///< chain map tabulated from case_file
   /// Yield pressure [Pa] at current i [A] (linear interpolation, clamped).
   double yield(double current) const;
-  /// Pressure drop [Pa] at flow Q [m^3/s] and current i [A].
-  double pressure_drop(double flow, double current) const;
+  /// Pressure drop [Pa] at flow Q [m^3/s] and current i [A], the viscous part times
+  /// `viscous_factor` (a warmer, thinner fluid: FluidHeatingBlock).
+  double pressure_drop(double flow, double current, double viscous_factor = 1.0) const;
   /// Flow [m^3/s] at pressure drop dp [Pa]: the smooth inverse ramp(dp - p_y) - ramp(-dp - p_y),
-  /// ramp width R * regularisation_flow (the plug switch regularised).
-  double flow(double pressure_drop, double current) const;
+  /// ramp width R * regularisation_flow (the plug switch regularised); viscous part as above.
+  double flow(double pressure_drop, double current, double viscous_factor = 1.0) const;
 };
 
 /// Chamber compliance: oil volume with bulk modulus plus entrained air (isothermal or adiabatic).

@@ -96,6 +96,7 @@ struct DriveInputs {
 struct RigSignals {
   double voltage = 0, current = 0, flux = 0, temperature = 20, field_current = 0;
   double valve_current = 0, flow_in = 0, flow = 0, pressure = 0, force = 0, velocity = 0;
+  double fluid_temperature_rise = 0;
 };
 
 /// The composed rig as an OdeSystem; state indices are assigned to the enabled blocks.
@@ -130,6 +131,7 @@ class RigSystem : public OdeSystem {
         i_p2_ = add(scale);
         if (spec.inertance) i_flow_ = add(1e-5);
       }
+      if (spec.fluid_heating) i_fluid_ = add(1.0);
     }
   }
   std::size_t state_size() const override { return scales_.size(); }
@@ -247,22 +249,29 @@ class RigSystem : public OdeSystem {
     const auto [velocity, acceleration] = in_.at(Drive::velocity, t);
     sig.velocity = velocity;
     sig.flow_in = s_.piston_area * velocity;
+    const double viscous = i_fluid_ >= 0 ? s_.fluid_heating->viscous_factor(x[i_fluid_]) : 1.0;
+    double valve_drop = 0.0;  // the valve's own pressure drop, whose dp Q heats the fluid
     if (!s_.compressibility) {
       sig.flow = sig.flow_in;
-      sig.pressure = s_.valve.pressure_drop(sig.flow, field);
+      sig.pressure = valve_drop = s_.valve.pressure_drop(sig.flow, field, viscous);
       if (s_.inertance) sig.pressure += *s_.inertance * s_.piston_area * acceleration;
     } else {
       const double p1 = s_.compressibility->pressure_at(x[i_p1_]);
       const double p2 = s_.compressibility->pressure_at(x[i_p2_]);
-      sig.pressure = p1 - p2;
+      sig.pressure = valve_drop = p1 - p2;
       if (i_flow_ >= 0) {
         sig.flow = x[i_flow_];
-        dxdt[i_flow_] = (sig.pressure - s_.valve.pressure_drop(sig.flow, field)) / *s_.inertance;
+        valve_drop = s_.valve.pressure_drop(sig.flow, field, viscous);
+        dxdt[i_flow_] = (sig.pressure - valve_drop) / *s_.inertance;
       } else {
-        sig.flow = s_.valve.flow(sig.pressure, field);
+        sig.flow = s_.valve.flow(sig.pressure, field, viscous);
       }
       dxdt[i_p1_] = sig.flow_in - sig.flow;
       dxdt[i_p2_] = sig.flow - sig.flow_in;
+    }
+    if (i_fluid_ >= 0) {
+      sig.fluid_temperature_rise = x[i_fluid_];
+      dxdt[i_fluid_] = s_.fluid_heating->rate(valve_drop * sig.flow, x[i_fluid_]);
     }
     sig.force = s_.piston_area * sig.pressure + s_.gas_force;
     if (s_.coulomb_force)
@@ -288,7 +297,7 @@ class RigSystem : public OdeSystem {
   const DriveInputs& in_;
   std::vector<double> scales_;
   int i_current_ = -1, i_flux_ = -1, i_integral_ = -1, i_temperature_ = -1, i_eddy_ = -1,
-      i_mr_ = -1, i_p1_ = -1, i_p2_ = -1, i_flow_ = -1;
+      i_mr_ = -1, i_p1_ = -1, i_p2_ = -1, i_flow_ = -1, i_fluid_ = -1;
 };
 
 /// Steps per sample interval of the fixed grid: spec.grid_substeps, and grid_edge_substeps where a
@@ -373,7 +382,7 @@ Recording simulate_rig(const RigSpec& spec_in, const Recording& drive) {
   for (const auto& c : rig_drive_columns(spec)) rec.columns[c] = drive.column(c);
   if (drive.columns.count("displacement") && spec.kind != RigKind::coil_bench)
     rec.columns["displacement"] = drive.column("displacement");
-  std::vector<double> current, voltage, flux, temp, flow, pressure, force;
+  std::vector<double> current, voltage, flux, temp, flow, pressure, force, fluid_rise;
   for (std::size_t k = 0; k < drive.t.size(); ++k) {
     RigSignals sig;
     system.evaluate(drive.t[k], states[k].data(), nullptr, sig);
@@ -384,6 +393,7 @@ Recording simulate_rig(const RigSpec& spec_in, const Recording& drive) {
     flow.push_back(sig.flow);
     pressure.push_back(sig.pressure);
     force.push_back(sig.force);
+    fluid_rise.push_back(sig.fluid_temperature_rise);
   }
   rec.columns["current"] = current;
   if (spec.driver_mode != DriverMode::current_source) {
@@ -396,6 +406,7 @@ Recording simulate_rig(const RigSpec& spec_in, const Recording& drive) {
     rec.columns["flow"] = flow;
     rec.columns["pressure"] = pressure;
     if (spec.kind == RigKind::damper) rec.columns["force"] = force;
+    if (spec.fluid_heating) rec.columns["fluid_temperature_rise"] = fluid_rise;
   }
   // Sensor noise, seeded.
   std::mt19937 rng(spec.noise_seed);

@@ -43,7 +43,9 @@ struct RigSpec {
   /// eddy_currents predicted from the valve's FE step responses: the lag's time constant at the
   /// current it is driven towards (takes the place of eddy_time_constant when set).
   std::optional<PredictedLag> predicted_eddy_lag;
-  std::optional<ThermalBlock> coil_heating;    ///< coil_heating
+  std::optional<ThermalBlock> coil_heating;  ///< coil_heating
+  std::optional<FluidHeatingBlock>
+      fluid_heating;                           ///< fluid_heating (column fluid_temperature_rise)
   std::optional<double> mr_response_time;      ///< mr_response_time [s]
   std::optional<double> coulomb_force;         ///< friction [N] (damper)
   double friction_velocity = 1e-3;             ///< [m/s] width of the friction tanh

@@ -136,5 +136,17 @@ TEST(Simulate, BadSpecsExitWith2) {
   } catch (const rheomag::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("viscous_resistance"), std::string::npos) << e.what();
   }
+  // A fluid heating with a negative resistance, or on a rig without a valve, names the key.
+  for (const std::string& text :
+       {std::string("[rig]\nkind = \"bypass_cylinder\"\n[valve]\nyield_current=[0,1]\n"
+                    "yield_pressure=[0,1e6]\n[effects.fluid_heating]\nthermal_resistance = -1\n"),
+        std::string("[rig]\nkind = \"coil_bench\"\n[effects.fluid_heating]\n")}) {
+    try {
+      read_simulation_spec(spec(text));
+      FAIL() << "accepted: " << text;
+    } catch (const rheomag::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("effects.fluid_heating"), std::string::npos) << e.what();
+    }
+  }
   fs::remove_all(dir);
 }

@@ -149,6 +149,34 @@ TEST(Blocks, CoilThermalSteadyState) {
   EXPECT_NEAR(r.column("temperature").back(), 20.0 + dT, 0.05);
 }
 
+// Fluid heating at a constant flow Q through a purely viscous valve (0 A, no yield), with no
+// cooling to speak of (C = 10 J/K, tau 1e7 s: theta / R_th is 1e-5 of the heating): C dtheta/dt = R_v e^(-b theta) Q^2, so
+// theta(t) = ln(1 + b k t) / b with k = R_th R_v Q^2 / tau. Tolerance 1e-4 of the rise
+// (integrator tol 1e-6); the pressure follows R_v e^(-b theta) Q to 1e-4.
+TEST(Blocks, FluidHeatingThinsTheViscousPart) {
+  RigSpec s = bypass_rig();
+  s.kind = RigKind::constant_velocity_pump;
+  FluidHeatingBlock heating;
+  heating.thermal_resistance = 1e6;
+  heating.thermal_time_constant = 1e7;
+  heating.viscosity_slope = 0.02;
+  s.fluid_heating = heating;
+  const double velocity = 0.02;
+  Recording d =
+      drive_with(60.0, 10.0, {"velocity=constant:value=0.02", "current=constant:value=0"});
+  Recording r = simulate_rig(s, d);
+  const double q = s.piston_area * velocity, rv = s.valve.viscous_resistance;
+  const double k = heating.thermal_resistance * rv * q * q / heating.thermal_time_constant;
+  const auto& rise = r.column("fluid_temperature_rise");
+  const auto& p = r.column("pressure");
+  for (std::size_t j = 0; j < r.t.size(); j += 50) {
+    const double exact = std::log1p(0.02 * k * r.t[j]) / 0.02;
+    EXPECT_NEAR(rise[j], exact, 1e-4 * rise.back()) << "t = " << r.t[j];
+    EXPECT_NEAR(p[j], rv * std::exp(-0.02 * exact) * q, 1e-4 * rv * q) << "t = " << r.t[j];
+  }
+  EXPECT_GT(rise.back(), 5.0);  // a rise that shows: the test checks the thinning, not noise
+}
+
 // Current-mode PI driver with a voltage limit tracks a current step (final error < 1e-4 A), and
 // the limit holds (|u| <= V_max).
 TEST(Blocks, PiDriverTracksCurrent) {
