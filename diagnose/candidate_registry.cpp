@@ -20,6 +20,7 @@ const Candidate& coil_heating();
 const Candidate& mr_response_time();
 const Candidate& friction();
 const Candidate& pre_yield();
+const Candidate& fluid_heating();
 }  // namespace candidates
 
 namespace {
@@ -40,7 +41,7 @@ const std::vector<Registration>& registry() {
       {&candidates::magnetic_hysteresis(), 6, 3}, {&candidates::eddy_currents(), 5, 2},
       {&candidates::coil_inductance(), 7, 4},     {&candidates::coil_heating(), 8, 0},
       {&candidates::mr_response_time(), 4, 1},    {&candidates::friction(), 9, 6},
-      {&candidates::pre_yield(), 2, 0},
+      {&candidates::pre_yield(), 2, 0},           {&candidates::fluid_heating(), 10, 0},
   };
   return r;
 }
