@@ -150,9 +150,9 @@ TEST(Blocks, CoilThermalSteadyState) {
 }
 
 // Fluid heating at a constant flow Q through a purely viscous valve (0 A, no yield), with no
-// cooling to speak of (C = 10 J/K, tau 1e7 s: theta / R_th is 1e-5 of the heating): C dtheta/dt = R_v e^(-b theta) Q^2, so
-// theta(t) = ln(1 + b k t) / b with k = R_th R_v Q^2 / tau. Tolerance 1e-4 of the rise
-// (integrator tol 1e-6); the pressure follows R_v e^(-b theta) Q to 1e-4.
+// cooling to speak of (C = 10 J/K, tau 1e7 s: theta / R_th is 1e-5 of the heating): C dtheta/dt =
+// R_v e^(-b theta) Q^2, so theta(t) = ln(1 + b k t) / b with k = R_th R_v Q^2 / tau. Tolerance 1e-4
+// of the rise (integrator tol 1e-6); the pressure follows R_v e^(-b theta) Q to 1e-4.
 TEST(Blocks, FluidHeatingThinsTheViscousPart) {
   RigSpec s = bypass_rig();
   s.kind = RigKind::constant_velocity_pump;
