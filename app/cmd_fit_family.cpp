@@ -36,7 +36,29 @@ struct FamilyOptions {
   bool quiet = false;
   bool cross_validate = false;
   std::string report;
+  std::string viscosity_nuisance;  ///< "LO:HI" or empty
 };
+
+/// The --viscosity-nuisance bounds "LO:HI" (0 < LO <= 1 <= HI <= 100).
+ViscosityNuisance parse_viscosity_nuisance(const std::string& text) {
+  ViscosityNuisance n;
+  const auto colon = text.find(':');
+  std::size_t used_lo = 0, used_hi = 0;
+  try {
+    if (colon == std::string::npos) throw std::invalid_argument(text);
+    n.lower = std::stod(text.substr(0, colon), &used_lo);
+    n.upper = std::stod(text.substr(colon + 1), &used_hi);
+  } catch (const std::exception&) {
+    used_lo = 0;
+  }
+  if (used_lo == 0 || used_lo != colon || used_hi != text.size() - colon - 1 || !(n.lower > 0.0) ||
+      !(n.lower <= 1.0) || !(n.upper >= 1.0) || !(n.upper <= 100.0))
+    throw rheomag::InputError(
+        "--viscosity-nuisance: expected LO:HI with 0 < LO <= 1 <= HI <= 100 (bounds of each "
+        "recording's viscosity factor, e.g. 0.5:2), got \"" +
+        text + "\"");
+  return n;
+}
 
 std::string model_list() {
   std::string names;
@@ -61,6 +83,8 @@ void run_fit_family(const FamilyOptions& o) {
   options.greybox.threads = o.threads;
   options.cross_validate = o.cross_validate;
   options.refit_iterations = o.refit_iterations;
+  if (!o.viscosity_nuisance.empty())
+    options.viscosity_nuisance = parse_viscosity_nuisance(o.viscosity_nuisance);
   if (!o.quiet) options.greybox.progress = rheomag::app::progress_lines("fit-family", std::cerr);
   const FamilyFit r = fit_current_dependent(training, o.model, prediction, options);
   if (!o.report.empty()) write_family_report(o.report, r, training, prediction);
@@ -110,7 +134,8 @@ const bool fit_family_registered = rheomag::app::register_command([](CLI::App& r
                 "docs/fit-model-json.md), params, train and prediction (arrays of {file, "
                 "field, fit_percent, rmse_percent, re, mean_removed, band_rms, band_percent, "
                 "repeatability_percent, level_fit_percent, level_pure_fit_percent, level_gain, "
-                "level_offset, level_window_s}), "
+                "level_offset, level_window_s, viscosity_factor, "
+                "viscosity_temperature_offset_k}), "
                 "held_out (the same, with --cross-validate), mode");
   cmd->add_flag("--cross-validate", o->cross_validate,
                 "Also refit once without each training recording and predict it (leave one "
@@ -123,6 +148,14 @@ const bool fit_family_registered = rheomag::app::register_command([](CLI::App& r
                   "nominal start with --starts (the slower cold refits)")
       ->capture_default_str()
       ->check(rheomag::app::in_domain(rheomag::Domain::between(0, 1000).whole()));
+  cmd->add_option("--viscosity-nuisance", o->viscosity_nuisance,
+                  "LO:HI: let each training recording's viscosity factor float within [LO, HI] "
+                  "(e.g. 0.5:2), a fitted nuisance for a fluid temperature that was not recorded: "
+                  "the viscous terms of that recording are scaled by it, alternately with the "
+                  "joint fit (two rounds); reported per recording with the temperature it stands "
+                  "for at 2 %/K (JSON viscosity_factor, viscosity_temperature_offset_k). Predicted "
+                  "recordings are run at factor 1 (docs/thermal.md)")
+      ->check(rheomag::app::non_empty());
   cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr");
   cmd->callback([o]() { run_fit_family(*o); });
 });

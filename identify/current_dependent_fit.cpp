@@ -137,6 +137,35 @@ lumped::Recording join_recordings(const std::vector<lumped::Recording>& recs, in
   return joined;
 }
 
+namespace {
+
+/// Alternates the per-recording viscosity factors (each fitted with the shared parameters held)
+/// and the joint fit (the factors held, started from the last fit) for the nuisance's rounds;
+/// updates `fit` and returns the factors it was fitted with (geometric mean 1).
+std::vector<double> fit_with_viscosity_factors(const std::vector<lumped::Recording>& training,
+                                               const FamilyFitOptions& options, GreyboxFit& fit) {
+  const ViscosityNuisance& nuisance = *options.viscosity_nuisance;
+  std::vector<double> factors(training.size(), 1.0);
+  for (int round = 0; round < nuisance.rounds; ++round) {
+    for (std::size_t r = 0; r < training.size(); ++r)
+      factors[r] =
+          fit_viscosity_factor(training[r], with_viscosity_factor(fit, factors[r]), nuisance) *
+          factors[r];
+    // Keep the factors inside their bounds after centring: clamp, centre, clamp again.
+    centre_viscosity_factors(factors, fit);
+    for (double& f : factors) f = std::clamp(f, nuisance.lower, nuisance.upper);
+    GreyboxOptions refit = options.greybox;
+    refit.viscous_factors = factors;
+    refit.start.clear();
+    for (const auto& p : fit.params) refit.start.push_back(p.value);
+    refit.starts = 1;
+    fit = fit_greybox_family(training, fit.model, refit, options.decimation);
+  }
+  return factors;
+}
+
+}  // namespace
+
 FamilyFit fit_current_dependent(const std::vector<lumped::Recording>& training,
                                 const std::string& model,
                                 const std::vector<lumped::Recording>& prediction,
@@ -146,6 +175,8 @@ FamilyFit fit_current_dependent(const std::vector<lumped::Recording>& training,
   FamilyFit out;
   const auto start = std::chrono::steady_clock::now();
   out.fit = fit_greybox_family(training, model, options.greybox, options.decimation);
+  std::vector<double> factors;
+  if (options.viscosity_nuisance) factors = fit_with_viscosity_factors(training, options, out.fit);
   // Each recording simulated at its full rate with the fitted parameters.
   const std::size_t members = training.size() + prediction.size();
   const auto evaluate = [&](const lumped::Recording& r, std::vector<FamilyMember>& into) {
@@ -159,7 +190,15 @@ FamilyFit fit_current_dependent(const std::vector<lumped::Recording>& training,
     e.elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     options.greybox.progress(e);
   };
-  for (const lumped::Recording& r : training) evaluate(r, out.training);
+  for (std::size_t r = 0; r < training.size(); ++r) {
+    if (factors.empty()) {
+      evaluate(training[r], out.training);
+      continue;
+    }
+    out.training.push_back(
+        evaluate_family_member(training[r], with_viscosity_factor(out.fit, factors[r])));
+    out.training.back().viscosity_factor = factors[r];
+  }
   for (const lumped::Recording& r : prediction) evaluate(r, out.predicted);
   if (options.cross_validate) out.held_out = cross_validate_family(training, model, options);
   return out;

@@ -4,12 +4,14 @@
 // fitted jointly on recordings at several currents and frequencies, then used to predict other
 // recordings (e.g. another frequency), with per-recording metrics (RE of paper 001 eq. 10).
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "identify/greybox.hpp"
 #include "identify/level_calibration.hpp"
 #include "identify/prediction_band.hpp"
+#include "identify/viscosity_nuisance.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording.hpp"
 
@@ -25,6 +27,9 @@ struct FamilyFitOptions {
   /// the fit of the half of the recordings without the held-out one; 0: every refit from the
   /// nominal start with the greybox options' starts and iterations (the cold refits of before).
   int refit_iterations = 10;
+  /// Let each training recording's viscosity factor float within these bounds (a fitted
+  /// nuisance for an unrecorded fluid temperature, identify/viscosity_nuisance.hpp); empty: off.
+  std::optional<ViscosityNuisance> viscosity_nuisance;
 };
 
 /// Metrics of the fitted model on one recording of the family (free run, full rate).
@@ -45,6 +50,9 @@ struct FamilyMember {
   /// the recording's first cycle and scored on the rest (calibrate_level); empty for the training
   /// recordings or where no calibration window exists.
   std::optional<LevelCalibration> level;
+  /// Training recordings under FamilyFitOptions::viscosity_nuisance: the recording's fitted
+  /// viscosity factor (geometric mean 1 over the training recordings); empty otherwise.
+  std::optional<double> viscosity_factor;
   std::vector<double> simulated;  ///< free-run model output at the recording's samples
 };
 

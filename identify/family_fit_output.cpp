@@ -33,7 +33,12 @@ nlohmann::json member_json(const FamilyMember& m) {
           {"level_pure_fit_percent", level_json(m, &LevelCalibration::pure_fit_percent)},
           {"level_gain", level_json(m, &LevelCalibration::gain)},
           {"level_offset", level_json(m, &LevelCalibration::offset)},
-          {"level_window_s", level_json(m, &LevelCalibration::seconds)}};
+          {"level_window_s", level_json(m, &LevelCalibration::seconds)},
+          {"viscosity_factor",
+           m.viscosity_factor ? nlohmann::json(*m.viscosity_factor) : nlohmann::json()},
+          {"viscosity_temperature_offset_k",
+           m.viscosity_factor ? nlohmann::json(viscosity_temperature_offset(*m.viscosity_factor))
+                              : nlohmann::json()}};
 }
 
 void print_members(std::ostream& out, const char* title, const std::vector<FamilyMember>& members) {
@@ -41,9 +46,13 @@ void print_members(std::ostream& out, const char* title, const std::vector<Famil
                                   [](const FamilyMember& m) { return m.band.has_value(); });
   const bool levelled = std::any_of(members.begin(), members.end(),
                                     [](const FamilyMember& m) { return m.level.has_value(); });
-  out << format_text("%s\n  %-40s %8s %8s %8s %6s%s%s\n", title, "recording", "field", "FIT%", "RE",
-                     "rep%", banded ? "  band%" : "",
-                     levelled ? "  after 1st cycle: FIT% pure -> 1 level (gain)" : "");
+  const bool factored = std::any_of(members.begin(), members.end(), [](const FamilyMember& m) {
+    return m.viscosity_factor.has_value();
+  });
+  out << format_text("%s\n  %-40s %8s %8s %8s %6s%s%s%s\n", title, "recording", "field", "FIT%",
+                     "RE", "rep%", banded ? "  band%" : "",
+                     levelled ? "  after 1st cycle: FIT% pure -> 1 level (gain)" : "",
+                     factored ? "  viscosity factor (fitted nuisance; K warmer at 2 %/K)" : "");
   for (const auto& m : members) {
     out << format_text("  %-40s %8.3g %8.1f %8.3f", m.csv_path.c_str(), m.field,
                        m.metrics.fit_percent, m.metrics.re);
@@ -58,6 +67,9 @@ void print_members(std::ostream& out, const char* title, const std::vector<Famil
                          m.level->fit_percent, m.level->gain);
     else if (levelled)
       out << format_text("  %23s", "-");
+    if (m.viscosity_factor)
+      out << format_text("  %6.3f (%+.1f K)", *m.viscosity_factor,
+                         viscosity_temperature_offset(*m.viscosity_factor));
     out << format_text("%s\n",
                        m.mean_removed ? "  (mean removed: compared without the model's mean)" : "");
   }

@@ -435,6 +435,10 @@ GreyboxFit fit_greybox_family(const std::vector<lumped::Recording>& recs, const 
     data.y_scales.push_back(std::sqrt(ss));
     data.series.push_back(std::move(d));
   }
+  if (!options.viscous_factors.empty() && options.viscous_factors.size() != recs.size())
+    throw InputError("grey-box family fit: " + std::to_string(options.viscous_factors.size()) +
+                     " viscosity factors for " + std::to_string(recs.size()) + " recordings");
+  data.viscous_factors = options.viscous_factors;
   fit_data(data, options, recs.front().csv_path, fit);
   centre_unidentified_offset(data, fit, options.max_substep);
   fit.train_range = lumped::SampleRange{0, 0};

@@ -33,6 +33,9 @@ struct GreyboxOptions {
   double exponential_step = 5e-3;  ///< [s] largest step of the damper model's integrator
   double bouc_wen_step = 1e-3;     ///< [s] largest step of the Bouc-Wen model's integrator
   double eps_fraction = 1e-3;      ///< sign/|.| regularisation width as a fraction of rms motion
+  /// Family fits: each recording's factor on the viscosity-scaled parameters
+  /// (scales_with_viscosity), held during the fit; empty: 1 for every recording.
+  std::vector<double> viscous_factors;
   /// Reports the fit's Levenberg-Marquardt iterations (summed over the starts, out of the bound
   /// starts x max_iterations); may be called from several threads at once.
   ProgressCallback progress;

@@ -23,6 +23,7 @@ struct FitData {
   std::vector<lumped::DriveSeries> series;
   std::vector<lumped::SampleRange> ranges;
   std::vector<double> y_scales;
+  std::vector<double> viscous_factors;  ///< per series (GreyboxOptions); empty: 1
 };
 
 /// The unit of a parameter: its pattern with Y (output), M (motion), X (position) and U (field)

@@ -19,6 +19,7 @@
 #include "identify/greybox_fit_data.hpp"
 #include "identify/multistart_fit.hpp"
 #include "identify/standard_errors.hpp"
+#include "identify/viscosity_nuisance.hpp"
 #include "lumped/pheno_free_run.hpp"
 
 namespace rheomag::identify::greybox_detail {
@@ -38,12 +39,16 @@ struct FitResidual {
   double orientation;
   double y_scale;
   double max_substep;
+  double viscous_factor = 1.0;    ///< this series' factor on the viscosity-scaled parameters
+  std::array<bool, N> viscous{};  ///< which parameters it scales
 
   template <class T>
   bool operator()(const T* theta, T* residual) const {
     std::array<T, N> p;
     for (int k = 0; k < N; ++k) p[k] = T(held[k] * scale[k]);
     for (int j = 0; j < NF; ++j) p[free_index[j]] = theta[j] * scale[free_index[j]];
+    for (int k = 0; k < N; ++k)
+      if (viscous[k]) p[k] *= viscous_factor;
     std::vector<T> yhat(range.size());
     if (!lumped::simulate_rk4(kind, p.data(), *d, settings, range.begin, range.end, max_substep,
                               yhat.data()))
@@ -107,7 +112,9 @@ void run_fit(const FitData& data, const lumped::GreyboxSetup& setup, const Param
     for (int k = 0; k < N; ++k) {
       functor.scale[k] = guess.scale[k];
       functor.held[k] = guess.nominal[k] / guess.scale[k];
+      functor.viscous[k] = scales_with_viscosity(setup.kind, static_cast<std::size_t>(k));
     }
+    if (!data.viscous_factors.empty()) functor.viscous_factor = data.viscous_factors[r];
     functors.push_back(functor);
   }
 

@@ -120,6 +120,21 @@ TEST(FitFamilyCli, RejectsAnUnknownModelListingTheKnownOnes) {
   fs::remove_all(dir);
 }
 
+// --viscosity-nuisance takes LO:HI with 0 < LO <= 1 <= HI <= 100; anything else exits 2 naming
+// the option and what it expects, before any fit.
+TEST(FitFamilyCli, RejectsBadViscosityNuisanceBounds) {
+  const fs::path dir = fresh_dir("nuisance");
+  const std::string a = write_recording_at(dir, "a.csv", 0.0);
+  const std::string b = write_recording_at(dir, "b.csv", 1.0);
+  for (const char* bounds : {"0.5", "2:3", "0:2", "0.5:x", "0.5:2:3", "-1:2"}) {
+    const CliRun r =
+        run_fit_family(a + " " + b + " --model bingham --viscosity-nuisance " + bounds);
+    EXPECT_EQ(r.code, 2) << bounds;
+    EXPECT_NE(r.err.find("--viscosity-nuisance: expected LO:HI"), std::string::npos) << r.err;
+  }
+  fs::remove_all(dir);
+}
+
 // --cross-validate: three noise-free recordings of one Bingham truth (0, 0.5, 1 A; the field
 // terms are linear in the current), so each held out is predicted by the other two exactly up to
 // the fit's tolerance (reference: the truth, FIT >= 99 %); with two recordings at 0 A and one at
