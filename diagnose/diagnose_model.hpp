@@ -187,6 +187,11 @@ class DiagnosisModel {
   const std::map<std::string, double>& drive_noise() const { return drive_noise_; }
   /// [Hz] -3 dB bandwidth of the filter applied to a noisy velocity (0: used as recorded).
   double velocity_filter_bandwidth() const { return velocity_filter_bandwidth_; }
+  /// The noisy measured coil current's path (current_path.hpp) that drives the states which
+  /// remember it (Candidate::follows_current_path); empty when the current is clean.
+  const std::vector<double>& current_path() const { return current_path_; }
+  /// [A] Smallest swing of the measured current taken as a reversal (0: clean current).
+  double current_reversal_band() const { return current_reversal_band_; }
 
  private:
   lumped::Recording rec_;
@@ -213,6 +218,13 @@ class DiagnosisModel {
   double model_sign_ = 1.0;   ///< fitted baseline: sign of its output's correlation with velocity
   std::vector<BaselineItem> includes_;
   std::map<std::string, double> drive_noise_;
+  std::vector<double> current_path_;    ///< see current_path()
+  double current_reversal_band_ = 0.0;  ///< see current_reversal_band()
+  /// Estimates the path of a noisy coil current (current_path.hpp) for current_path().
+  void noisy_current_path();
+  /// The recording the rig of `effects` is driven by: the current replaced by its path when
+  /// one of them follows it and the current is noisy.
+  lumped::Recording drives_for(const std::vector<const Candidate*>& effects) const;
   /// Standard deviation of `y` about its mean (floored at 1e-300).
   static double spread(const std::vector<double>& y);
   /// Builds the baseline from a fitted model (diagnose_fitted_baseline.cpp).
