@@ -82,10 +82,15 @@ TEST(CurrentPath, NoisyStepsKeepTheirReversalsAndEdges) {
     }
 }
 
+/// One recording of the proof and the Duhem field concealed in it (when `hysteresis`).
+struct NoisyCurrentRecording {
+  rheomag::test::VirtualRecording v;
+  double a = 0.0, d = 0.0;
+};
+
 /// One recording of the proof: truth simulated on the clean current, then the current measured
 /// with white noise of `fraction` of its range.
-rheomag::test::VirtualRecording noisy_current_recording(bool hysteresis, double fraction,
-                                                        unsigned seed) {
+NoisyCurrentRecording noisy_current_recording(bool hysteresis, double fraction, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   auto truth = rheomag::test::bypass_rig();
@@ -97,28 +102,41 @@ rheomag::test::VirtualRecording noisy_current_recording(bool hysteresis, double 
       rheomag::test::drive(2.4, 300.0,
                            {"displacement=sine:amplitude=0.025,frequency=" + std::to_string(f),
                             "current=steps:levels=0/0.5/1/0.5,period=0.25"});
-  auto v = rheomag::test::make_recording(truth, in, 3e4, seed);
+  NoisyCurrentRecording out{rheomag::test::make_recording(truth, in, 3e4, seed), a, d};
   std::normal_distribution<double> noise(0.0, fraction * 1.0);
-  for (double& i : v.noisy.columns.at("current")) i += noise(rng);
-  return v;
+  for (double& i : out.v.noisy.columns.at("current")) i += noise(rng);
+  return out;
 }
 
-bool names(const rheomag::diagnose::Diagnosis& d, const std::string& effect) {
+double param(const rheomag::diagnose::Finding& f, const std::string& name) {
+  for (std::size_t j = 0; j < f.param_names.size(); ++j)
+    if (f.param_names[j] == name) return f.params[j];
+  ADD_FAILURE() << "no parameter " << name << " in " << f.effect->name();
+  return 0.0;
+}
+
+/// The finding of `effect` in `d` (nullptr if not named).
+const rheomag::diagnose::Finding* named(const rheomag::diagnose::Diagnosis& d,
+                                        const std::string& effect) {
   for (const auto& f : d.findings)
-    if (f.effect->name() == effect) return true;
-  return false;
+    if (f.effect->name() == effect) return &f;
+  return nullptr;
 }
 
-// The proof: 3 noise levels x 3 seeds, each with and without a concealed Duhem field.
+// The proof: 3 noise levels x 3 seeds, each with and without a concealed Duhem field. A named
+// field's loop half width (1 - d)/a is within 20 % of the truth (the tolerance of
+// DiagnoseHysteresis; on these drives a and d trade along the half width: seed 13 is fitted
+// a = 4.0-4.2 /A, d = 0.62-0.65 against 5.3 /A, 0.53 at every noise level, half width within 1 %).
 // RHEOMAG_NOISY_CURRENT_DIR=DIR also writes the recordings there (CSV + sidecar), so that another
 // build can diagnose the very same recordings (docs/diagnosis.md, "Noisy drives").
 TEST(DiagnoseNoisyCurrent, HysteresisNamedAndNotInventedUnderCurrentNoise) {
   const char* dir = std::getenv("RHEOMAG_NOISY_CURRENT_DIR");
-  int with = 0, named = 0, without = 0, false_findings = 0;
+  int with = 0, hits = 0, without = 0, false_findings = 0;
   for (double fraction : {0.001, 0.003, 0.005})
     for (unsigned seed : {11u, 12u, 13u})
       for (bool hysteresis : {true, false}) {
-        const auto v = noisy_current_recording(hysteresis, fraction, seed);
+        const auto r = noisy_current_recording(hysteresis, fraction, seed);
+        const auto& v = r.v;
         if (dir) {
           std::filesystem::create_directories(dir);
           const std::string name = std::string(dir) + "/" + (hysteresis ? "duhem" : "clean") + "_" +
@@ -128,20 +146,44 @@ TEST(DiagnoseNoisyCurrent, HysteresisNamedAndNotInventedUnderCurrentNoise) {
         }
         const auto d = rheomag::test::run_diagnosis(v.noisy);
         std::cout << (hysteresis ? "duhem" : "clean") << " noise " << 100 * fraction << " % seed "
-                  << seed << ": final FIT " << d.final_fit_percent << "\n";
+                  << seed << " (truth a " << r.a << " d " << r.d << "): final FIT "
+                  << d.final_fit_percent << ", noise ceiling " << v.noise_ceiling << "\n";
         rheomag::test::print_findings(d);
+        const auto* f = named(d, "magnetic_hysteresis");
         if (hysteresis) {
           ++with;
-          named += names(d, "magnetic_hysteresis");
+          if (!f) continue;
+          ++hits;
+          const double width = (1.0 - param(*f, "d")) / param(*f, "a");
+          EXPECT_NEAR(width / ((1.0 - r.d) / r.a), 1.0, 0.2)
+              << "seed " << seed << " noise " << fraction;
         } else {
           ++without;
-          false_findings += names(d, "magnetic_hysteresis");
+          false_findings += f != nullptr;
         }
       }
-  std::cout << "hysteresis named " << named << "/" << with << ", false " << false_findings << "/"
+  std::cout << "hysteresis named " << hits << "/" << with << ", false " << false_findings << "/"
             << without << "\n";
-  EXPECT_GE(named, static_cast<int>(std::ceil(0.9 * with)));
+  EXPECT_GE(hits, static_cast<int>(std::ceil(0.9 * with)));
   EXPECT_EQ(false_findings, 0);
+}
+
+// A real recording (UTFSM damper, 25 mm at 0.5 Hz and 1 A, docs/diagnosis.md "Real recordings")
+// whose current column is the set-point, measured here with white noise of 0.5 % of it: no loop
+// may be invented from the noise (a constant current's path is its mean). Reference: the
+// recording itself; the same diagnosis without the noise names no magnetic_hysteresis either.
+TEST(DiagnoseNoisyCurrent, NoHysteresisInventedOnARealDamperWithANoisyCurrent) {
+  const std::string csv = std::string(RHEOMAG_SHARED_DIR) + "/data/utfsm/25mm0x5Hz1A.csv";
+  if (!std::filesystem::exists(csv)) GTEST_SKIP() << csv << " not present";
+  auto rec = rheomag::lumped::read_csv_samples(csv);
+  rec.meta = rheomag::lumped::read_sidecar(std::string(RHEOMAG_SOURCE_DIR) +
+                                           "/tests/data/diagnosis/utfsm_damper.toml");
+  std::mt19937 rng(5);
+  std::normal_distribution<double> noise(0.0, 0.005);
+  for (double& i : rec.columns.at("current")) i += noise(rng);
+  const auto d = rheomag::test::run_diagnosis(rec);
+  rheomag::test::print_findings(d);
+  EXPECT_EQ(named(d, "magnetic_hysteresis"), nullptr);
 }
 
 }  // namespace
