@@ -45,8 +45,8 @@ bool steps(const std::vector<double>& u) {
 }  // namespace
 
 DiagnosisModel::DiagnosisModel(const lumped::Recording& rec, const ModelBaseline* fitted,
-                               DriveSampling sampling)
-    : rec_(rec) {
+                               DriveSampling sampling, bool current_path)
+    : rec_(rec), current_path_wanted_(current_path) {
   if (fitted) {
     from_fitted_model(*fitted);
     return;
@@ -222,7 +222,7 @@ void DiagnosisModel::noisy_current_path() {
   const std::string column = fitted_ ? field_column_ : std::string("current");
   const bool current = fitted_ ? column == "current" || column == "current_cmd"
                                : base_.driver_mode == DriverMode::current_source;
-  if (constant_field_ || !current || !rec_.columns.count(column)) return;
+  if (!current_path_wanted_ || constant_field_ || !current || !rec_.columns.count(column)) return;
   const auto& i = rec_.column(column);
   const auto [lo, hi] = std::minmax_element(i.begin(), i.end());
   const double sigma = noise_sigma(i);

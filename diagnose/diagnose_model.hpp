@@ -94,8 +94,9 @@ class DiagnosisModel {
   /// or other drive/output columns than the recording.
   /// With `sampling` held, the coil drive column is a zero-order hold and the motion columns
   /// are read half a sample later (a sidecar rig with a coil drive only; ignored otherwise).
+  /// `current_path` false: no path estimate of a noisy current (current_path() stays empty).
   explicit DiagnosisModel(const lumped::Recording& rec, const ModelBaseline* fitted = nullptr,
-                          DriveSampling sampling = DriveSampling::linear);
+                          DriveSampling sampling = DriveSampling::linear, bool current_path = true);
 
   /// True when the stated chambers' oil compliance is not negligible (its viscous lag or the
   /// plug's swing between yields at a flow reversal is a tenth of a sample or more), so that the
@@ -190,6 +191,8 @@ class DiagnosisModel {
   /// The noisy measured coil current's path (current_path.hpp) that drives the states which
   /// remember it (Candidate::follows_current_path); empty when the current is clean.
   const std::vector<double>& current_path() const { return current_path_; }
+  /// True unless the model was built without the path estimate (DiagnoseOptions::current_path).
+  bool current_path_wanted() const { return current_path_wanted_; }
   /// [A] Smallest swing of the measured current taken as a reversal (0: clean current).
   double current_reversal_band() const { return current_reversal_band_; }
 
@@ -218,6 +221,7 @@ class DiagnosisModel {
   double model_sign_ = 1.0;   ///< fitted baseline: sign of its output's correlation with velocity
   std::vector<BaselineItem> includes_;
   std::map<std::string, double> drive_noise_;
+  bool current_path_wanted_ = true;     ///< see current_path_wanted()
   std::vector<double> current_path_;    ///< see current_path()
   double current_reversal_band_ = 0.0;  ///< see current_reversal_band()
   /// Estimates the path of a noisy coil current (current_path.hpp) for current_path().

@@ -44,6 +44,9 @@ struct DiagnoseOptions {
   /// Start the fluid_inertia candidate also at the inertances the residual's ringing gives
   /// (diagnose_ringing.hpp) besides its decade grid; false: the grid alone (for comparison).
   bool ringing_start = true;
+  /// Drive the states that remember the current's path (the Duhem candidate) by a noisy
+  /// current's path estimate (current_path.hpp); false: by its samples (for comparison).
+  bool current_path = true;
   /// A fitted model as the baseline instead of the sidecar's rig (`--baseline MODEL.json`).
   std::optional<ModelBaseline> baseline_model;
 };
