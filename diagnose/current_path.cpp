@@ -12,7 +12,7 @@ namespace {
 
 /// Turning points of `x`: the extremes after which it swings back by more than `band` (a
 /// zigzag). `rising` is the direction of the first run (from sample 0 to the first turn);
-/// false with no turn and no swing beyond the band at all is told by `swings`.
+/// `swings` is false when `x` never moves by more than `band` at all.
 struct Turns {
   std::vector<std::size_t> at;
   bool rising = true;

@@ -231,12 +231,14 @@ void DiagnosisModel::noisy_current_path() {
   current_path_ = diagnose::current_path(i, current_reversal_band_);
 }
 
-lumped::Recording DiagnosisModel::drives_for(const std::vector<const Candidate*>& effects) const {
-  lumped::Recording r = rec_;
+lumped::Recording DiagnosisModel::simulate(const std::vector<const Candidate*>& effects,
+                                           const std::vector<double>& values) const {
   const bool follows = std::any_of(effects.begin(), effects.end(),
                                    [](const Candidate* e) { return e->follows_current_path(); });
-  if (follows && !current_path_.empty()) r.columns["current"] = current_path_;
-  return r;
+  if (!follows || current_path_.empty()) return lumped::simulate_rig(spec(effects, values), rec_);
+  lumped::Recording r = rec_;
+  r.columns["current"] = current_path_;
+  return lumped::simulate_rig(spec(effects, values), r);
 }
 
 DiagnosisModel DiagnosisModel::held() const {
@@ -499,7 +501,7 @@ double DiagnosisModel::best_delay(const std::vector<double>& undelayed, std::vec
 std::vector<double> DiagnosisModel::predict(const std::vector<const Candidate*>& effects,
                                             const std::vector<double>& values) const {
   if (fitted_) return delayed(predict_fitted(effects, values), values);
-  auto sim = lumped::simulate_rig(spec(effects, values), drives_for(effects));
+  auto sim = simulate(effects, values);
   return delayed(std::move(sim.columns.at(output_)), values);
 }
 
@@ -508,7 +510,7 @@ std::vector<double> DiagnosisModel::predict_column(const std::vector<const Candi
                                                    const std::string& column) const {
   // A fitted model simulates its output only: other columns are what was recorded.
   if (fitted_) return column == output_ ? predict(effects, values) : rec_.column(column);
-  auto sim = lumped::simulate_rig(spec(effects, values), drives_for(effects));
+  auto sim = simulate(effects, values);
   return delayed(std::move(sim.columns.at(column)), values);
 }
 

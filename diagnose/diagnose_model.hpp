@@ -226,9 +226,10 @@ class DiagnosisModel {
   double current_reversal_band_ = 0.0;  ///< see current_reversal_band()
   /// Estimates the path of a noisy coil current (current_path.hpp) for current_path().
   void noisy_current_path();
-  /// The recording the rig of `effects` is driven by: the current replaced by its path when
-  /// one of them follows it and the current is noisy.
-  lumped::Recording drives_for(const std::vector<const Candidate*>& effects) const;
+  /// The rig of `effects` with `values` simulated on the recording, its current replaced by the
+  /// current's path when one of them follows it and the current is noisy.
+  lumped::Recording simulate(const std::vector<const Candidate*>& effects,
+                             const std::vector<double>& values) const;
   /// Standard deviation of `y` about its mean (floored at 1e-300).
   static double spread(const std::vector<double>& y);
   /// Builds the baseline from a fitted model (diagnose_fitted_baseline.cpp).
