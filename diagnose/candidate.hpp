@@ -111,6 +111,11 @@ class Candidate {
     return "";
   }
 
+  /// True when it remembers the path of the coil current (a rate-independent loop): it is then
+  /// driven by the noise-robust path of a noisy measured current (DiagnosisModel::current_path),
+  /// since white noise would reverse it at every sample and erase its memory.
+  virtual bool follows_current_path() const { return false; }
+
   /// True when its size rests on the chamber volume (a note says when the sidecar lacks it).
   virtual bool uses_chamber_volume() const { return false; }
 };

@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "coupling/rig_chain_map.hpp"
 #include "diagnose/candidate.hpp"
+#include "diagnose/current_path.hpp"
 #include "diagnose/diagnose_noise.hpp"
 
 namespace rheomag::diagnose {
@@ -44,8 +45,8 @@ bool steps(const std::vector<double>& u) {
 }  // namespace
 
 DiagnosisModel::DiagnosisModel(const lumped::Recording& rec, const ModelBaseline* fitted,
-                               DriveSampling sampling)
-    : rec_(rec) {
+                               DriveSampling sampling, bool current_path)
+    : rec_(rec), current_path_wanted_(current_path) {
   if (fitted) {
     from_fitted_model(*fitted);
     return;
@@ -211,6 +212,33 @@ void DiagnosisModel::drive_noise_and_filter() {
       velocity_filter_bandwidth_ = smooth.bandwidth;
     }
   }
+  noisy_current_path();
+}
+
+void DiagnosisModel::noisy_current_path() {
+  // The coil current as measured drives the baseline (its steps are the information); only a
+  // state that remembers the current's path (a Duhem loop) is driven by its noise-robust path,
+  // where white noise would otherwise reverse it at every sample and erase its memory.
+  const std::string column = fitted_ ? field_column_ : std::string("current");
+  const bool current = fitted_ ? column == "current" || column == "current_cmd"
+                               : base_.driver_mode == DriverMode::current_source;
+  if (!current_path_wanted_ || constant_field_ || !current || !rec_.columns.count(column)) return;
+  const auto& i = rec_.column(column);
+  const auto [lo, hi] = std::minmax_element(i.begin(), i.end());
+  const double sigma = noise_sigma(i);
+  if (!(sigma > kNoisyDrive * (*hi - *lo))) return;
+  current_reversal_band_ = reversal_band(sigma, i.size());
+  current_path_ = diagnose::current_path(i, current_reversal_band_);
+}
+
+lumped::Recording DiagnosisModel::simulate(const std::vector<const Candidate*>& effects,
+                                           const std::vector<double>& values) const {
+  const bool follows = std::any_of(effects.begin(), effects.end(),
+                                   [](const Candidate* e) { return e->follows_current_path(); });
+  if (!follows || current_path_.empty()) return lumped::simulate_rig(spec(effects, values), rec_);
+  lumped::Recording r = rec_;
+  r.columns["current"] = current_path_;
+  return lumped::simulate_rig(spec(effects, values), r);
 }
 
 DiagnosisModel DiagnosisModel::held() const {
@@ -473,7 +501,7 @@ double DiagnosisModel::best_delay(const std::vector<double>& undelayed, std::vec
 std::vector<double> DiagnosisModel::predict(const std::vector<const Candidate*>& effects,
                                             const std::vector<double>& values) const {
   if (fitted_) return delayed(predict_fitted(effects, values), values);
-  auto sim = lumped::simulate_rig(spec(effects, values), rec_);
+  auto sim = simulate(effects, values);
   return delayed(std::move(sim.columns.at(output_)), values);
 }
 
@@ -482,7 +510,7 @@ std::vector<double> DiagnosisModel::predict_column(const std::vector<const Candi
                                                    const std::string& column) const {
   // A fitted model simulates its output only: other columns are what was recorded.
   if (fitted_) return column == output_ ? predict(effects, values) : rec_.column(column);
-  auto sim = lumped::simulate_rig(spec(effects, values), rec_);
+  auto sim = simulate(effects, values);
   return delayed(std::move(sim.columns.at(column)), values);
 }
 

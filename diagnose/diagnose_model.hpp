@@ -94,8 +94,9 @@ class DiagnosisModel {
   /// or other drive/output columns than the recording.
   /// With `sampling` held, the coil drive column is a zero-order hold and the motion columns
   /// are read half a sample later (a sidecar rig with a coil drive only; ignored otherwise).
+  /// `current_path` false: no path estimate of a noisy current (current_path() stays empty).
   explicit DiagnosisModel(const lumped::Recording& rec, const ModelBaseline* fitted = nullptr,
-                          DriveSampling sampling = DriveSampling::linear);
+                          DriveSampling sampling = DriveSampling::linear, bool current_path = true);
 
   /// True when the stated chambers' oil compliance is not negligible (its viscous lag or the
   /// plug's swing between yields at a flow reversal is a tenth of a sample or more), so that the
@@ -187,6 +188,13 @@ class DiagnosisModel {
   const std::map<std::string, double>& drive_noise() const { return drive_noise_; }
   /// [Hz] -3 dB bandwidth of the filter applied to a noisy velocity (0: used as recorded).
   double velocity_filter_bandwidth() const { return velocity_filter_bandwidth_; }
+  /// The noisy measured coil current's path (current_path.hpp) that drives the states which
+  /// remember it (Candidate::follows_current_path); empty when the current is clean.
+  const std::vector<double>& current_path() const { return current_path_; }
+  /// True unless the model was built without the path estimate (DiagnoseOptions::current_path).
+  bool current_path_wanted() const { return current_path_wanted_; }
+  /// [A] Smallest swing of the measured current taken as a reversal (0: clean current).
+  double current_reversal_band() const { return current_reversal_band_; }
 
  private:
   lumped::Recording rec_;
@@ -213,6 +221,15 @@ class DiagnosisModel {
   double model_sign_ = 1.0;   ///< fitted baseline: sign of its output's correlation with velocity
   std::vector<BaselineItem> includes_;
   std::map<std::string, double> drive_noise_;
+  bool current_path_wanted_ = true;     ///< see current_path_wanted()
+  std::vector<double> current_path_;    ///< see current_path()
+  double current_reversal_band_ = 0.0;  ///< see current_reversal_band()
+  /// Estimates the path of a noisy coil current (current_path.hpp) for current_path().
+  void noisy_current_path();
+  /// The rig of `effects` with `values` simulated on the recording, its current replaced by the
+  /// current's path when one of them follows it and the current is noisy.
+  lumped::Recording simulate(const std::vector<const Candidate*>& effects,
+                             const std::vector<double>& values) const;
   /// Standard deviation of `y` about its mean (floored at 1e-300).
   static double spread(const std::vector<double>& y);
   /// Builds the baseline from a fitted model (diagnose_fitted_baseline.cpp).

@@ -75,6 +75,7 @@ Nuisance nuisance_of(const DiagnosisModel& model, const ModelFit& fit) {
   Nuisance u;
   u.drive_noise = model.drive_noise();
   u.velocity_filter_bandwidth = model.velocity_filter_bandwidth();
+  u.current_reversal_band = model.current_reversal_band();
   for (std::size_t j = 0; j < model.static_params().size(); ++j) {
     if (fit.layout[j].name == "delay") u.delay = fit.values[j];
     if (fit.layout[j].name == "preyield_flow") u.preyield_flow = fit.values[j];

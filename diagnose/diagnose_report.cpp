@@ -222,6 +222,10 @@ std::string diagnosis_html(const Diagnosis& d) {
   if (u.velocity_filter_bandwidth > 0.0)
     o << "<tr><td>noisy velocity smoothed (cubic Savitzky-Golay, zero phase)</td><td>-3 dB at "
       << html_number(u.velocity_filter_bandwidth) << " Hz</td></tr>\n";
+  if (u.current_reversal_band > 0.0)
+    o << "<tr><td>noisy current: the Duhem candidate follows its path (reversals beyond the "
+         "noise)</td><td>reversal band "
+      << html_escape(value_text(u.current_reversal_band, "A")) << "</td></tr>\n";
   for (const auto& [column, sigma] : u.drive_noise)
     o << "<tr><td>noise on drive " << html_escape(column) << "</td><td>" << html_number(sigma)
       << " (rms, SI)</td></tr>\n";

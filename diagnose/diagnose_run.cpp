@@ -100,7 +100,7 @@ bool compliance_fits_better(const DiagnosisModel& model, const ModelFit& baselin
   for (std::size_t k = 0; k < y.size(); ++k) residual[k] = y[k] - baseline.prediction[k];
   const auto selection = representative_excerpt(residual, selection_samples);
   const DiagnosisModel part(lumped::excerpt(model.recording(), selection), nullptr,
-                            model.sampling());
+                            model.sampling(), model.current_path_wanted());
   const auto stiff = fit_model(part, {}, baseline.values, calib);
   const auto compliant = fit_model(part.with_oil_compliance(0.0), {}, baseline.values, calib);
   return compliant.sse < stiff.sse;
@@ -128,7 +128,8 @@ Diagnosis diagnose(const lumped::Recording& recording, const DiagnoseOptions& op
       lumped::every_nth_sample(factor > 1 ? recording : lumped::Recording{}, factor);
   const lumped::Recording& rec = factor > 1 ? thinned : recording;
   const ModelBaseline* fitted = options.baseline_model ? &*options.baseline_model : nullptr;
-  auto chosen = std::make_unique<DiagnosisModel>(rec, fitted);
+  auto chosen =
+      std::make_unique<DiagnosisModel>(rec, fitted, DriveSampling::linear, options.current_path);
   check_informative(*chosen);
   Diagnosis d;
   d.recording = rec.csv_path;
@@ -191,7 +192,8 @@ Diagnosis diagnose(const lumped::Recording& recording, const DiagnoseOptions& op
   ModelFit current = d.baseline;
   if (options.selection_samples > 0 && n > options.selection_samples) {
     d.selection = representative_excerpt(residual, options.selection_samples);
-    DiagnosisModel part(lumped::excerpt(rec, d.selection), fitted, model.sampling());
+    DiagnosisModel part(lumped::excerpt(rec, d.selection), fitted, model.sampling(),
+                        options.current_path);
     if (model.oil_compliance() && !part.oil_compliance()) part = part.with_oil_compliance(0.0);
     const auto part_baseline = fit_model(part, {}, d.baseline.values, calib);
     std::vector<double> part_residual(d.selection.size());

@@ -44,6 +44,9 @@ struct DiagnoseOptions {
   /// Start the fluid_inertia candidate also at the inertances the residual's ringing gives
   /// (diagnose_ringing.hpp) besides its decade grid; false: the grid alone (for comparison).
   bool ringing_start = true;
+  /// Drive the states that remember the current's path (the Duhem candidate) by a noisy
+  /// current's path estimate (current_path.hpp); false: by its samples (for comparison).
+  bool current_path = true;
   /// A fitted model as the baseline instead of the sidecar's rig (`--baseline MODEL.json`).
   std::optional<ModelBaseline> baseline_model;
 };
@@ -89,6 +92,9 @@ struct Nuisance {
   double preyield_fraction = 0.0;             ///< preyield_flow / peak flow
   std::map<std::string, double> drive_noise;  ///< column -> white-noise std (SI)
   double velocity_filter_bandwidth = 0.0;     ///< [Hz] filter on a noisy velocity (0: none)
+  /// [A] smallest swing of a noisy current that the Duhem candidate's path takes as a reversal
+  /// (current_path.hpp; 0: the current as recorded)
+  double current_reversal_band = 0.0;
 };
 
 /// What the residual of the final model still holds that no candidate explains.

@@ -87,12 +87,16 @@ class MagneticHysteresis final : public Candidate {
 
   bool composes_with_fitted_model() const override { return true; }
 
+  bool follows_current_path() const override { return true; }
+
   void compose_with_model(FittedModelBlocks& blocks, ParamReader& values,
-                          const DiagnosisModel& /*model*/) const override {
+                          const DiagnosisModel& model) const override {
     const double a = values.next();
     const double d = values.next();
     auto& r = blocks.inputs;
-    r.columns[blocks.field_column] = duhem_path(r.column(blocks.field_column), a, d);
+    const auto& path = model.current_path();
+    r.columns[blocks.field_column] =
+        duhem_path(path.empty() ? r.column(blocks.field_column) : path, a, d);
   }
 
   std::string evidence(const Diagnosis& d, const ModelFit& fit) const override {
