@@ -47,6 +47,12 @@ struct Solve3dOptions {
   bool force_full = false;        ///< mesh the whole revolution even when a symmetry allows less
   double max_memory = 0.0;        ///< refuse (InputError, before meshing) a mesh whose solve is
                                   ///< estimated to need more [bytes]; 0 = default_memory_limit()
+  /// Start Newton from the case's axisymmetric 2D solution revolved onto the edges
+  /// (warm_start.hpp) instead of A = 0.
+  bool warm_start = true;
+  /// Conjugate-gradient budget per Newton step with the last factorisation as preconditioner
+  /// before the step factorises its own tangent (EdgeSolver); 0: factorise every step.
+  int reuse_iterations = 20;
   magnetostatics::NewtonOptions newton;
   ProgressCallback progress;  ///< stages "mesh", "solve" (optional)
 };
