@@ -64,7 +64,7 @@ class EdgeSolver {
   }
   /// Flux density of tetrahedron t for edge values a.
   Eigen::Vector3d flux_density(int t, const Eigen::VectorXd& a) const;
-  /// Numeric Cholesky factorisations so far (one per Newton step of a nonlinear problem).
+  /// Numeric Cholesky factorisations so far (one per Newton step without a CG budget).
   int factorizations() const { return factorizations_; }
   /// Stored energy sum_t V w(|B|) [J] of the field B per tetrahedron.
   double stored_energy(const std::vector<Eigen::Vector3d>& b) const;
