@@ -1,13 +1,16 @@
 // Benchmarks of the 3D solver (rheomag solve --3d): the bundled annular valve revolved (wedge
 // model, default mesh: 1 % agreement with 2D), the small test valve with a lead slot (half
 // model, coarse mesh) and the bundled annular valve with a lead slot on the swept mesh (half
-// model, swept_options(): the issue's < 120 s target, docs/magnetostatics3d.md). Whole pipeline
+// model, swept_options(), docs/magnetostatics3d.md: four ways of starting and solving Newton's
+// steps side by side, BM_AnnularValveLeadSlotHalfSwept/0 the previous solver). Whole pipeline
 // timed: revolve, TetGen, gauge, loads, Newton, results. Peak memory: run under /usr/bin/time -v.
 // BM_Team20Fine: TEAM problem 20 on the 2.5 mm grid at the four measured excitations, with the
 // pole force per excitation as counters (F980 ... F5020 [N]; measured 8.0, 53.8, 74.7, 79.7 N).
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "case/case_file.hpp"
@@ -56,18 +59,51 @@ void BM_SmallValveLeadSlotHalf(benchmark::State& state) {
 }
 BENCHMARK(BM_SmallValveLeadSlotHalf)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
+/// How the lead-slot half model's Newton iteration is started and its steps solved.
+struct Variant {
+  bool warm_start;  // from the revolved 2D solution (else A = 0)
+  bool reuse;       // CG on the last factorisation (Solve3dOptions' budget; else one per step)
+};
+constexpr Variant kVariants[] = {{false, false}, {false, true}, {true, false}, {true, true}};
+
+// The variants side by side in one process: {0, 0} is the previous solver (from A = 0, one
+// factorisation per Newton step); max_sector_change is the largest relative change of a gap's
+// 10-degree sector average from it (the first run), flux_change that of lambda.
 void BM_AnnularValveLeadSlotHalfSwept(benchmark::State& state) {
+  static Results3d previous;
   const std::string path = std::string(RHEOMAG_SOURCE_DIR) + "/cases/annular_valve.toml";
   const cases::Case c = cases::parse_case(
       cases::read_input_file(path) +
           "\n[[feature]]\nkind = \"lead_slot\"\nregion = \"core\"\nwidth = 3.0\ndepth = 2.0\n",
       path);
+  const Variant v = kVariants[state.range(0)];
+  Solve3dOptions options = swept_options();
+  options.warm_start = v.warm_start;
+  if (!v.reuse) options.reuse_iterations = 0;
   for (auto _ : state) {
-    const Solve3dResult s = solve_problem_3d(c.problem, read_features(c), swept_options());
+    const Solve3dResult s = solve_problem_3d(c.problem, read_features(c), options);
     report(state, s);
+    state.counters["factorizations"] = s.results.factorizations;
+    state.counters["cg"] = s.results.cg_iterations;
+    if (state.range(0) == 0) previous = s.results;
+    double change = 0.0;
+    for (std::size_t g = 0; g < previous.gaps.size(); ++g)
+      for (int k = 0; k < kThetaSectors; ++k)
+        change = std::max(
+            change,
+            std::abs(s.results.gaps[g].b_avg_theta[k] / previous.gaps[g].b_avg_theta[k] - 1.0));
+    state.counters["max_sector_change"] = change;
+    state.counters["flux_change"] =
+        s.results.circuits[0].flux_linkage / previous.circuits[0].flux_linkage - 1.0;
   }
+  state.SetLabel(std::string(v.warm_start ? "2D start" : "A = 0") + ", " +
+                 (v.reuse ? "CG on reused factor" : "factor per step"));
 }
-BENCHMARK(BM_AnnularValveLeadSlotHalfSwept)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+BENCHMARK(BM_AnnularValveLeadSlotHalfSwept)
+    ->DenseRange(0, 3)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime();
 
 void BM_Team20Fine(benchmark::State& state) {
   Team20Options options;

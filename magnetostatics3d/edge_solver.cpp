@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "magnetostatics/cholmod_status.hpp"
+#include "magnetostatics/preconditioned_cg.hpp"
 #include "magnetostatics/serial_openmp.hpp"
 
 namespace rheomag::magnetostatics3d {
@@ -20,19 +21,23 @@ class EdgeSolver::System : public magnetostatics::NonlinearSystem {
     return r.norm();
   }
   void factorize_jacobian(const Eigen::VectorXd& x) override {
-    if (s_.factorized_ && !s_.nonlinear_) return;  // linear: one factorisation for all steps
+    // Linear: one factorisation for all steps and solves.
+    factor_current_ = s_.factorized_ && !s_.nonlinear_;
+    if (factor_current_) return;
     s_.assemble(s_.to_edges(x), nullptr, true);
-    const magnetostatics::SerialOpenMp serial;
-    s_.cholesky_.factorize(s_.tangent_);
-    magnetostatics::throw_if_out_of_memory(s_.cholesky_);
-    if (s_.cholesky_.info() != Eigen::Success) {
-      throw ConvergenceError("CHOLMOD could not factorise the 3D tangent (not positive definite)");
-    }
-    s_.factorized_ = true;
-    ++s_.factorizations_;
+    // With a budget for CG, only the first step factorises; the others try the old factor.
+    if (!s_.factorized_ || s_.reuse_iterations_ == 0) factorize();
   }
-  Eigen::VectorXd solve_jacobian(const Eigen::VectorXd& rhs, double) override {
+  Eigen::VectorXd solve_jacobian(const Eigen::VectorXd& rhs, double tolerance) override {
     const magnetostatics::SerialOpenMp serial;
+    if (!factor_current_) {
+      Eigen::VectorXd x;
+      const magnetostatics::CgResult cg = magnetostatics::preconditioned_cg(
+          s_.tangent_, s_.cholesky_, rhs, tolerance, s_.reuse_iterations_, x);
+      s_.cg_iterations_ += cg.iterations;
+      if (cg.converged && x.allFinite()) return x;
+      factorize();  // the old factor is too far from this tangent
+    }
     return s_.cholesky_.solve(rhs);
   }
   double energy(const Eigen::VectorXd& x) override {
@@ -43,19 +48,33 @@ class EdgeSolver::System : public magnetostatics::NonlinearSystem {
   }
 
  private:
+  void factorize() {
+    const magnetostatics::SerialOpenMp serial;
+    s_.cholesky_.factorize(s_.tangent_);
+    magnetostatics::throw_if_out_of_memory(s_.cholesky_);
+    if (s_.cholesky_.info() != Eigen::Success) {
+      throw ConvergenceError("CHOLMOD could not factorise the 3D tangent (not positive definite)");
+    }
+    s_.factorized_ = factor_current_ = true;
+    ++s_.factorizations_;
+  }
+
   EdgeSolver& s_;
-  Eigen::VectorXd load_;  // over the unknowns, at the solve's currents
+  Eigen::VectorXd load_;         // over the unknowns, at the solve's currents
+  bool factor_current_ = false;  // the factorisation is of the tangent last assembled
 };
 
 EdgeSolver::EdgeSolver(const TetMesh& mesh, std::vector<magnetostatics::Reluctivity> laws,
                        std::vector<int> material_of_region, Eigen::VectorXd fixed_values,
-                       std::vector<Eigen::VectorXd> loads, magnetostatics::NewtonOptions options)
+                       std::vector<Eigen::VectorXd> loads, magnetostatics::NewtonOptions options,
+                       int reuse_iterations)
     : mesh_(mesh),
       laws_(std::move(laws)),
       material_of_region_(std::move(material_of_region)),
       fixed_values_(std::move(fixed_values)),
       loads_(std::move(loads)),
-      options_(options) {
+      options_(options),
+      reuse_iterations_(reuse_iterations) {
   for (int m : material_of_region_) {
     if (m < 0 || m >= static_cast<int>(laws_.size()))
       throw InputError("3D mesh: a region has no material");
@@ -165,7 +184,12 @@ void EdgeSolver::assemble(const Eigen::VectorXd& a, Eigen::VectorXd* residual, b
 }
 
 EdgeSolution EdgeSolver::solve(const std::vector<double>& currents) {
-  const auto start = std::chrono::steady_clock::now();
+  return solve(currents, Eigen::VectorXd::Zero(static_cast<Eigen::Index>(mesh_.edges.size())));
+}
+
+EdgeSolution EdgeSolver::solve(const std::vector<double>& currents, const Eigen::VectorXd& start) {
+  const auto start_time = std::chrono::steady_clock::now();
+  const int factorizations_before = factorizations_, cg_before = cg_iterations_;
   EdgeSolution sol;
   sol.currents = currents;
   const int n = dofs_.free_count();
@@ -175,17 +199,23 @@ EdgeSolution EdgeSolver::solve(const std::vector<double>& currents) {
   Eigen::VectorXd load(n);
   for (int d = 0; d < n; ++d) load[d] = load_edges[dofs_.edge_of_dof[d]];
   System system(*this, load);
-  // Reference of the relative residual: the residual at x = 0 (fixed values and loads).
+  // Reference of the relative residual: the residual at x = 0 (fixed values and loads), whatever
+  // the start, so that a warm start converges to the same tolerance.
   Eigen::VectorXd x = Eigen::VectorXd::Zero(n), r;
   const double scale = system.residual(x, r);
+  if (start.size() == static_cast<Eigen::Index>(mesh_.edges.size()) && !start.isZero(0.0))
+    x = cotree_values(mesh_, dofs_, start);
   magnetostatics::NewtonOptions options = options_;
   options.local_iterations = 0;
   sol.newton = magnetostatics::newton_solve(system, x, scale, options);
+  sol.factorizations = factorizations_ - factorizations_before;
+  sol.cg_iterations = cg_iterations_ - cg_before;
   sol.a = to_edges(x);
   sol.b.resize(mesh_.tets.size());
   for (std::size_t t = 0; t < sol.b.size(); ++t)
     sol.b[t] = flux_density(static_cast<int>(t), sol.a);
-  sol.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  sol.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
   return sol;
 }
 

@@ -20,7 +20,9 @@ struct EdgeSolution {
   Eigen::VectorXd a;               ///< line integral of A along every edge [Wb]
   std::vector<Eigen::Vector3d> b;  ///< B per tetrahedron [T]
   magnetostatics::NewtonReport newton;
-  double seconds = 0.0;  ///< wall time of the solve
+  int factorizations = 0;  ///< numeric Cholesky factorisations of this solve
+  int cg_iterations = 0;   ///< conjugate-gradient iterations with a reused factorisation
+  double seconds = 0.0;    ///< wall time of the solve
 };
 
 /// Weak form: find A (tangential trace prescribed on condition faces) with
@@ -28,19 +30,29 @@ struct EdgeSolution {
 /// f_ce = integral T_c . curl w_e dV the load of circuit c at unit current (coil_source.hpp).
 /// Newton with the exact tangent V curl w_i^T (nu + 2 nu' B B^T) curl w_j (symmetric positive
 /// definite for a monotone B-H curve) and a line search on the energy (magnetostatics::newton);
-/// CHOLMOD supernodal Cholesky, symbolic analysis once.
+/// CHOLMOD supernodal Cholesky, symbolic analysis once. With `reuse_iterations` > 0 a Newton
+/// step after the first is solved by conjugate gradients preconditioned with the last
+/// factorisation (to Newton's forcing tolerance, NewtonOptions::max_forcing), and its own tangent
+/// is factorised only when CG does not converge within that many iterations (modified Newton
+/// with an exact-tangent correction: near a good start the tangent barely changes).
 class EdgeSolver {
  public:
   /// `laws` per material, `material_of_region` per mesh region, `fixed_values` per edge (used on
-  /// fixed edges only), `loads` per circuit (per edge).
+  /// fixed edges only), `loads` per circuit (per edge), `reuse_iterations` the CG budget with a
+  /// reused factorisation (0: every Newton step factorises its tangent).
   EdgeSolver(const TetMesh& mesh, std::vector<magnetostatics::Reluctivity> laws,
              std::vector<int> material_of_region, Eigen::VectorXd fixed_values,
-             std::vector<Eigen::VectorXd> loads, magnetostatics::NewtonOptions options = {});
+             std::vector<Eigen::VectorXd> loads, magnetostatics::NewtonOptions options = {},
+             int reuse_iterations = 0);
   EdgeSolver(const EdgeSolver&) = delete;
   EdgeSolver& operator=(const EdgeSolver&) = delete;
 
-  /// Solves for the given current per circuit [A]. Throws ConvergenceError if Newton fails.
+  /// Solves for the given current per circuit [A] from A = 0. Throws ConvergenceError if Newton
+  /// fails.
   EdgeSolution solve(const std::vector<double>& currents);
+  /// Solves from the edge values `start` (one per edge, e.g. a revolved 2D solution; its gauge
+  /// is removed by cotree_values, its fixed edges are ignored).
+  EdgeSolution solve(const std::vector<double>& currents, const Eigen::VectorXd& start);
 
   const TetMesh& mesh() const { return mesh_; }
   const EdgeDofs& dofs() const { return dofs_; }
@@ -52,7 +64,7 @@ class EdgeSolver {
   }
   /// Flux density of tetrahedron t for edge values a.
   Eigen::Vector3d flux_density(int t, const Eigen::VectorXd& a) const;
-  /// Numeric Cholesky factorisations so far (one per Newton step of a nonlinear problem).
+  /// Numeric Cholesky factorisations so far (one per Newton step without a CG budget).
   int factorizations() const { return factorizations_; }
   /// Stored energy sum_t V w(|B|) [J] of the field B per tetrahedron.
   double stored_energy(const std::vector<Eigen::Vector3d>& b) const;
@@ -75,9 +87,11 @@ class EdgeSolver {
   std::vector<std::array<int, 36>> slot_;  // value index in tangent_ of local (i, j), -1 none
   SparseMatrix tangent_;
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholesky_;
+  int reuse_iterations_ = 0;
   bool nonlinear_ = false;
   bool factorized_ = false;
   int factorizations_ = 0;
+  int cg_iterations_ = 0;
 };
 
 }  // namespace rheomag::magnetostatics3d

@@ -1,6 +1,7 @@
 #include "magnetostatics3d/gauge.hpp"
 
 #include <numeric>
+#include <queue>
 
 #include "core/error.hpp"
 
@@ -69,6 +70,45 @@ EdgeDofs tree_cotree_dofs(const TetMesh& mesh) {
     }
   }
   return d;
+}
+
+Eigen::VectorXd cotree_values(const TetMesh& mesh, const EdgeDofs& dofs, const Eigen::VectorXd& a) {
+  // Potential phi per node: 0 on the fixed edges' nodes, grown along the tree edges (a breadth-
+  // first walk over the spanning tree of tree_cotree_dofs) so that phi_b - phi_a = a_e on each.
+  const int n_nodes = static_cast<int>(mesh.nodes.size());
+  std::vector<std::vector<int>> tree_edges_of(n_nodes);
+  std::vector<double> phi(n_nodes, 0.0);
+  std::vector<bool> known(n_nodes, false);
+  std::queue<int> front;
+  for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
+    const auto& [p, q] = mesh.edges[e];
+    if (dofs.fixed[e]) {
+      for (int node : {p, q}) {
+        if (!known[node]) front.push(node);
+        known[node] = true;
+      }
+    } else if (dofs.dof_of_edge[e] < 0) {
+      tree_edges_of[p].push_back(static_cast<int>(e));
+      tree_edges_of[q].push_back(static_cast<int>(e));
+    }
+  }
+  for (; !front.empty(); front.pop()) {
+    const int node = front.front();
+    for (int e : tree_edges_of[node]) {
+      const auto& [p, q] = mesh.edges[e];
+      const int other = p == node ? q : p;
+      if (known[other]) continue;
+      phi[other] = phi[node] + (other == q ? a[e] : -a[e]);
+      known[other] = true;
+      front.push(other);
+    }
+  }
+  Eigen::VectorXd x(dofs.free_count());
+  for (int d = 0; d < dofs.free_count(); ++d) {
+    const int e = dofs.edge_of_dof[d];
+    x[d] = a[e] - (phi[mesh.edges[e][1]] - phi[mesh.edges[e][0]]);
+  }
+  return x;
 }
 
 }  // namespace rheomag::magnetostatics3d

@@ -1,6 +1,7 @@
 #pragma once
 // Tree-cotree gauge of lowest-order edge elements.
 
+#include <Eigen/Core>
 #include <vector>
 
 #include "magnetostatics3d/tet_mesh.hpp"
@@ -23,5 +24,12 @@ struct EdgeDofs {
 /// surface (the discrete gradients that vanish there are exactly what the tree removes).
 /// Throws InputError if the mesh has no condition face (A would not be determined).
 EdgeDofs tree_cotree_dofs(const TetMesh& mesh);
+
+/// The unknowns (cotree values) of the gauged field with the same curl as the edge values `a`
+/// (one per edge, zero tangential A on the fixed edges): a minus the discrete gradient of the
+/// potential that is zero on the fixed edges' nodes and integrates `a` along the tree, so that
+/// every tree edge becomes 0. A field given on all edges (e.g. interpolated) becomes a start of
+/// EdgeSolver's Newton iteration without changing its B.
+Eigen::VectorXd cotree_values(const TetMesh& mesh, const EdgeDofs& dofs, const Eigen::VectorXd& a);
 
 }  // namespace rheomag::magnetostatics3d

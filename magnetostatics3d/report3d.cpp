@@ -60,6 +60,8 @@ nlohmann::json results_json_3d(const Results3d& results) {
       {"inductance", has_circuit ? number(results.circuits.front().inductance) : nlohmann::json()},
       {"energy", number(results.energy)},
       {"newton_iterations", results.newton_iterations},
+      {"factorizations", results.factorizations},
+      {"cg_iterations", results.cg_iterations},
       {"residual_history", results.residual_history},
       {"dofs", results.dofs},
       {"elements", results.tetrahedra},

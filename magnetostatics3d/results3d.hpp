@@ -55,6 +55,8 @@ struct Results3d {
   int nodes = 0;
   int edges = 0;
   int newton_iterations = 0;
+  int factorizations = 0;  ///< numeric Cholesky factorisations of the solve
+  int cg_iterations = 0;   ///< CG iterations preconditioned with a reused factorisation
   std::vector<double> residual_history;
   double seconds = 0.0;  ///< mesh and solve wall time
 };

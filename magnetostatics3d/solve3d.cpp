@@ -16,6 +16,7 @@
 #include "magnetostatics3d/region_box.hpp"
 #include "magnetostatics3d/revolve.hpp"
 #include "magnetostatics3d/swept_mesh.hpp"
+#include "magnetostatics3d/warm_start.hpp"
 #include "mesh/mesher.hpp"
 
 namespace rheomag::magnetostatics3d {
@@ -234,12 +235,18 @@ Solve3dResult solve_problem_3d(const cases::Problem& problem, const std::vector<
   std::vector<int> material_of_region;
   for (const cases::RegionData& r : closed.regions) material_of_region.push_back(r.material);
   Eigen::VectorXd fixed = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(out.mesh->edges.size()));
+  Eigen::VectorXd initial;
+  if (options.warm_start) {
+    report("solve", "2D solution as the start");
+    initial = revolved_2d_solution(closed, source_meridian, *out.mesh);
+  }
   out.solver = std::make_unique<EdgeSolver>(
       *out.mesh, magnetostatics::build_reluctivities(closed), material_of_region, fixed,
-      circuit_loads(closed, source_meridian, *out.mesh, undeformed), options.newton);
+      circuit_loads(closed, source_meridian, *out.mesh, undeformed), options.newton,
+      options.reuse_iterations);
   std::vector<double> currents;
   for (const cases::Circuit& c : closed.circuits) currents.push_back(c.current);
-  out.solution = out.solver->solve(currents);
+  out.solution = out.solver->solve(currents, initial);
   out.results = compute_results_3d(closed, *out.solver, out.solution, part, span);
   out.results.seconds = seconds_since(start);
   return out;
