@@ -7,11 +7,14 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/command.hpp"
 #include "case/case_file.hpp"
 #include "core/error.hpp"
+#include "plot/figure.hpp"
+#include "thermal/thermal_pictures.hpp"
 #include "thermal/thermal_report.hpp"
 
 namespace {
@@ -23,7 +26,7 @@ struct ThermalCli {
   std::optional<double> temperature, ambient, convection, limit;
   double duty = 1.0;
   int steps = 200;
-  std::string vtk;
+  std::string vtk, plot, plot_history;
   bool json = false;
 };
 
@@ -34,6 +37,12 @@ void run(const ThermalCli& o) {
     throw InputError(
         "--flow, --velocity and --speed: give at most one (a valve's flow, a "
         "damper's piston velocity or a brake's rotor speed)");
+  for (const auto& [option, file] :
+       {std::pair{"--plot", &o.plot}, {"--plot-history", &o.plot_history}})
+    if (!file->empty() && !plot::is_picture_path(*file))
+      throw InputError(std::string(option) + ": expected a file name ending in .png or .svg");
+  if (!o.plot_history.empty() && !o.duration)
+    throw InputError("--plot-history: draws a transient's heating; give --duration too");
   const cases::Case c = app::load_case(o.case_file, o.settings);
   thermal::ThermalRequest request;
   request.point.duty = o.duty;
@@ -54,14 +63,21 @@ void run(const ThermalCli& o) {
   request.limit = o.limit;
   const thermal::ThermalReport report = thermal::run_thermal(c, request);
   if (!o.vtk.empty()) thermal::write_thermal_vtu(report, o.vtk);
+  if (!o.plot.empty()) thermal::draw_temperature_map(report).figure.write(o.plot, "--plot");
+  if (!o.plot_history.empty())
+    thermal::draw_heating_curves(report).write(o.plot_history, "--plot-history");
   if (o.json) {
     nlohmann::json j = thermal::thermal_json(report);
     if (!o.settings.empty()) j["set"] = o.settings;
     if (!o.vtk.empty()) j["vtk"] = o.vtk;
+    if (!o.plot.empty()) j["plot"] = o.plot;
+    if (!o.plot_history.empty()) j["plot_history"] = o.plot_history;
     app::print_json(j, 2);
   } else {
     std::cout << thermal::thermal_text(report);
     if (!o.vtk.empty()) std::cout << "wrote " << o.vtk << " (temperature, heat source)\n";
+    if (!o.plot.empty()) std::cout << "wrote " << o.plot << " (temperature map)\n";
+    if (!o.plot_history.empty()) std::cout << "wrote " << o.plot_history << " (heating curves)\n";
   }
 }
 
@@ -122,6 +138,14 @@ const bool thermal_registered = rheomag::app::register_command([](CLI::App& root
       ->check(rheomag::app::in_domain(Domain::between(-273.15, 2000.0, "deg C")));
   cmd->add_option("--vtk", o->vtk,
                   "Write the temperature (deg C) and heat source (W/m^3) to this .vtu file")
+      ->check(rheomag::app::output_file_in_writable_folder());
+  cmd->add_option("--plot", o->plot,
+                  "Draw the temperature map (banded colours, isotherms, region outlines; the "
+                  "steady state or the transient's last) to this .png or .svg file")
+      ->check(rheomag::app::output_file_in_writable_folder());
+  cmd->add_option("--plot-history", o->plot_history,
+                  "With --duration: draw the coil's and the fluid's mean and hottest "
+                  "temperatures against time, with the limit, to this .png or .svg file")
       ->check(rheomag::app::output_file_in_writable_folder());
   cmd->add_flag("--json", o->json, "Print one JSON object to stdout");
   cmd->callback([o] { run(*o); });

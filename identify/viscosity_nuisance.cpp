@@ -3,6 +3,7 @@
 
 #include "identify/viscosity_nuisance.hpp"
 
+#include <boost/math/tools/minima.hpp>
 #include <cmath>
 #include <string>
 
@@ -52,21 +53,10 @@ double fit_viscosity_factor(const lumped::Recording& rec, const GreyboxFit& fit,
     const double f = lumped::fit_percent(y, model);
     return std::isfinite(f) ? -f : HUGE_VAL;
   };
-  // Golden-section search on [ln lower, ln upper].
-  const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
-  double a = std::log(bounds.lower), b = std::log(bounds.upper);
-  double c = b - golden * (b - a), d = a + golden * (b - a);
-  double fc = misfit(c), fd = misfit(d);
-  while (b - a > 1e-3) {
-    if (fc < fd) {
-      b = d, d = c, fd = fc;
-      c = b - golden * (b - a), fc = misfit(c);
-    } else {
-      a = c, c = d, fc = fd;
-      d = a + golden * (b - a), fd = misfit(d);
-    }
-  }
-  return std::exp(0.5 * (a + b));
+  // Brent's minimisation on [ln lower, ln upper] to about 0.1 % in the factor (10 bits).
+  const auto best = boost::math::tools::brent_find_minima(misfit, std::log(bounds.lower),
+                                                          std::log(bounds.upper), 10);
+  return std::exp(best.first);
 }
 
 void centre_viscosity_factors(std::vector<double>& factors, GreyboxFit& fit) {

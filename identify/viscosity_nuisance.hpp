@@ -28,7 +28,7 @@ bool scales_with_viscosity(lumped::PhenoKind kind, std::size_t index);
 GreyboxFit with_viscosity_factor(const GreyboxFit& fit, double factor);
 
 /// The factor within `bounds` whose scaled model fits `rec` best (free run at the recording's full
-/// rate, golden-section search on log(factor) to 0.1 %).
+/// rate, Brent's search on log(factor) to about 0.1 %).
 double fit_viscosity_factor(const lumped::Recording& rec, const GreyboxFit& fit,
                             const ViscosityNuisance& bounds);
 

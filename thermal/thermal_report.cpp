@@ -119,6 +119,7 @@ ThermalReport run_thermal(const cases::Case& c, const ThermalRequest& request) {
   report.surface_heat_flow = report.field.surface_heat_flow;
   report.balance_error = report.field.balance_error();
   report.mesh = field.mesh();
+  report.planar = problem.symmetry == cases::Symmetry::planar;
   return report;
 }
 

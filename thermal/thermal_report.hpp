@@ -52,6 +52,7 @@ struct ThermalReport {
   int unknowns = 0;                       ///< temperatures solved for
   std::optional<ThermalNetwork> network;  ///< the two-node network (a device with gaps)
   mesh::Mesh mesh;                        ///< the mesh of the field
+  bool planar = false;                    ///< x-y (planar) rather than r-z (axisymmetric)
   std::vector<std::string> region_names;
 };
 
