@@ -113,14 +113,25 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
   stats["final_white"] = d.final_stats.white;
   out["residual_statistics"] = stats;
   out["candidates"] = json::array();
-  for (const auto& c : d.candidates)
-    out["candidates"].push_back(
-        {{"name", c.effect->name()},
-         {"step", c.step + 1},
-         {"fit_percent", c.screened ? nlohmann::json() : nlohmann::json(c.fit_percent)},
-         {"screened", c.screened},
-         {"delta_bic", c.delta_bic},
-         {"outcome", candidate_outcome(c, d)}});
+  for (const auto& c : d.candidates) {
+    json row = {{"name", c.effect->name()},
+                {"step", c.step + 1},
+                {"fit_percent", c.screened ? nlohmann::json() : nlohmann::json(c.fit_percent)},
+                {"screened", c.screened},
+                {"delta_bic", c.delta_bic},
+                {"outcome", candidate_outcome(c, d)}};
+    // Its own parameters as fitted at that step (what the recording carries of it, accepted
+    // or not); a screened candidate was not fitted.
+    if (!c.screened) {
+      row["params"] = json::object();
+      row["units"] = json::object();
+      for (std::size_t j = 0; j < c.params.size(); ++j) {
+        row["params"][c.param_names[j]] = c.params[j];
+        row["units"][c.param_names[j]] = c.param_units[j];
+      }
+    }
+    out["candidates"].push_back(std::move(row));
+  }
   if (d.selection.size() > 0)
     out["selection_samples"] = {{"begin", d.selection.begin}, {"end", d.selection.end}};
   out["notes"] = d.notes;

@@ -15,7 +15,11 @@ namespace rheomag::diagnose {
 std::string rejection(const DiagnosisModel& model, const ModelFit& current, const ModelFit& fit,
                       const Candidate* effect, double delta_bic, const Evidence& evidence,
                       bool away, const DiagnoseOptions& options, double& share) {
-  const std::string head = effect->name() + " lowered BIC by " + fmt(delta_bic) +
+  // Its size as fitted, so that what a recording carries of it below the bar is on record.
+  const std::size_t own = fit.values.size() - effect->params(model).size();
+  const std::string head = effect->name() + " (" + fit.layout[own].name + " " +
+                           fmt(fit.values[own]) + " " + fit.layout[own].unit +
+                           " as fitted) lowered BIC by " + fmt(delta_bic) +
                            (away ? " on the samples away from steps" : "");
   // What the candidate itself explains: the gain over the current model, but no more than the
   // error its fit gains back when the candidate alone is switched off (every other parameter

@@ -53,11 +53,16 @@ struct DiagnoseOptions {
 
 /// One candidate tried at one step of forward selection.
 struct CandidateScore {
-  const Candidate* effect;  ///< a registered candidate (candidate_registry.hpp)
+  const Candidate* effect = nullptr;  ///< a registered candidate (candidate_registry.hpp)
   int step = 0;
   double fit_percent = 0.0;
   double delta_bic = 0.0;  ///< BIC of the model before minus BIC with this candidate
   bool screened = false;   ///< no decade of its parameter helped: scored on the grid, not fitted
+  /// Its own parameters as fitted at this step (SI; empty when screened): what a recording
+  /// carries of it below the acceptance bar, e.g. to subtract from a later recording's finding.
+  std::vector<std::string> param_names;
+  std::vector<std::string> param_units;  ///< SI unit of each parameter
+  std::vector<double> params;            ///< SI
 };
 
 /// One accepted piece of missing physics.

@@ -32,6 +32,25 @@ bool has_effect(const ModelFit& f, const std::string& name) {
                      [&](const Candidate* e) { return e->name() == name; });
 }
 
+/// The score of candidate `c` fitted at `step` as the last effect of `f`, with its own
+/// parameters (the tail of `f`'s layout).
+CandidateScore fitted_score(const DiagnosisModel& model, const Candidate* c, int step,
+                            const std::vector<double>& measured, const ModelFit& f,
+                            double delta_bic) {
+  CandidateScore score;
+  score.effect = c;
+  score.step = step;
+  score.fit_percent = lumped::fit_percent(measured, f.prediction);
+  score.delta_bic = delta_bic;
+  const std::size_t own = c->params(model).size();
+  for (std::size_t j = f.values.size() - std::min(own, f.values.size()); j < f.values.size(); ++j) {
+    score.param_names.push_back(f.layout[j].name);
+    score.param_units.push_back(f.layout[j].unit);
+    score.params.push_back(f.values[j]);
+  }
+  return score;
+}
+
 /// Whether candidate `c` is tried again at `step` (> 0). A candidate fitted at the first step is
 /// retried unless it made the fit clearly worse alone (BIC up by more than `margin`): masked by
 /// a larger effect, it still gets its second chance. A candidate screened out at the first step
@@ -143,8 +162,7 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evi
         auto twin = std::find_if(tried.begin(), tried.end(),
                                  [&](const auto& t) { return t.effect->name() == twin_name; });
         if (twin != tried.end()) {
-          d.candidates.push_back(
-              {c, step, lumped::fit_percent(y, twin->fit.prediction), twin->delta_bic});
+          d.candidates.push_back(fitted_score(model, c, step, y, twin->fit, twin->delta_bic));
           tried.push_back({c, twin->fit, twin->delta_bic});
           tried.back().fit.effects.back() = c;
           continue;
@@ -167,7 +185,12 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evi
         // others held at the current fit) is scored there and not fitted.
         if (!(grid_sse < current.sse)) {
           const double db = bic_now - bic(grid_sse, n, s.size());
-          d.candidates.push_back({c, step, 0.0, db, true});
+          CandidateScore screened;
+          screened.effect = c;
+          screened.step = step;
+          screened.delta_bic = db;
+          screened.screened = true;
+          d.candidates.push_back(std::move(screened));
           report(c, "screened out (no decade of its parameter helps)");
           continue;
         }
@@ -176,7 +199,7 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evi
         auto f = fit_model(model, effects, s, candidate_settings);
         const double db = bic_now - bic(f.sse, n, f.values.size());
         report(c, "dBIC " + num(db) + " in " + num(Clock::since(started)) + " s");
-        d.candidates.push_back({c, step, lumped::fit_percent(y, f.prediction), db});
+        d.candidates.push_back(fitted_score(model, c, step, y, f, db));
         tried.push_back({c, std::move(f), db});
       } catch (const ConvergenceError&) {
         d.notes.push_back("candidate " + c->name() + " could not be simulated at step " +

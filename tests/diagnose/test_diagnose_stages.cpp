@@ -41,11 +41,16 @@ Diagnosis mrdamper_like() {
   const Candidate* compressibility = &candidate_named("compressibility");
   const Candidate* pre_yield = &candidate_named("pre_yield");
   const Candidate* friction = &candidate_named("friction");
-  d.candidates = {{compressibility, 0, 81.04, 900.0},
-                  {pre_yield, 0, 80.91, 890.0},
-                  {friction, 0, 60.0, 20.0},
-                  {pre_yield, 1, 0.0, -5.0, true},
-                  {friction, 1, 83.31, 300.0}};
+  const auto score = [](const Candidate* c, int step, double fit, double delta_bic,
+                        bool screened = false) {
+    rheomag::diagnose::CandidateScore s;
+    s.effect = c, s.step = step, s.fit_percent = fit, s.delta_bic = delta_bic;
+    s.screened = screened;
+    return s;
+  };
+  d.candidates = {score(compressibility, 0, 81.04, 900.0), score(pre_yield, 0, 80.91, 890.0),
+                  score(friction, 0, 60.0, 20.0), score(pre_yield, 1, 0.0, -5.0, true),
+                  score(friction, 1, 83.31, 300.0)};
   Finding a;
   a.effect = compressibility;
   a.step = 0;

@@ -1,0 +1,169 @@
+// Diagnosis parameters on real recordings (issue 33 point 3): the real-recording protocol.
+// A `damper` family is fitted on UTFSM tests of another lab's damper (M. Quiroz, UTFSM 2022) that
+// exclude the held-out 10 mm / 1 Hz test; the held-out test, unmodified and with a known moving
+// mass or seal friction added to its measured force, is diagnosed against that model
+// (`--baseline`), and the found size is scored against the injected one.
+// References and tolerances:
+// - the unmodified recording: nothing named (a false finding fails);
+// - the injection is sized at a tenth of the recording's force rms (m a_rms or F_c), added with
+//   the model's sign; its acceleration comes from the displacement (second difference over
+//   +-5 ms), not from the velocity column the diagnosis differentiates;
+// - the effect is named and its size within 30 % of the injected (the issue's target);
+// - differentially, the found size minus what the unmodified recording already carries of the
+//   same candidate (its fit at the first step, accepted or not, now in the report) within 10 %:
+//   the remaining error of the raw size is that held-out test's own mismatch with the model,
+//   not a bias of the diagnosis (docs/validation.md, "Diagnosis parameters on real recordings").
+// Needs shared/data beside the source tree (skipped otherwise).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "diagnose/diagnose_run.hpp"
+#include "identify/current_dependent_fit.hpp"
+#include "identify/family_fit_output.hpp"
+#include "identify/fit_model_json.hpp"
+#include "lumped/recording_io.hpp"
+
+namespace {
+
+using rheomag::diagnose::Diagnosis;
+using rheomag::diagnose::ModelBaseline;
+using rheomag::lumped::Recording;
+
+const std::string kDir = std::string(RHEOMAG_SHARED_DIR) + "/data/utfsm/";
+constexpr double kPistonArea = 1e-3;  // [m^2] assumed (the sidecars give none)
+
+/// The held-out test with the piston area the inertance needs (as a user's sidecar would add).
+Recording held_out(const std::string& test) {
+  auto rec = rheomag::lumped::read_recording(kDir + test + ".csv");
+  rec.meta.rig.piston_area = kPistonArea;
+  return rec;
+}
+
+/// A damper family fitted on the 10 mm / 1 Hz tests other than `test` and the 25 mm / 0.5 Hz
+/// tests at 0.25 and 0.75 A, as the fitted-model JSON a user passes to --baseline.
+ModelBaseline family_without(const std::string& test) {
+  std::vector<Recording> training;
+  for (const char* other : {"10mm1Hz0A", "10mm1Hz0x25A", "10mm1Hz0x5A", "10mm1Hz0x75A", "10mm1Hz1A",
+                            "25mm0x5Hz0x25A", "25mm0x5Hz0x75A"})
+    if (other != test) training.push_back(rheomag::lumped::read_recording(kDir + other + ".csv"));
+  rheomag::identify::FamilyFitOptions options;
+  options.greybox.starts = 2;  // the CLI's default
+  const auto fit = rheomag::identify::fit_current_dependent(training, "damper", {}, options);
+  const auto json =
+      rheomag::identify::family_fit_json(fit, training.front().meta, options.decimation, false);
+  return {rheomag::identify::parse_fit_model_json(json.dump(), "family.json"), "family.json"};
+}
+
+Diagnosis diagnose_with(const Recording& rec, const ModelBaseline& model) {
+  rheomag::diagnose::DiagnoseOptions options;
+  options.baseline_model = model;
+  return rheomag::diagnose::diagnose(rec, options);
+}
+
+double rms_about_mean(const std::vector<double>& v) {
+  double mean = 0.0, s = 0.0;
+  for (double x : v) mean += x / static_cast<double>(v.size());
+  for (double x : v) s += (x - mean) * (x - mean);
+  return std::sqrt(s / static_cast<double>(v.size()));
+}
+
+/// Sign of the force's correlation with the velocity (the damper opposes the motion).
+double model_sign(const Recording& rec) {
+  const auto& f = rec.column("force");
+  const auto& v = rec.column("velocity");
+  double dot = 0.0;
+  for (std::size_t k = 0; k < f.size(); ++k) dot += f[k] * v[k];
+  return dot < 0.0 ? -1.0 : 1.0;
+}
+
+/// Acceleration from the displacement: second difference over +-h samples (h dt = 5 ms).
+std::vector<double> acceleration(const Recording& rec) {
+  const auto& x = rec.column("displacement");
+  const double dt = rec.t[1] - rec.t[0];
+  const std::size_t h = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(5e-3 / dt)));
+  std::vector<double> a(x.size(), 0.0);
+  for (std::size_t k = h; k + h < x.size(); ++k)
+    a[k] = (x[k + h] - 2.0 * x[k] + x[k - h]) / (h * dt * h * dt);
+  for (std::size_t k = 0; k < h; ++k) a[k] = a[h], a[x.size() - 1 - k] = a[x.size() - 1 - h];
+  return a;
+}
+
+/// `name`'s first parameter among the findings of `d` (0 when not named).
+double found(const Diagnosis& d, const std::string& name) {
+  for (const auto& f : d.findings)
+    if (f.effect->name() == name) return f.params.front();
+  return 0.0;
+}
+
+/// What `d` fitted of `name` at its first step, accepted or not (0 when screened or not tried).
+double carried(const Diagnosis& d, const std::string& name) {
+  for (const auto& c : d.candidates)
+    if (c.effect->name() == name && c.step == 0 && !c.params.empty()) return c.params.front();
+  return found(d, name);
+}
+
+void print(const std::string& what, const Diagnosis& d) {
+  std::cout << what << ": baseline FIT " << d.baseline_fit_percent << " %, final "
+            << d.final_fit_percent << " %\n";
+  for (const auto& f : d.findings)
+    std::cout << "  named " << f.effect->name() << " " << f.params.front() << "\n";
+  for (const auto& n : d.notes) std::cout << "  note: " << n << "\n";
+}
+
+/// The protocol on one held-out test: nothing named on it as recorded; a moving mass and a seal
+/// friction, each a tenth of its force rms, named and sized.
+void check_held_out(const std::string& test) {
+  if (!std::filesystem::exists(kDir + test + ".csv")) GTEST_SKIP() << "shared data absent";
+  const ModelBaseline model = family_without(test);
+  const Recording original = held_out(test);
+  const Diagnosis plain = diagnose_with(original, model);
+  print(test + " as recorded", plain);
+  EXPECT_TRUE(plain.findings.empty()) << "a false finding on the unmodified recording";
+
+  const double sign = model_sign(original);
+  const double force_rms = rms_about_mean(original.column("force"));
+  const auto a = acceleration(original);
+  const double mass = 0.1 * force_rms / rms_about_mean(a);  // [kg]
+  Recording heavier = original;
+  for (std::size_t k = 0; k < a.size(); ++k) heavier.columns["force"][k] += sign * mass * a[k];
+  const Diagnosis d_mass = diagnose_with(heavier, model);
+  print(test + " with " + std::to_string(mass) + " kg", d_mass);
+  const double area2 = kPistonArea * kPistonArea;
+  const double m_found = found(d_mass, "fluid_inertia") * area2;
+  const double m_carried = carried(plain, "fluid_inertia") * area2;
+  std::cout << "mass: injected " << mass << " kg, found " << m_found << " kg, carried before "
+            << m_carried << " kg\n";
+  EXPECT_GT(m_found, 0.0) << "the mass is not named";
+  EXPECT_NEAR(m_found / mass, 1.0, 0.3);
+  EXPECT_NEAR((m_found - m_carried) / mass, 1.0, 0.1);
+
+  const double coulomb = 0.1 * force_rms;  // [N]
+  Recording rubbing = original;
+  const auto& v = original.column("velocity");
+  for (std::size_t k = 0; k < v.size(); ++k)
+    rubbing.columns["force"][k] += sign * coulomb * std::tanh(v[k] / 1e-3);
+  const Diagnosis d_friction = diagnose_with(rubbing, model);
+  print(test + " with " + std::to_string(coulomb) + " N of friction", d_friction);
+  const double f_found = found(d_friction, "friction");
+  const double f_carried = carried(plain, "friction");
+  std::cout << "friction: injected " << coulomb << " N, found " << f_found << " N, carried before "
+            << f_carried << " N\n";
+  EXPECT_GT(f_found, 0.0) << "the friction is not named";
+  EXPECT_NEAR(f_found / coulomb, 1.0, 0.3);
+}
+
+TEST(DiagnoseRealInjection, HeldOutTenMillimetreTestAtQuarterAmpere) {
+  check_held_out("10mm1Hz0x25A");
+}
+
+TEST(DiagnoseRealInjection, HeldOutTenMillimetreTestAtThreeQuarterAmpere) {
+  check_held_out("10mm1Hz0x75A");
+}
+
+}  // namespace
