@@ -42,6 +42,13 @@ struct FittedModelBlocks {
   double sign = 1.0;                  ///< sign of the model output's correlation with the velocity
 };
 
+/// A quantity derived from a candidate's fitted parameters (e.g. a damper's moving mass).
+struct DerivedParam {
+  std::string name;
+  double value = 0.0;  ///< SI
+  std::string unit;    ///< SI unit ("1" when dimensionless)
+};
+
 /// A piece of candidate physics (abstract): its name, where it applies, its parameters, how it
 /// composes with either kind of baseline, its report text and the rules particular to it (each
 /// a virtual hook with a neutral default).
@@ -81,9 +88,10 @@ class Candidate {
   /// failing that a generic advice is given).
   virtual std::string separating_measurement(const Candidate& /*other*/) const { return ""; }
 
-  /// Quantities derived from its fitted `params` that the JSON report gives beside them.
-  virtual std::vector<std::pair<std::string, double>> derived_params(
-      const std::vector<double>& /*params*/) const {
+  /// Quantities derived from its fitted `params` on `model` that the JSON report gives beside
+  /// them (SI).
+  virtual std::vector<DerivedParam> derived_params(const DiagnosisModel& /*model*/,
+                                                   const std::vector<double>& /*params*/) const {
     return {};
   }
 

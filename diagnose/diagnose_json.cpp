@@ -65,7 +65,7 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
       u[f.param_names[j]] =
           std::isfinite(f.standard_errors[j]) ? json(f.standard_errors[j]) : json();
     }
-    for (const auto& [name, value] : f.effect->derived_params(f.params)) p[name] = value;
+    for (const auto& q : f.derived) p[q.name] = q.value, units[q.name] = q.unit;
     json e = {{"name", f.effect->name()},
               {"params", p},
               {"standard_errors", u},

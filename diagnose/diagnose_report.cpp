@@ -123,6 +123,8 @@ std::string diagnosis_text(const Diagnosis& d) {
         o << (j == 0 ? " " : ", ") << parameter_text(f, j);
       o << "\n";
     }
+    for (const auto& q : f.derived)
+      o << "    derived: " << q.name << " = " << value_text(q.value, q.unit) << "\n";
     o << "    " << f.evidence << "\n";
     if (!f.ambiguous_with.empty())
       o << "    " << ambiguity_text(f, d) << "\n    to separate them: " << f.separating_measurement
@@ -183,6 +185,9 @@ std::string diagnosis_html(const Diagnosis& d) {
       o << "</td><td>";
       for (std::size_t j = 0; j < f.params.size(); ++j)
         o << html_escape(parameter_text(f, j, "\u00b1")) << "<br>";
+      for (const auto& q : f.derived)
+        o << "<i>derived:</i> " << html_escape(q.name + " = " + value_text(q.value, q.unit))
+          << "<br>";
       o << "</td><td>" << selection_stage(f.step) << "; " << percent_text(f.fit_percent)
         << "</td><td>" << html_escape(f.evidence);
       if (!f.ambiguous_with.empty())

@@ -251,6 +251,7 @@ Diagnosis diagnose(const lumped::Recording& recording, const DiagnoseOptions& op
       f.standard_errors.push_back(current.standard_errors[offset]);
       ++offset;
     }
+    f.derived = f.effect->derived_params(model, f.params);
     f.evidence = finding_evidence(f, d, current);
   }
   const bool chamber_finding = std::any_of(d.findings.begin(), d.findings.end(), [](const auto& f) {

@@ -73,7 +73,9 @@ struct Finding {
   std::vector<std::string> param_units;  ///< SI unit of each parameter ("1": dimensionless)
   std::vector<double> params;            ///< SI, from the final joint re-fit
   std::vector<double> standard_errors;   ///< SI
-  double fit_percent = 0.0;              ///< FIT% once this effect was added (selection stage)
+  /// Quantities derived from params (Candidate::derived_params, e.g. a damper's moving mass).
+  std::vector<DerivedParam> derived;
+  double fit_percent = 0.0;  ///< FIT% once this effect was added (selection stage)
   double delta_bic = 0.0;
   double heldout_gain = 0.0;  ///< fraction by which the held-out squared error fell
   double share = 0.0;         ///< share of the residual energy above the noise floor it removed

@@ -55,10 +55,11 @@ class Compressibility final : public Candidate {
     return "";
   }
 
-  std::vector<std::pair<std::string, double>> derived_params(
-      const std::vector<double>& params) const override {
+  std::vector<DerivedParam> derived_params(const DiagnosisModel& /*model*/,
+                                           const std::vector<double>& params) const override {
     if (params.empty()) return {};
-    return {{"hydraulic_capacitance", params[0] / 1e5}};  // isothermal air at the 1e5 Pa precharge
+    return {{"hydraulic_capacitance", params[0] / 1e5,
+             "m^3/Pa"}};  // isothermal air at the 1e5 Pa precharge
   }
 
   bool uses_chamber_volume() const override { return true; }

@@ -77,9 +77,9 @@ class FluidHeating final : public Candidate {
            "voltage-driven coil and with it the yield part";
   }
 
-  std::vector<std::pair<std::string, double>> derived_params(
-      const std::vector<double>& params) const override {
-    return {{"viscosity_change_per_watt", viscosity_change_per_watt(params.at(0))}};
+  std::vector<DerivedParam> derived_params(const DiagnosisModel& /*model*/,
+                                           const std::vector<double>& params) const override {
+    return {{"viscosity_change_per_watt", viscosity_change_per_watt(params.at(0)), "1/W"}};
   }
 
  private:

@@ -73,6 +73,15 @@ class FluidInertia final : public Candidate {
       blocks.added_output[j] += gain * (v[j + 1] - v[j - 1]) / (rec.t[j + 1] - rec.t[j - 1]);
   }
 
+  std::vector<DerivedParam> derived_params(const DiagnosisModel& model,
+                                           const std::vector<double>& params) const override {
+    // On a damper the force is A^2 L a: the moving mass the inertance stands for [kg].
+    const double area = model.baseline().piston_area;
+    if (params.empty() || model.baseline().kind != lumped::RigKind::damper || !(area > 0.0))
+      return {};
+    return {{"moving_mass", params[0] * area * area, "kg"}};
+  }
+
   std::string evidence(const Diagnosis& d, const ModelFit& fit) const override {
     std::ostringstream o;
     const double lag_ms = 1e3 * d.baseline_stats.output_lag;

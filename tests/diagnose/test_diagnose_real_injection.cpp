@@ -140,6 +140,14 @@ void check_held_out(const std::string& test) {
   std::cout << "mass: injected " << mass << " kg, found " << m_found << " kg, carried before "
             << m_carried << " kg\n";
   EXPECT_GT(m_found, 0.0) << "the mass is not named";
+  // The report gives the mass itself beside the inertance (A^2 L, the damper's force A^2 L a).
+  for (const auto& f : d_mass.findings)
+    if (f.effect->name() == "fluid_inertia") {
+      ASSERT_EQ(f.derived.size(), 1u);
+      EXPECT_EQ(f.derived[0].name, "moving_mass");
+      EXPECT_EQ(f.derived[0].unit, "kg");
+      EXPECT_NEAR(f.derived[0].value, m_found, 1e-9 * m_found);
+    }
   EXPECT_NEAR(m_found / mass, 1.0, 0.3);
   EXPECT_NEAR((m_found - m_carried) / mass, 1.0, 0.1);
 
