@@ -21,6 +21,7 @@ const Candidate& mr_response_time();
 const Candidate& friction();
 const Candidate& pre_yield();
 const Candidate& fluid_heating();
+const Candidate& gas_spring();
 }  // namespace candidates
 
 namespace {
@@ -42,6 +43,7 @@ const std::vector<Registration>& registry() {
       {&candidates::coil_inductance(), 7, 4},     {&candidates::coil_heating(), 8, 0},
       {&candidates::mr_response_time(), 4, 1},    {&candidates::friction(), 9, 6},
       {&candidates::pre_yield(), 2, 0},           {&candidates::fluid_heating(), 10, 0},
+      {&candidates::gas_spring(), 11, 7},
   };
   return r;
 }

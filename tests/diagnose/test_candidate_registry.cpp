@@ -27,12 +27,12 @@ std::vector<std::string> names(const std::vector<const Candidate*>& list) {
 
 }  // namespace
 
-TEST(CandidateRegistry, ListsTheTenCandidatesWithUniqueNames) {
+TEST(CandidateRegistry, ListsTheElevenCandidatesWithUniqueNames) {
   const auto all = names(registered_candidates());
-  EXPECT_EQ(all, (std::vector<std::string>{"compressibility", "fluid_inertia",
-                                           "magnetic_hysteresis", "eddy_currents",
-                                           "coil_inductance", "coil_heating", "mr_response_time",
-                                           "friction", "pre_yield", "fluid_heating"}));
+  EXPECT_EQ(all, (std::vector<std::string>{
+                     "compressibility", "fluid_inertia", "magnetic_hysteresis", "eddy_currents",
+                     "coil_inductance", "coil_heating", "mr_response_time", "friction", "pre_yield",
+                     "fluid_heating", "gas_spring"}));
   EXPECT_EQ(std::set<std::string>(all.begin(), all.end()).size(), all.size());
   for (const auto& name : all) EXPECT_EQ(candidate_named(name).name(), name);
   EXPECT_THROW(candidate_named("no_such_effect"), std::exception);
@@ -43,11 +43,12 @@ TEST(CandidateRegistry, TrialOrderOfEachBaseline) {
       names(candidates_in_trial_order(false)),
       (std::vector<std::string>{"compressibility", "pre_yield", "fluid_inertia", "mr_response_time",
                                 "eddy_currents", "magnetic_hysteresis", "coil_inductance",
-                                "coil_heating", "friction", "fluid_heating"}));
+                                "coil_heating", "friction", "fluid_heating", "gas_spring"}));
   // On a fitted model: the blocks on its inputs, then those on its output.
-  EXPECT_EQ(names(candidates_in_trial_order(true)),
-            (std::vector<std::string>{"mr_response_time", "eddy_currents", "magnetic_hysteresis",
-                                      "coil_inductance", "fluid_inertia", "friction"}));
+  EXPECT_EQ(
+      names(candidates_in_trial_order(true)),
+      (std::vector<std::string>{"mr_response_time", "eddy_currents", "magnetic_hysteresis",
+                                "coil_inductance", "fluid_inertia", "friction", "gas_spring"}));
 }
 
 TEST(CandidateRegistry, EveryParameterHasAUnit) {

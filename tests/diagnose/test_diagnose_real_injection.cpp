@@ -1,13 +1,15 @@
 // Diagnosis parameters on real recordings (issue 33 point 3): the real-recording protocol.
 // A `damper` family is fitted on UTFSM tests of another lab's damper (M. Quiroz, UTFSM 2022) that
 // exclude the held-out 10 mm / 1 Hz test; the held-out test, unmodified and with a known moving
-// mass or seal friction added to its measured force, is diagnosed against that model
+// mass, seal friction or spring added to its measured force, is diagnosed against that model
 // (`--baseline`), and the found size is scored against the injected one.
 // References and tolerances:
 // - the unmodified recording: nothing named (a false finding fails);
 // - the injection is sized at a tenth of the recording's force rms (m a_rms or F_c), added with
 //   the model's sign; its acceleration comes from the displacement (second difference over
 //   +-5 ms), not from the velocity column the diagnosis differentiates;
+// - a stiffness (a gas spring, F += k (x - mean x)) sized the same way, at a tenth of the force
+//   rms over the displacement's rms;
 // - the effect is named and its size within 30 % of the injected (the issue's target);
 // - differentially, the found size minus what the unmodified recording already carries of the
 //   same candidate (its fit at the first step, accepted or not, now in the report) within 10 %:
@@ -20,6 +22,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -116,8 +119,8 @@ void print(const std::string& what, const Diagnosis& d) {
   for (const auto& n : d.notes) std::cout << "  note: " << n << "\n";
 }
 
-/// The protocol on one held-out test: nothing named on it as recorded; a moving mass and a seal
-/// friction, each a tenth of its force rms, named and sized.
+/// The protocol on one held-out test: nothing named on it as recorded; a moving mass, a seal
+/// friction and a spring, each a tenth of its force rms, named and sized.
 void check_held_out(const std::string& test) {
   if (!std::filesystem::exists(kDir + test + ".csv")) GTEST_SKIP() << "shared data absent";
   const ModelBaseline model = family_without(test);
@@ -164,6 +167,19 @@ void check_held_out(const std::string& test) {
             << f_carried << " N\n";
   EXPECT_GT(f_found, 0.0) << "the friction is not named";
   EXPECT_NEAR(f_found / coulomb, 1.0, 0.3);
+
+  const auto& x = original.column("displacement");
+  const double x_mean = std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(x.size());
+  const double stiffness = 0.1 * force_rms / rms_about_mean(x);  // [N/m]
+  Recording sprung = original;
+  for (std::size_t k = 0; k < x.size(); ++k)
+    sprung.columns["force"][k] += sign * stiffness * (x[k] - x_mean);
+  const Diagnosis d_spring = diagnose_with(sprung, model);
+  print(test + " with " + std::to_string(stiffness) + " N/m", d_spring);
+  const double k_found = found(d_spring, "gas_spring");
+  std::cout << "stiffness: injected " << stiffness << " N/m, found " << k_found << " N/m\n";
+  EXPECT_GT(k_found, 0.0) << "the stiffness is not named";
+  EXPECT_NEAR(k_found / stiffness, 1.0, 0.3);
 }
 
 TEST(DiagnoseRealInjection, HeldOutTenMillimetreTestAtQuarterAmpere) {
