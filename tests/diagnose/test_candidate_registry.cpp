@@ -1,4 +1,4 @@
-// The candidate registry: the nine candidates, unique names, SI units on every parameter, and
+// The candidate registry: the eleven candidates, unique names, SI units on every parameter, and
 // the trial order of each kind of baseline.
 
 #include <gtest/gtest.h>
