@@ -2,6 +2,8 @@
 
 #include <omp.h>
 
+#include "magnetostatics/inline_openmp.hpp"
+
 #include <cstdlib>
 
 namespace rheomag::magnetostatics {
@@ -18,9 +20,12 @@ SerialOpenMp::SerialOpenMp() {
   if (user_limits_threads()) return;
   saved_ = omp_get_max_active_levels();
   if (saved_ != 0) omp_set_max_active_levels(0);
+  inline_ = inline_openmp_enabled();
+  if (inline_) ++inline_openmp_depth();
 }
 
 SerialOpenMp::~SerialOpenMp() {
+  if (inline_) --inline_openmp_depth();
   if (saved_ > 0) omp_set_max_active_levels(saved_);
 }
 
