@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <utility>
+#include <vector>
 
 #include "case/problem.hpp"
 #include "magnetostatics/results.hpp"
@@ -30,8 +31,15 @@ std::pair<cases::Problem, mesh::Mesh> close_and_mesh(const cases::Problem& probl
 std::unique_ptr<MagnetostaticSolver> make_solver(const cases::Problem& problem,
                                                  const SolveOptions& options = {});
 
+/// The coarser copies of a closed problem's mesh with `fine_nodes` nodes that solve_problem solves
+/// first (coarsest first, sizes x2, x4, ...; SolveOptions::nested_above); empty for a mesh at
+/// or under that bound.
+std::vector<mesh::Mesh> coarser_meshes(const cases::Problem& closed, std::size_t fine_nodes,
+                                       const SolveOptions& options);
+
 /// close_domain -> mesh::generate_mesh (order Problem::order, Problem::min_gap_elements) ->
-/// MagnetostaticSolver -> solve at the Problem's circuit currents -> compute_results.
+/// MagnetostaticSolver -> solve at the Problem's circuit currents (by nested iteration above
+/// SolveOptions::nested_above nodes) -> compute_results.
 /// Throws InputError for bad input and ConvergenceError if Newton fails.
 SolveResult solve_problem(const cases::Problem& problem, const SolveOptions& options = {});
 

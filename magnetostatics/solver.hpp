@@ -36,6 +36,11 @@ struct SolveOptions {
   bool incremental_inductance = true;  ///< compute dlambda/dI (one extra factorisation)
   /// Meshing, used by solve_problem only (its order and min_gap_elements come from the Problem).
   mesh::MeshOptions mesh;
+  /// solve_problem only: meshes with more nodes than this are solved by nested iteration
+  /// (nested_solve.hpp: coarser copies of the mesh first, each a quarter of the nodes of the
+  /// next, down to about nested_above / 10); the same solution to Newton's tolerance in fewer
+  /// fine Newton steps (docs/performance.md, round 5). 0: never.
+  long nested_above = 200'000;
 };
 
 /// One solution: the nodal vector potential and the circuit quantities.

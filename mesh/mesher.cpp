@@ -99,6 +99,9 @@ void check_options(const Pslg& pslg, const MeshOptions& options) {
   if (!(std::isfinite(options.default_size) && options.default_size >= 0.0))
     throw InputError(name + "default_size = " + format_number(options.default_size) +
                      "; expected a length >= 0 (0 = automatic)");
+  if (!(std::isfinite(options.size_scale) && options.size_scale > 0.0))
+    throw InputError(name + "size_scale = " + format_number(options.size_scale) +
+                     "; expected a factor > 0");
   if (options.min_gap_elements < 1)
     throw InputError(name + "min_gap_elements = " + std::to_string(options.min_gap_elements) +
                      "; expected >= 1");
@@ -121,6 +124,7 @@ std::vector<double> region_sizes(const Pslg& pslg, const MeshOptions& options,
     size[r] = region.mesh_size > 0.0 ? region.mesh_size : default_size;
     if (region.gap != GapKind::none)
       size[r] = std::min(size[r], geometry[r].thickness / options.min_gap_elements);
+    size[r] *= options.size_scale;
   }
   return size;
 }

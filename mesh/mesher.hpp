@@ -17,11 +17,14 @@ struct MeshOptions {
   double default_size = 0.0;               ///< target edge length of regions without
                                            ///< mesh_size; 0 = longest bounding-box side / 30
   int min_gap_elements = 4;                ///< elements across every fluid-gap region (>= 1)
-  double grading = 0.3;                    ///< size growth per unit distance from a finer
-                                           ///< region or segment; 0 = no grading
-  long max_elements = 5'000'000;           ///< refuse (InputError) meshes estimated larger
-  double max_memory = 0.0;                 ///< refuse meshes whose solve is estimated to need
-                                           ///< more [bytes]; 0 = default_memory_limit()
+  /// Every target size (regions, default, fluid gaps) times this: 2 gives a copy of the mesh with
+  /// about a quarter of the nodes (the coarser levels of a nested solve). > 0.
+  double size_scale = 1.0;
+  double grading = 0.3;           ///< size growth per unit distance from a finer
+                                  ///< region or segment; 0 = no grading
+  long max_elements = 5'000'000;  ///< refuse (InputError) meshes estimated larger
+  double max_memory = 0.0;        ///< refuse meshes whose solve is estimated to need
+                                  ///< more [bytes]; 0 = default_memory_limit()
   /// Hears the meshing's progress: the checked geometry, then triangles made (twice the
   /// vertices) of the estimate every 20 000 points inserted, and the end (the same mesh as
   /// without it). Empty: no reports.
