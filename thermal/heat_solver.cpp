@@ -14,6 +14,7 @@
 #include "core/format_text.hpp"
 #include "magnetostatics/cholmod_status.hpp"
 #include "magnetostatics/lagrange.hpp"
+#include "magnetostatics/serial_openmp.hpp"
 
 namespace rheomag::thermal {
 
@@ -353,6 +354,9 @@ Eigen::VectorXd HeatSolver::uniform(double celsius) const {
 
 HeatSolver::Factor& HeatSolver::factor_for(double mass_scale) {
   if (factor_ && factor_scale_ == mass_scale) return *factor_;
+  // CHOLMOD's OpenMP regions on this thread, inline, as in the magnetic solver: its compiled-in
+  // teams of 4 threads wait at barriers on a 2-core machine (docs/performance.md, round 3 and 5).
+  const magnetostatics::SerialOpenMp serial;
   const Matrix system =
       mass_scale == 0.0 ? stiffness_free_ : Matrix(stiffness_free_ + mass_scale * mass_free_);
   if (!factor_) {
