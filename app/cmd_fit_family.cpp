@@ -135,7 +135,9 @@ const bool fit_family_registered = rheomag::app::register_command([](CLI::App& r
                 "field, fit_percent, rmse_percent, re, mean_removed, band_rms, band_percent, "
                 "repeatability_percent, level_fit_percent, level_pure_fit_percent, level_gain, "
                 "level_offset, level_window_s, viscosity_factor, "
-                "viscosity_temperature_offset_k}), "
+                "viscosity_temperature_offset_k, regimes: the residual's share in the reversals "
+                "and in the settled strokes of each direction, {transition, positive, negative} "
+                "each {time_percent, energy_percent, rms, mean}}), "
                 "held_out (the same, with --cross-validate), mode");
   cmd->add_flag("--cross-validate", o->cross_validate,
                 "Also refit once without each training recording and predict it (leave one "

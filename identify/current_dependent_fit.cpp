@@ -27,6 +27,8 @@ FamilyMember evaluate_family_member(const lumped::Recording& rec, const GreyboxF
   m.metrics = lumped::compute_metrics(rec.column(fit.setup.output_column), m.simulated);
   m.repeatability = repeatability_percent(rec.t, rec.column(fit.setup.motion_column),
                                           rec.column(fit.setup.output_column));
+  m.regimes = residual_regimes(rec.column(fit.setup.motion_column),
+                               rec.column(fit.setup.output_column), m.simulated);
   return m;
 }
 

@@ -11,6 +11,7 @@
 #include "identify/greybox.hpp"
 #include "identify/level_calibration.hpp"
 #include "identify/prediction_band.hpp"
+#include "identify/residual_regimes.hpp"
 #include "identify/viscosity_nuisance.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording.hpp"
@@ -53,6 +54,9 @@ struct FamilyMember {
   /// Training recordings under FamilyFitOptions::viscosity_nuisance: the recording's fitted
   /// viscosity factor (geometric mean 1 over the training recordings); empty otherwise.
   std::optional<double> viscosity_factor;
+  /// The model's residual on the recording by regime of its measured cycle (reversals, settled
+  /// strokes in each direction; residual_regimes); empty where the motion is constant.
+  std::optional<ResidualRegimes> regimes;
   std::vector<double> simulated;  ///< free-run model output at the recording's samples
 };
 

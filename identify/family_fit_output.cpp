@@ -18,6 +18,20 @@ nlohmann::json level_json(const FamilyMember& m, Value LevelCalibration::*value)
   return m.level ? nlohmann::json((*m.level).*value) : nlohmann::json();
 }
 
+nlohmann::json regime_json(const RegimeResidual& r) {
+  return {{"time_percent", r.time_percent},
+          {"energy_percent", r.energy_percent},
+          {"rms", r.rms},
+          {"mean", r.mean}};
+}
+
+nlohmann::json regimes_json(const FamilyMember& m) {
+  if (!m.regimes) return nullptr;
+  return {{"transition", regime_json(m.regimes->transition)},
+          {"positive", regime_json(m.regimes->positive)},
+          {"negative", regime_json(m.regimes->negative)}};
+}
+
 nlohmann::json member_json(const FamilyMember& m) {
   return {{"file", m.csv_path},
           {"field", m.field},
@@ -38,7 +52,8 @@ nlohmann::json member_json(const FamilyMember& m) {
            m.viscosity_factor ? nlohmann::json(*m.viscosity_factor) : nlohmann::json()},
           {"viscosity_temperature_offset_k",
            m.viscosity_factor ? nlohmann::json(viscosity_temperature_offset(*m.viscosity_factor))
-                              : nlohmann::json()}};
+                              : nlohmann::json()},
+          {"regimes", regimes_json(m)}};
 }
 
 void print_members(std::ostream& out, const char* title, const std::vector<FamilyMember>& members) {
@@ -72,6 +87,27 @@ void print_members(std::ostream& out, const char* title, const std::vector<Famil
                          viscosity_temperature_offset(*m.viscosity_factor));
     out << format_text("%s\n",
                        m.mean_removed ? "  (mean removed: compared without the model's mean)" : "");
+  }
+}
+
+/// One line per member: the share of its residual energy (and of its time) in each regime, and
+/// the mean residual of the settled strokes.
+void print_regimes(std::ostream& out, const char* title, const std::vector<FamilyMember>& members) {
+  out << format_text("%s\n  %-40s %19s %31s %31s\n", title, "recording", "reversals",
+                     "strokes with motion > 0", "strokes with motion < 0");
+  for (const auto& m : members) {
+    out << format_text("  %-40s", m.csv_path.c_str());
+    if (!m.regimes) {
+      out << "  - (constant motion)\n";
+      continue;
+    }
+    const ResidualRegimes& g = *m.regimes;
+    out << format_text(" %8.0f %% of %3.0f %%", g.transition.energy_percent,
+                       g.transition.time_percent);
+    for (const RegimeResidual* r : {&g.positive, &g.negative})
+      out << format_text(" %5.0f %% of %3.0f %%, mean %+8.3g", r->energy_percent, r->time_percent,
+                         r->mean);
+    out << "\n";
   }
 }
 
@@ -153,6 +189,15 @@ void write_family_fit_text(const FamilyFit& r, std::size_t recordings, int decim
                   r.held_out);
     print_held_out_summary(out, r);
   }
+  out << "residual by regime (% of the model's residual energy in % of the samples; mean "
+         "residual of the settled strokes, model minus measured):\n";
+  print_regimes(out, " training:", r.training);
+  if (!r.predicted.empty()) print_regimes(out, " predicted:", r.predicted);
+  if (!r.held_out.empty()) print_regimes(out, " held out:", r.held_out);
+  out << format_text(
+      "reversals: from each reversal of the motion until the measured force reaches %.0f %% of "
+      "its median over the stroke (pre-yield, compliance, seal presliding, low speed)\n",
+      100.0 * kSettledFraction);
   out << format_text(
       "rep%%: FIT of each recording's own mean cycle on its steady cycles, the most a model "
       "answering a periodic drive with a periodic output reaches there (- : drive not "

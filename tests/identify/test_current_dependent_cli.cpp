@@ -85,6 +85,23 @@ TEST(FitFamilyCli, FitsAFamilyAndPredictsAThirdFrequency) {
   EXPECT_NEAR(j["prediction"][0]["field"].get<double>(), 0.5, 1e-12);
   EXPECT_LT(j["prediction"][0]["re"].get<double>(), 0.02);
   for (const auto& m : j["train"]) EXPECT_LT(m["re"].get<double>(), 0.02);
+  // Every recording's residual by regime: three regimes whose time and energy shares add to 100.
+  for (const auto& m : j["prediction"]) {
+    double time = 0.0, energy = 0.0;
+    for (const char* regime : {"transition", "positive", "negative"}) {
+      ASSERT_TRUE(m["regimes"].contains(regime)) << m.dump();
+      time += m["regimes"][regime]["time_percent"].get<double>();
+      energy += m["regimes"][regime]["energy_percent"].get<double>();
+      EXPECT_GE(m["regimes"][regime]["rms"].get<double>(), 0.0);
+    }
+    EXPECT_NEAR(time, 100.0, 1e-9);
+    EXPECT_NEAR(energy, 100.0, 1e-9);
+  }
+  const CliRun text = run_fit_family(training + " --model lugre --decimation 2 --predict " +
+                                     prediction + " --quiet");
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("residual by regime"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("reversals: from each reversal"), std::string::npos) << text.out;
 
   const CliRun bad_model = run_fit_family(training + " --model arx:2,2,1");
   EXPECT_EQ(bad_model.code, 2);
