@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/command.hpp"
 #include "app/progress_lines.hpp"
@@ -19,6 +20,7 @@ using namespace rheomag::identify;
 /// The options of `rheomag fit`: the request plus how to print it.
 struct FitOptions {
   FitRequest request;
+  std::vector<std::string> holds;  ///< --hold NAME=VALUE
   bool json = false;
   bool quiet = false;
 };
@@ -26,6 +28,7 @@ struct FitOptions {
 void run_fit_command(const FitOptions& o) {
   FitRequest request = o.request;
   request.load_recording = rheomag::app::load_recording;
+  request.held = rheomag::app::parse_holds(o.holds);
   if (!o.quiet) request.progress = rheomag::app::progress_lines("fit", std::cerr);
   const FitRun run = run_fit(request);
   if (o.json)
@@ -79,6 +82,7 @@ const bool fit_registered = rheomag::app::register_command([](CLI::App& root) {
                       CLI::ignore_case)
                       .description(""))
       ->type_name("simulation|prediction");
+  rheomag::app::add_hold_option(cmd, o->holds);
   cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr (grey-box fits report them)");
   cmd->add_flag("--json", o->json,
                 "Print one JSON object: the fitted model (format, kind, model, rig, drive, output, "

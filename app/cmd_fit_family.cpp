@@ -37,6 +37,7 @@ struct FamilyOptions {
   bool cross_validate = false;
   std::string report;
   std::string viscosity_nuisance;  ///< "LO:HI" or empty
+  std::vector<std::string> holds;  ///< --hold NAME=VALUE
 };
 
 /// The --viscosity-nuisance bounds "LO:HI" (0 < LO <= 1 <= HI <= 100).
@@ -77,6 +78,7 @@ void run_fit_family(const FamilyOptions& o) {
   }
   for (const auto& f : o.predict) prediction.push_back(rheomag::app::load_recording(f));
   FamilyFitOptions options;
+  options.greybox.held = rheomag::app::parse_holds(o.holds);
   options.decimation = o.decimation;
   options.greybox.starts = o.starts;
   options.greybox.max_substep = o.max_substep;
@@ -139,6 +141,7 @@ const bool fit_family_registered = rheomag::app::register_command([](CLI::App& r
                 "and in the settled strokes of each direction, {transition, positive, negative} "
                 "each {time_percent, energy_percent, rms, mean}}), "
                 "held_out (the same, with --cross-validate), mode");
+  rheomag::app::add_hold_option(cmd, o->holds);
   cmd->add_flag("--cross-validate", o->cross_validate,
                 "Also refit once without each training recording and predict it (leave one "
                 "recording out): the FIT to expect on a test the fit has not seen. Costs a fit of "

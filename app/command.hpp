@@ -9,6 +9,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/finite_stdout.hpp"
@@ -48,6 +49,21 @@ inline CLI::Option* add_set_option(CLI::App* cmd, std::vector<std::string>& sett
       ->type_name("KEY=VALUE")
       ->allow_extra_args(false);  // one setting per --set: a case path after it stays the case
 }
+
+/// Adds the repeatable `--hold NAME=VALUE` option of the grey-box fits (`fit`, `fit-family`).
+inline CLI::Option* add_hold_option(CLI::App* cmd, std::vector<std::string>& holds) {
+  return cmd
+      ->add_option("--hold", holds,
+                   "Grey-box models: hold a parameter at a value instead of fitting it, "
+                   "NAME=VALUE in SI units (repeatable), e.g. --hold inertance=20 for a fluid "
+                   "inertance known from the geometry; reported as held")
+      ->type_name("NAME=VALUE")
+      ->allow_extra_args(false);
+}
+
+/// The --hold settings as (name, value) pairs; InputError "--hold: expected NAME=VALUE ..." for
+/// one without '=', an empty name or a value that is not a finite number.
+std::vector<std::pair<std::string, double>> parse_holds(const std::vector<std::string>& holds);
 
 /// The help suffix of a quantity option: its SI unit and the units it accepts.
 inline std::string unit_help(QuantityKind kind) {

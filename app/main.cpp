@@ -6,10 +6,13 @@
 #include <vtkObject.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <new>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/command.hpp"
@@ -79,6 +82,30 @@ lumped::Recording load_recording(const std::string& csv_path) {
 
 cases::Case load_case(const std::string& path, const std::vector<std::string>& settings) {
   return cases::with_settings(cases::load_case(path), settings, "--set");
+}
+
+std::vector<std::pair<std::string, double>> parse_holds(const std::vector<std::string>& holds) {
+  std::vector<std::pair<std::string, double>> out;
+  for (const std::string& text : holds) {
+    const auto eq = text.find('=');
+    double value = 0.0;
+    std::size_t used = 0;
+    if (eq != std::string::npos && eq > 0 && eq + 1 < text.size()) {
+      try {
+        value = std::stod(text.substr(eq + 1), &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+    }
+    if (eq == std::string::npos || eq == 0 || used == 0 || used != text.size() - eq - 1 ||
+        !std::isfinite(value))
+      throw InputError(
+          "--hold: expected NAME=VALUE (a parameter of the model and a finite "
+          "number in SI units, e.g. inertance=20), got \"" +
+          text + "\"");
+    out.emplace_back(text.substr(0, eq), value);
+  }
+  return out;
 }
 
 void setup_commands(CLI::App& root) {

@@ -140,6 +140,7 @@ FitReport fit_grey_box_model(const FitRequest& o, const Recording& rec, const Sa
   GreyboxOptions options;
   options.train = train;
   options.progress = o.progress;
+  options.held = o.held;
   const GreyboxFit fit = fit_greybox(rec, o.model, options);
   FitReport report = grey_box_report(
       fit, rec, train, val, [&](const Recording& other) { return simulate_greybox(other, fit); });
@@ -238,6 +239,10 @@ FitRun run_fit(const FitRequest& o) {
     throw InputError("--model '" + o.model + "' is not a model rheomag knows; did you mean '" +
                      closest_model_name(o.model, known_model_names()) + "'?");
   }
+  if (!o.held.empty() && !is_greybox_model(o.model))
+    throw InputError("--hold: holds a parameter of a grey-box model; '" + o.model +
+                     "' is not one (" +
+                     (valve_chain ? "the valve-chain fit" : "a black-box model") + ")");
   if (!o.plot.empty() && !gnuplot_available())
     throw InputError("--plot needs gnuplot on PATH (Debian package gnuplot-nox)");
   Recording rec = o.load_recording(o.recording);

@@ -8,6 +8,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/progress.hpp"
@@ -28,6 +29,9 @@ struct FitRequest {
   EvalMode mode = EvalMode::simulation;
   std::string plot;           ///< PNG of measured vs model to write; empty: none
   ProgressCallback progress;  ///< grey-box fits' iterations; empty: none
+  /// Grey-box fits: parameters held at a value (GreyboxOptions::held); InputError for another
+  /// model kind.
+  std::vector<std::pair<std::string, double>> held;
   /// Reads a recording (the CLI's reader also reports its warnings).
   std::function<lumped::Recording(const std::string&)> load_recording;
 };

@@ -18,6 +18,7 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "core/format_text.hpp"
 #include "identify/greybox_fit_data.hpp"
 #include "identify/multistart_fit.hpp"
 #include "identify/standard_errors.hpp"
@@ -211,16 +212,66 @@ ParamGuess initial_guess(lumped::PhenoKind kind, const lumped::DriveSeries& d,
 }
 
 /// run_fit<N, NF> for the free-parameter count `nf` of `guess`, NF one of the listed counts (the
-/// model's parameters with and without its field terms).
+/// model's parameters with and without its field terms). A count that is not listed (parameters
+/// held by GreyboxOptions::held) runs in the next larger one, with that many held parameters
+/// pinned in free slots (ParamGuess::pinned): the same fit, without an instantiation per count.
 template <int N, int... NF>
 void run_fit_free(const FitData& data, const lumped::GreyboxSetup& setup, const ParamGuess& guess,
                   const GreyboxOptions& options, GreyboxFit& fit) {
   const int nf = static_cast<int>(std::count(guess.fixed.begin(), guess.fixed.end(), false));
+  int slots = N + 1;  // the smallest listed count >= nf
+  ((NF >= nf && NF < slots ? (slots = NF, 0) : 0), ...);
+  if (slots > N)
+    throw std::logic_error("grey-box fit of " + fit.model + ": unexpected free-parameter count " +
+                           std::to_string(nf));
+  ParamGuess slotted = guess;
+  int to_pin = slots - nf;
+  if (to_pin > 0) {
+    slotted.pinned.assign(guess.fixed.size(), false);
+    for (std::size_t k = 0; k < guess.fixed.size() && to_pin > 0; ++k)
+      if (guess.fixed[k]) {
+        slotted.fixed[k] = false;
+        slotted.pinned[k] = true;
+        --to_pin;
+      }
+  }
   const bool ran =
-      ((nf == NF ? (run_fit<N, NF>(data, setup, guess, options, fit), true) : false) || ...);
+      ((slots == NF ? (run_fit<N, NF>(data, setup, slotted, options, fit), true) : false) || ...);
   if (!ran)
     throw std::logic_error("grey-box fit of " + fit.model + ": unexpected free-parameter count " +
                            std::to_string(nf));
+}
+
+/// Holds the parameters `held` names at their values in `guess` (GreyboxOptions::held). InputError
+/// naming `where` for a name the model does not have, a value outside the parameter's bounds, a
+/// parameter held twice, or no parameter left to fit.
+void apply_holds(lumped::PhenoKind kind, const std::string& model,
+                 const std::vector<std::pair<std::string, double>>& held, const std::string& where,
+                 ParamGuess& guess) {
+  const auto& specs = lumped::pheno_params(kind);
+  std::vector<bool> seen(specs.size(), false);
+  for (const auto& [name, value] : held) {
+    const int k = lumped::pheno_param_index(kind, name);
+    if (k < 0) {
+      std::string names;
+      for (const auto& p : specs) names += (names.empty() ? "" : ", ") + p.name;
+      throw InputError(where + ": held parameter '" + name + "': the " + model +
+                       " model has no such parameter (expected one of " + names + ")");
+    }
+    const auto i = static_cast<std::size_t>(k);
+    if (seen[i]) throw InputError(where + ": parameter '" + name + "' is held twice");
+    seen[i] = true;
+    if (!std::isfinite(value) || value < guess.lower[i] || value > guess.upper[i])
+      throw InputError(
+          format_text("%s: held parameter '%s' = %g: expected a value within its "
+                      "bounds [%g, %g] for these recordings (SI units)",
+                      where.c_str(), name.c_str(), value, guess.lower[i], guess.upper[i]));
+    guess.nominal[i] = value;
+    guess.fixed[i] = true;
+  }
+  if (std::none_of(guess.fixed.begin(), guess.fixed.end(), [](bool f) { return !f; }))
+    throw InputError(where + ": every parameter of the " + model +
+                     " model is held; expected at least one to fit");
 }
 
 lumped::PhenoKind parse_model(const std::string& model) {
@@ -281,8 +332,9 @@ void fit_data(const FitData& data, const GreyboxOptions& options, const std::str
     throw InputError(where + ": the start of the " + fit.model + " fit has " +
                      std::to_string(options.start.size()) +
                      " values; expected one per parameter (" + std::to_string(n_params) + ")");
-  const ParamGuess guess = initial_guess(kind, all, range, fit.setup.orientation,
-                                         !fit.setup.field_column.empty(), periodic);
+  ParamGuess guess = initial_guess(kind, all, range, fit.setup.orientation,
+                                   !fit.setup.field_column.empty(), periodic);
+  apply_holds(kind, fit.model, options.held, where, guess);
   switch (kind) {  // free counts with and without a field input
     // with and without output_smoothing (held without a periodic drive)
     case lumped::PhenoKind::bingham:

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/progress.hpp"
@@ -22,6 +23,10 @@ namespace rheomag::identify {
 struct GreyboxOptions {
   std::optional<lumped::SampleRange> train;  ///< samples to fit on; whole recording if empty
   int starts = 4;  ///< multi-start: number of starting points (first = nominal)
+  /// Parameters held at a value instead of fitted (name, SI value; e.g. an inertance known from
+  /// the device's geometry): reported as held, used by every start. InputError for a name the
+  /// model does not have or a value outside the parameter's bounds.
+  std::vector<std::pair<std::string, double>> held;
   /// The first start's parameter values (SI, in the model's parameter order, clamped into the
   /// bounds; held parameters keep their nominal value) instead of the nominal guess, e.g. a fit of
   /// other recordings of the device; empty: the nominal guess. The other starts are unchanged.

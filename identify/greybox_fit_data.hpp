@@ -15,6 +15,9 @@ namespace rheomag::identify::greybox_detail {
 struct ParamGuess {
   std::vector<double> nominal, scale, lower, upper;
   std::vector<bool> fixed;
+  /// Held parameters that take a slot of the fit's free-parameter vector, held constant there
+  /// (a held count the fit has no instantiation of runs in the next larger one); empty: none.
+  std::vector<bool> pinned;
 };
 
 /// The training data of a fit: one or more drive series, each simulated from its own initial

@@ -97,6 +97,11 @@ void run_fit(const FitData& data, const lumped::GreyboxSetup& setup, const Param
   std::array<int, NF> free{};
   for (int k = 0, j = 0; k < N; ++k)
     if (!guess.fixed[k]) free[j++] = k;
+  const auto pinned = [&](int j) {
+    return !guess.pinned.empty() && guess.pinned[static_cast<std::size_t>(free[j])];
+  };
+  std::vector<int> pinned_slots, fitted_slots;
+  for (int j = 0; j < NF; ++j) (pinned(j) ? pinned_slots : fitted_slots).push_back(j);
   std::vector<FitResidual<N, NF>> functors;
   for (std::size_t r = 0; r < data.series.size(); ++r) {
     FitResidual<N, NF> functor{&data.series[r],
@@ -132,6 +137,10 @@ void run_fit(const FitData& data, const lumped::GreyboxSetup& setup, const Param
         return std::clamp(v, guess.lower[k] + margin, guess.upper[k] - margin);
       };
       double value = guess.nominal[k];
+      if (pinned(j)) {  // held: the same value in every start
+        thetas[static_cast<std::size_t>(start)][j] = value / guess.scale[k];
+        continue;
+      }
       if (start == 0 && !options.start.empty())
         value = inside(options.start[static_cast<std::size_t>(k)]);  // a given first start
       if (start > 0)  // perturbed around the nominal guess
@@ -157,10 +166,12 @@ void run_fit(const FitData& data, const lumped::GreyboxSetup& setup, const Param
               new ceres::AutoDiffCostFunction<FitResidual<N, NF>, ceres::DYNAMIC, NF>(
                   new FitResidual<N, NF>(functor), static_cast<int>(functor.range.size()))),
           nullptr, theta.data());
-    for (int j = 0; j < NF; ++j) {
+    for (const int j : fitted_slots) {
       problem.SetParameterLowerBound(theta.data(), j, guess.lower[free[j]] / guess.scale[free[j]]);
       problem.SetParameterUpperBound(theta.data(), j, guess.upper[free[j]] / guess.scale[free[j]]);
     }
+    if (!pinned_slots.empty())
+      problem.SetManifold(theta.data(), new ceres::SubsetManifold(NF, pinned_slots));
     ceres::Solver::Options so =
         greybox_solver_options(options.max_iterations, 50);  // trial steps into unstable regions
     so.num_threads = threads_per_start;
@@ -198,13 +209,25 @@ void run_fit(const FitData& data, const lumped::GreyboxSetup& setup, const Param
   }
   fit.best_start = best.start;
   fit.converged = best.converged;
-  const std::vector<std::optional<double>> se = jacobian_standard_errors(jf, res);
+  // Standard errors over the fitted slots only (a pinned slot is not a parameter of the fit).
+  Eigen::MatrixXd jfit(m, static_cast<Eigen::Index>(fitted_slots.size()));
+  for (std::size_t c = 0; c < fitted_slots.size(); ++c)
+    jfit.col(static_cast<Eigen::Index>(c)) = jf.col(fitted_slots[c]);
+  const std::vector<std::optional<double>> se_fitted = jacobian_standard_errors(jfit, res);
   std::vector<int> cluster_rows;
   for (const FitResidual<N, NF>& functor : functors)
     cluster_rows.push_back(static_cast<int>(functor.range.size()));
-  const std::optional<ParameterCovariance> between = cluster_covariance(jf, res, cluster_rows);
-  const std::vector<std::optional<double>> se_between =
-      between ? standard_errors_of(*between) : std::vector<std::optional<double>>(NF);
+  const std::optional<ParameterCovariance> between = cluster_covariance(jfit, res, cluster_rows);
+  const std::vector<std::optional<double>> se_between_fitted =
+      between ? standard_errors_of(*between)
+              : std::vector<std::optional<double>>(fitted_slots.size());
+  std::vector<std::optional<double>> se(NF), se_between(NF);
+  std::vector<int> fitted_column(NF, -1);  // slot -> column of jfit
+  for (std::size_t c = 0; c < fitted_slots.size(); ++c) {
+    se[fitted_slots[c]] = se_fitted[c];
+    se_between[fitted_slots[c]] = se_between_fitted[c];
+    fitted_column[fitted_slots[c]] = static_cast<int>(c);
+  }
 
   const auto& specs = lumped::pheno_params(setup.kind);
   fit.params.clear();
@@ -213,10 +236,10 @@ void run_fit(const FitData& data, const lumped::GreyboxSetup& setup, const Param
     fp.name = specs[k].name;
     fp.unit = unit_string(specs[k].unit, setup);
     fp.value = guess.nominal[k] / guess.scale[k] * guess.scale[k];  // as the simulation sees it
-    fp.fixed = guess.fixed[k];
+    fp.fixed = guess.fixed[k] || (!guess.pinned.empty() && guess.pinned[k]);
     fit.params.push_back(fp);
   }
-  for (int j = 0; j < NF; ++j) {
+  for (const int j : fitted_slots) {
     const int k = free[j];
     FittedParameter& fp = fit.params[static_cast<std::size_t>(k)];
     fp.value = best.theta[j] * guess.scale[k];
@@ -230,11 +253,12 @@ void run_fit(const FitData& data, const lumped::GreyboxSetup& setup, const Param
   fit.covariance_between_recordings.resize(0, 0);
   if (between) {
     fit.covariance_between_recordings = Eigen::MatrixXd::Zero(N, N);
-    for (int a = 0; a < NF; ++a)
-      for (int b = 0; b < NF; ++b)
+    for (const int a : fitted_slots)
+      for (const int b : fitted_slots)
         if (se_between[a] && se_between[b])
           fit.covariance_between_recordings(free[a], free[b]) =
-              between->matrix(a, b) * guess.scale[free[a]] * guess.scale[free[b]];
+              between->matrix(fitted_column[a], fitted_column[b]) * guess.scale[free[a]] *
+              guess.scale[free[b]];
   }
 }
 

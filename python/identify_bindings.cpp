@@ -1,6 +1,11 @@
 // Python: rheomag.Recording (numpy columns) and fit, fit_family, simulate, diagnose — dicts built
 // by the library functions behind the CLI's --json.
 
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "diagnose/diagnose_report.hpp"
 #include "diagnose/diagnose_run.hpp"
 #include "identify/current_dependent_fit.hpp"
@@ -29,9 +34,16 @@ lumped::Recording load_recording(const std::string& csv_path) {
   return rec;
 }
 
+/// The `hold` argument {name: SI value} as GreyboxOptions::held (sorted by name).
+std::vector<std::pair<std::string, double>> holds(const std::map<std::string, double>& hold) {
+  return {hold.begin(), hold.end()};
+}
+
 py::object fit(const std::string& recording, const std::string& model, const std::string& train,
-               const std::string& validate, const std::string& mode, const py::object& progress) {
+               const std::string& validate, const std::string& mode, const py::object& progress,
+               const std::map<std::string, double>& hold) {
   identify::FitRequest request;
+  request.held = holds(hold);
   request.recording = recording;
   request.model = model;
   request.train = train;
@@ -53,7 +65,8 @@ py::object fit(const std::string& recording, const std::string& model, const std
 
 py::object fit_family(const std::vector<std::string>& recordings, const std::string& model,
                       const std::vector<std::string>& predict, int decimation, int starts,
-                      double max_substep, bool cross_validate, const py::object& progress) {
+                      double max_substep, bool cross_validate, const py::object& progress,
+                      const std::map<std::string, double>& hold) {
   std::vector<lumped::Recording> training, prediction;
   for (const std::string& f : recordings) training.push_back(load_recording(f));
   for (const std::string& f : predict) prediction.push_back(load_recording(f));
@@ -61,6 +74,7 @@ py::object fit_family(const std::vector<std::string>& recordings, const std::str
   identify::FamilyFitOptions options;
   options.decimation = decimation;
   options.greybox.starts = starts;
+  options.greybox.held = holds(hold);
   options.greybox.max_substep = max_substep;
   options.cross_validate = cross_validate;
   options.greybox.progress = progress_to_python(progress);
@@ -131,13 +145,16 @@ void bind_identify(py::module_& m) {
 
   m.def("fit", &fit, py::arg("recording"), py::arg("model"), py::arg("train") = "",
         py::arg("validate") = "", py::arg("mode") = "simulation", py::arg("progress") = py::none(),
+        py::arg("hold") = std::map<std::string, double>{},
         "Fits `model` to the recording CSV (as `rheomag fit REC --model M --json`); the dict of "
-        "that JSON. progress(event: dict) is called during grey-box fits.");
+        "that JSON. progress(event: dict) is called during grey-box fits; hold {name: SI value} "
+        "holds grey-box parameters (as --hold).");
   m.def("fit_family", &fit_family, py::arg("recordings"), py::arg("model"),
         py::arg("predict") = std::vector<std::string>{}, py::arg("decimation") = 4,
         py::arg("starts") = 2, py::arg("max_substep") = 2e-3, py::arg("cross_validate") = false,
-        py::arg("progress") = py::none(),
-        "One grey-box fit over several recordings (as `rheomag fit-family ... --json`).");
+        py::arg("progress") = py::none(), py::arg("hold") = std::map<std::string, double>{},
+        "One grey-box fit over several recordings (as `rheomag fit-family ... --json`); hold "
+        "{name: SI value} holds parameters (as --hold).");
   m.def("simulate", &simulate, py::arg("spec"), py::arg("input") = "",
         py::arg("signals") = std::vector<std::string>{}, py::arg("duration") = 10.0,
         py::arg("rate") = 1000.0, py::arg("out") = "",

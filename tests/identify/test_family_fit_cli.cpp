@@ -135,6 +135,47 @@ TEST(FitFamilyCli, RejectsBadViscosityNuisanceBounds) {
   fs::remove_all(dir);
 }
 
+// --hold NAME=VALUE: a Bingham family with its viscous force and transition held at the truth
+// (100, 800, 2000, 5000, 0.005, 0 simulated) fits the other terms to it (reference: the truth,
+// 1 %) and reports the held ones as held with no standard error; a hold without '=', a name the
+// model does not have, a value outside its bounds or the same parameter twice exit 2 naming it.
+TEST(FitFamilyCli, HoldsAParameterAtAValue) {
+  const fs::path dir = fresh_dir("hold");
+  const std::string a = write_recording_at(dir, "a.csv", 0.0);
+  const std::string b = write_recording_at(dir, "b.csv", 1.0);
+  const std::string c = write_recording_at(dir, "c.csv", 0.5);
+  const std::string family = a + " " + b + " " + c + " --model bingham ";
+  const CliRun r = run_fit_family(family + "--hold viscous=2000 --hold transition=0.005 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["params"]["viscous"].get<double>(), 2000.0);
+  EXPECT_EQ(j["params"]["transition"].get<double>(), 0.005);
+  EXPECT_NEAR(j["params"]["yield"].get<double>(), 100.0, 1.0);
+  EXPECT_NEAR(j["params"]["yield_per_field"].get<double>(), 800.0, 8.0);
+  EXPECT_NEAR(j["params"]["viscous_per_field"].get<double>(), 5000.0, 50.0);
+  const CliRun text = run_fit_family(family + "--hold viscous=2000 --quiet");
+  ASSERT_EQ(text.code, 0) << text.err;
+  const auto line = text.out.find("  viscous ");
+  ASSERT_NE(line, std::string::npos) << text.out;
+  EXPECT_NE(text.out.substr(line, text.out.find('\n', line) - line).find("(held)"),
+            std::string::npos)
+      << text.out;
+
+  const std::pair<const char*, const char*> bad[] = {
+      {"--hold viscous", "--hold: expected NAME=VALUE"},
+      {"--hold viscous=fast", "--hold: expected NAME=VALUE"},
+      {"--hold =3", "--hold: expected NAME=VALUE"},
+      {"--hold inertance=20", "held parameter 'inertance': the bingham model has no such"},
+      {"--hold transition=-1", "held parameter 'transition' = -1: expected a value within"},
+      {"--hold viscous=1 --hold viscous=2", "parameter 'viscous' is held twice"}};
+  for (const auto& [option, message] : bad) {
+    const CliRun e = run_fit_family(family + option + " --quiet");
+    EXPECT_EQ(e.code, 2) << option;
+    EXPECT_NE(e.err.find(message), std::string::npos) << option << ": " << e.err;
+  }
+  fs::remove_all(dir);
+}
+
 // --cross-validate: three noise-free recordings of one Bingham truth (0, 0.5, 1 A; the field
 // terms are linear in the current), so each held out is predicted by the other two exactly up to
 // the fit's tolerance (reference: the truth, FIT >= 99 %); with two recordings at 0 A and one at

@@ -191,6 +191,18 @@ TEST_F(FitCli, GreyBoxTextGivesUnitsAndRemarks) {
   EXPECT_NE(line_of("yield_per_field").find("(held)"), std::string::npos) << r.out;
 }
 
+// --hold on one recording: the Bingham transition held at 0.02 m/s (the generator's tanh width)
+// is reported as held at that value; on a black-box model --hold exits 2 naming the option.
+TEST_F(FitCli, HoldsAGreyBoxParameter) {
+  const CliRun r = run_cli(csv + " --model bingham --hold transition=0.02 --json --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["params"]["transition"].get<double>(), 0.02);
+  const CliRun arx = run_cli(csv + " --model arx:1,1,1 --hold a=1");
+  EXPECT_EQ(arx.code, 2);
+  EXPECT_NE(arx.err.find("--hold: holds a parameter of a grey-box model"), std::string::npos)
+      << arx.err;
+}
+
 // Issue 34: `fit --help` said "(see above)" for the model list and showed CLI11's internals for
 // --mode ("{prediction->1,simulation->0} OR {1,0}"); fit-family's --help showed no defaults.
 TEST(FitHelp, NamesTheModesAndTheDefaults) {

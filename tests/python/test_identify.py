@@ -83,6 +83,16 @@ def test_fit_family_equals_cli(two_currents):
     assert without_timing(py) == without_timing(cli)
 
 
+def test_fit_family_hold_equals_cli(two_currents):
+    # Held at twice the value the free fit finds (inside the parameter's bounds).
+    width = 2 * rheomag.fit_family(two_currents, "bingham")["params"]["transition"]
+    py = rheomag.fit_family(two_currents, "bingham", hold={"transition": width})
+    cli = cli_json("fit-family", *two_currents, "--model", "bingham", "--hold",
+                   f"transition={width!r}", "--quiet")
+    assert without_timing(py) == without_timing(cli)
+    assert py["params"]["transition"] == width
+
+
 def test_diagnose_equals_cli(two_currents):
     events = []
     py = rheomag.diagnose(two_currents[1], progress=events.append)
