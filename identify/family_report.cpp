@@ -179,7 +179,8 @@ std::string family_report_html(const FamilyFit& r, const std::vector<lumped::Rec
        "<th>FIT %</th><th>RMSE %</th><th>RE</th><th>band % (1&sigma;, parameters between "
        "recordings)</th><th>repeatability % (the recording's own mean cycle)</th><th>FIT % after "
        "the first cycle, pure</th><th>the same with one level (gain, offset on the first "
-       "cycle)</th></tr>\n";
+       "cycle)</th><th>reversals: % of the residual energy in % of the samples</th><th>mean "
+       "residual of the settled strokes, motion &gt; 0 / &lt; 0</th></tr>\n";
   const auto rows = [&](const std::vector<FamilyMember>& members, const char* role) {
     for (const FamilyMember& m : members)
       o << "<tr><td>" << html_escape(m.csv_path) << "</td><td>" << role << "</td><td>"
@@ -194,6 +195,14 @@ std::string family_report_html(const FamilyFit& r, const std::vector<lumped::Rec
         << (m.level ? html_number(m.level->fit_percent, 3) + " (gain " +
                           html_number(m.level->gain, 3) + ")"
                     : std::string("&mdash;"))
+        << "</td><td>"
+        << (m.regimes ? html_number(m.regimes->transition.energy_percent, 2) + " in " +
+                            html_number(m.regimes->transition.time_percent, 2)
+                      : std::string("&mdash;"))
+        << "</td><td>"
+        << (m.regimes ? html_number(m.regimes->positive.mean, 3) + " / " +
+                            html_number(m.regimes->negative.mean, 3)
+                      : std::string("&mdash;"))
         << "</td></tr>\n";
   };
   rows(r.training, "fit");

@@ -294,6 +294,8 @@ TEST(FitFamilyCli, ReportRendersInHeadlessChromium) {
   EXPECT_NE(html.find("standard error"), std::string::npos);
   EXPECT_NE(html.find("between recordings"), std::string::npos);
   EXPECT_NE(html.find("band % (1&sigma;, parameters between recordings)"), std::string::npos);
+  EXPECT_NE(html.find("reversals: % of the residual energy in % of the samples"),
+            std::string::npos);
   EXPECT_EQ(html.find("src=\"http"), std::string::npos);  // self-contained
   if (run("command -v chromium > /dev/null 2>&1") != 0) GTEST_SKIP() << "chromium not installed";
   const fs::path png = dir / "report.png";
