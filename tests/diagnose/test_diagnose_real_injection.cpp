@@ -127,6 +127,35 @@ void print(const std::string& what, const Diagnosis& d) {
   for (const auto& n : d.notes) std::cout << "  note: " << n << "\n";
 }
 
+/// `rec` with a seal friction F_c tanh(v / 1 mm/s) added to its measured force (the model's sign).
+Recording with_friction(const Recording& rec, double coulomb) {
+  Recording rubbing = rec;
+  const double sign = model_sign(rec);
+  const auto& v = rec.column("velocity");
+  for (std::size_t k = 0; k < v.size(); ++k)
+    rubbing.columns["force"][k] += sign * coulomb * std::tanh(v[k] / 1e-3);
+  return rubbing;
+}
+
+/// A spring of a tenth of `original`'s force rms over its displacement rms, k (x - mean x), added
+/// to its force, diagnosed against `model`: named as gas_spring within 30 %.
+void check_spring(const Recording& original, const ModelBaseline& model, const std::string& label) {
+  const auto& x = original.column("displacement");
+  const double x_mean = std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(x.size());
+  const double stiffness =
+      0.1 * rms_about_mean(original.column("force")) / rms_about_mean(x);  // [N/m]
+  const double sign = model_sign(original);
+  Recording sprung = original;
+  for (std::size_t k = 0; k < x.size(); ++k)
+    sprung.columns["force"][k] += sign * stiffness * (x[k] - x_mean);
+  const Diagnosis d_spring = diagnose_with(sprung, model);
+  print(label + " with " + std::to_string(stiffness) + " N/m", d_spring);
+  const double k_found = found(d_spring, "gas_spring");
+  std::cout << "stiffness: injected " << stiffness << " N/m, found " << k_found << " N/m\n";
+  EXPECT_GT(k_found, 0.0) << "the stiffness is not named";
+  EXPECT_NEAR(k_found / stiffness, 1.0, 0.3);
+}
+
 /// The protocol on one held-out test: nothing named on it as recorded; a moving mass, a seal
 /// friction and a spring, each a tenth of its force rms, named and sized.
 void check_held_out(const std::string& test) {
@@ -163,11 +192,7 @@ void check_held_out(const std::string& test) {
   EXPECT_NEAR((m_found - m_carried) / mass, 1.0, 0.1);
 
   const double coulomb = 0.1 * force_rms;  // [N]
-  Recording rubbing = original;
-  const auto& v = original.column("velocity");
-  for (std::size_t k = 0; k < v.size(); ++k)
-    rubbing.columns["force"][k] += sign * coulomb * std::tanh(v[k] / 1e-3);
-  const Diagnosis d_friction = diagnose_with(rubbing, model);
+  const Diagnosis d_friction = diagnose_with(with_friction(original, coulomb), model);
   print(test + " with " + std::to_string(coulomb) + " N of friction", d_friction);
   const double f_found = found(d_friction, "friction");
   const double f_carried = carried(plain, "friction");
@@ -176,18 +201,7 @@ void check_held_out(const std::string& test) {
   EXPECT_GT(f_found, 0.0) << "the friction is not named";
   EXPECT_NEAR(f_found / coulomb, 1.0, 0.3);
 
-  const auto& x = original.column("displacement");
-  const double x_mean = std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(x.size());
-  const double stiffness = 0.1 * force_rms / rms_about_mean(x);  // [N/m]
-  Recording sprung = original;
-  for (std::size_t k = 0; k < x.size(); ++k)
-    sprung.columns["force"][k] += sign * stiffness * (x[k] - x_mean);
-  const Diagnosis d_spring = diagnose_with(sprung, model);
-  print(test + " with " + std::to_string(stiffness) + " N/m", d_spring);
-  const double k_found = found(d_spring, "gas_spring");
-  std::cout << "stiffness: injected " << stiffness << " N/m, found " << k_found << " N/m\n";
-  EXPECT_GT(k_found, 0.0) << "the stiffness is not named";
-  EXPECT_NEAR(k_found / stiffness, 1.0, 0.3);
+  check_spring(original, model, test);
 }
 
 TEST(DiagnoseRealInjection, HeldOutTenMillimetreTestAtQuarterAmpere) {
@@ -254,31 +268,14 @@ TEST(DiagnoseRealInjection, WhiteNoiseRecordingWithFrictionOrASpring) {
   if (!std::filesystem::exists(kDyke)) GTEST_SKIP() << "shared data absent";
   const DykeSplit split = dyke_split();
   const Recording& original = split.held_out;
-  const double sign = model_sign(original);
-  const double force_rms = rms_about_mean(original.column("force"));
-
-  const double coulomb = 0.1 * force_rms;  // [N]
-  Recording rubbing = original;
-  const auto& v = original.column("velocity");
-  for (std::size_t k = 0; k < v.size(); ++k)
-    rubbing.columns["force"][k] += sign * coulomb * std::tanh(v[k] / 1e-3);
-  const Diagnosis d_friction = diagnose_with(rubbing, split.model);
+  const double coulomb = 0.1 * rms_about_mean(original.column("force"));  // [N]
+  const Diagnosis d_friction = diagnose_with(with_friction(original, coulomb), split.model);
   print("dyke1996 with " + std::to_string(coulomb) + " N of friction", d_friction);
   const double f_found = found(d_friction, "friction");
   std::cout << "friction: injected " << coulomb << " N, found " << f_found << " N\n";
   EXPECT_NEAR(f_found / coulomb, 1.0, 0.3);
 
-  const auto& x = original.column("displacement");
-  const double x_mean = std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(x.size());
-  const double stiffness = 0.1 * force_rms / rms_about_mean(x);  // [N/m]
-  Recording sprung = original;
-  for (std::size_t k = 0; k < x.size(); ++k)
-    sprung.columns["force"][k] += sign * stiffness * (x[k] - x_mean);
-  const Diagnosis d_spring = diagnose_with(sprung, split.model);
-  print("dyke1996 with " + std::to_string(stiffness) + " N/m", d_spring);
-  const double k_found = found(d_spring, "gas_spring");
-  std::cout << "stiffness: injected " << stiffness << " N/m, found " << k_found << " N/m\n";
-  EXPECT_NEAR(k_found / stiffness, 1.0, 0.3);
+  check_spring(original, split.model, "dyke1996");
 }
 
 }  // namespace
