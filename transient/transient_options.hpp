@@ -39,8 +39,9 @@ struct TransientOptions {
   int steps = 0;              ///< > 0: that many equal steps; 0: adaptive steps
   double tolerance = 1e-4;    ///< adaptive: local error of lambda per step / its total change
   double max_step = 0.0;      ///< adaptive: largest step [s]; 0 = duration / 50
-  double first_step = 0.0;    ///< adaptive: first step [s]; 0 = duration * 1e-4
-  double resistance = 0.0;    ///< first circuit's resistance [Ohm] (required for a voltage step)
+  /// adaptive: first step [s]; 0 = duration * 1e-6 after a current step, 1e-4 after a voltage step
+  double first_step = 0.0;
+  double resistance = 0.0;  ///< first circuit's resistance [Ohm] (required for a voltage step)
   TimeScheme scheme = TimeScheme::midpoint;
   magnetostatics::NewtonOptions newton;  ///< Newton at every step (local corrections unused)
   ProgressCallback progress;             ///< one report per accepted step
