@@ -11,6 +11,7 @@
 #include "case/toml_section.hpp"
 #include "case/wire_gauge.hpp"
 #include "core/error.hpp"
+#include "core/format_text.hpp"
 #include "core/units.hpp"
 
 namespace rheomag::cases {
@@ -175,6 +176,32 @@ void change_femm_fluid(Case& c, const std::string& name, const std::string& writ
   c.input.fluid = name;
 }
 
+/// The one solver key of a .fem model, "solver.order": its mesh sizes and boundaries are
+/// FEMM's own (block labels, boundary properties), so nothing else of [solver] applies.
+CaseKey femm_solver_key(const Case& base, const std::vector<std::string>& parts,
+                        const std::string& key, const std::string& where,
+                        const std::string& label) {
+  if (!(parts.size() == 2 && parts[1] == "order"))
+    unknown_key(base, key, where, label,
+                "is not a solver key of a .fem model: it takes 'solver.order' (1 or 2) only; "
+                "its mesh sizes and boundaries are FEMM's own (block labels, boundary "
+                "properties)");
+  CaseKey resolved;
+  resolved.written = key;
+  resolved.path = {"solver", "order"};
+  resolved.target = KeyTarget::element_order;
+  return resolved;
+}
+
+/// The element order of `value` for key `written`: 1 or 2, else InputError.
+int element_order(const KeyValue& value, const std::string& written) {
+  const double n = as_number(value, written);
+  if (n != 1.0 && n != 2.0)
+    throw InputError("key '" + written + "': expected 1 or 2 (P1 or P2 triangles), got " +
+                     format_text("%g", n));
+  return static_cast<int>(n);
+}
+
 }  // namespace
 
 std::vector<std::string> value_keys(const Case& c) {
@@ -185,6 +212,7 @@ std::vector<std::string> value_keys(const Case& c) {
     for (std::size_t i = 0; i < c.problem.circuits.size(); ++i)
       keys.push_back(c.problem.circuits.size() == 1 ? "circuit.current"
                                                     : "circuit." + std::to_string(i) + ".current");
+    keys.push_back("solver.order");
   }
   if (c.input.valve)
     for (const TemplateParameter& p : c.input.valve->parameters)
@@ -250,6 +278,8 @@ CaseKey resolve_case_key(const Case& base, const std::string& key, const std::st
                      "gaps is not a design value");
   if (base.femm && parts.front() == "circuit")
     return femm_circuit_key(base, parts, key, where, label);
+  if (base.femm && parts.front() == "solver")
+    return femm_solver_key(base, parts, key, where, label);
   const toml::node* node = &base.table;
   for (std::size_t i = 0; i < parts.size();) {
     if (const toml::table* t = node->as_table()) {
@@ -327,6 +357,7 @@ KeyValue case_value(const Case& c, const CaseKey& key) {
   if (key.target == KeyTarget::fluid) return c.fluid;
   if (key.target == KeyTarget::circuit_current && c.femm)
     return c.problem.circuits.at(static_cast<std::size_t>(key.circuit)).current;
+  if (key.target == KeyTarget::element_order) return static_cast<long long>(c.problem.order);
   if (const toml::node* node = node_at(c.table, key.path)) {
     if (auto i = node->value_exact<int64_t>()) return static_cast<long long>(*i);
     if (auto d = node->value_exact<double>()) return *d;
@@ -399,6 +430,9 @@ Case with(const Case& base, const std::vector<CaseEdit>& edits) {
         }
         break;
       }
+      case KeyTarget::element_order:
+        c.problem.order = element_order(edit.value, key.written);
+        break;
       case KeyTarget::document:
         set_document_value(c.table, key.path, edit.value);
         reread = !c.femm;  // a .fem's document is its sidecar: only later layers read it

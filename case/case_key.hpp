@@ -23,6 +23,7 @@ enum class KeyTarget {
   circuit_current,     ///< the current of one [[circuit]]
   wire_gauge,          ///< "wire_gauge": the AWG number of [geometry] wire (real while optimising)
   fluid,               ///< "fluid": [case] fluid and the template's fluid_material together
+  element_order,       ///< "solver.order" of a .fem model (which has no [solver] document)
   document,            ///< any other value of the file: the case is read again from its table
 };
 

@@ -93,7 +93,7 @@ void apply_femm_sidecar(Case& c, const std::filesystem::path& path,
                         const MaterialLibrary& library) {
   c.table = parse_toml_file(path.string());
   const TomlSection top(c.table, "", path.string());
-  std::vector<std::string_view> known{"fem"};
+  std::vector<std::string_view> known{"fem", "solver"};
   const std::vector<std::string> later = registered_case_sections();
   for (const std::string& s : later) known.push_back(s);
   top.allow_only(known);
@@ -137,6 +137,13 @@ void apply_femm_sidecar(Case& c, const std::filesystem::path& path,
   }
   move_regions_first(problem, gaps);
   c.fluid = fluid;
+  // [solver] order: the element order (FEMM's mesh sizes and boundaries stay the model's own).
+  if (const std::optional<TomlSection> solver = top.table("solver")) {
+    solver->allow_only({"order"});
+    const long long order = solver->integer_or("order", 2);
+    if (order != 1 && order != 2) solver->fail("order", "expected 1 or 2");
+    problem.order = static_cast<int>(order);
+  }
 }
 
 std::string femm_sidecar_text(const Case& c, const Problem& closed) {

@@ -140,6 +140,45 @@ TEST(FemmChain, GeometryKeysOnAFemAreRefusedByName) {
       << optimise.err;
 }
 
+// A .fem model's element order is a solver key: `--set solver.order=1` (any command) and the
+// sidecar's [solver] order give the mesh and flux linkage of `solve --order 1` exactly; every
+// other [solver] key and any order but 1 or 2 exit 2 naming it.
+TEST(FemmChain, ElementOrderOfAFemIsASolverKey) {
+  const fs::path dir = scratch("order");
+  ASSERT_EQ(run_rheomag("export '" + kCase + "' --fem v.fem", dir).code, 0);
+  auto solved = [&](const std::string& args) {
+    const auto run = run_rheomag("solve v.fem --json " + args, dir);
+    EXPECT_EQ(run.code, 0) << args << ": " << run.err;
+    return nlohmann::json::parse(run.out.empty() ? "{}" : run.out);
+  };
+  const auto p1 = solved("--order 1"), p2 = solved("");
+  const auto set = solved("--set solver.order=1");
+  EXPECT_LT(p1["dofs"].get<int>(), p2["dofs"].get<int>() / 2);  // P2 has the midside nodes
+  EXPECT_EQ(set["dofs"], p1["dofs"]);
+  EXPECT_EQ(set["flux_linkage"], p1["flux_linkage"]);
+  const auto transient = run_rheomag(
+      "transient v.fem --current 1 --duration 1ms --steps 2 --json --set solver.order=1", dir);
+  ASSERT_EQ(transient.code, 0) << transient.err;
+  EXPECT_EQ(nlohmann::json::parse(transient.out)["dofs"], p1["dofs"]);
+
+  std::ofstream(dir / "v.toml", std::ios::app) << "\n[solver]\norder = 1\n";
+  const auto sidecar = solved("");
+  EXPECT_EQ(sidecar["dofs"], p1["dofs"]);
+  EXPECT_EQ(sidecar["flux_linkage"], p1["flux_linkage"]);
+
+  const auto three = run_rheomag("solve v.fem --set solver.order=3", dir);
+  EXPECT_EQ(three.code, 2);
+  EXPECT_NE(three.err.find("'solver.order': expected 1 or 2"), std::string::npos) << three.err;
+  const auto other = run_rheomag("solve v.fem --set solver.outer_boundary=open", dir);
+  EXPECT_EQ(other.code, 2);
+  EXPECT_NE(other.err.find("takes 'solver.order' (1 or 2) only"), std::string::npos) << other.err;
+  std::ofstream(dir / "v.toml", std::ios::app) << "min_gap_elements = 3\n";
+  const auto unknown = run_rheomag("solve v.fem", dir);
+  EXPECT_EQ(unknown.code, 2);
+  EXPECT_NE(unknown.err.find("v.toml"), std::string::npos) << unknown.err;
+  EXPECT_NE(unknown.err.find("min_gap_elements"), std::string::npos) << unknown.err;
+}
+
 TEST(FemmChain, SidecarErrorsNameTheLabel) {
   const fs::path dir = scratch("sidecar");
   ASSERT_EQ(run_rheomag("export '" + kCase + "' --fem v.fem", dir).code, 0);
