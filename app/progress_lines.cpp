@@ -2,6 +2,7 @@
 
 #include "app/progress_lines.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -23,18 +24,26 @@ std::string seconds_text(double s) {
 }  // namespace
 
 ProgressCallback progress_lines(const std::string& prefix, std::ostream& out, double interval,
-                                double quiet_for) {
+                                double quiet_for, SecondsClock clock) {
+  if (!clock) {
+    clock = [] {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+          .count();
+    };
+  }
   struct State {
     std::mutex mutex;
     double last_printed = -1e300;
   };
   auto state = std::make_shared<State>();
+  const double created = clock();
   return [=, &out](const ProgressEvent& e) {
     std::lock_guard<std::mutex> lock(state->mutex);
-    if (e.elapsed < quiet_for) return;
+    const double now = clock() - created;
+    if (now < quiet_for) return;
     const bool last_step = e.total > 0.0 && e.done >= e.total;
-    if (e.detail.empty() && !last_step && e.elapsed - state->last_printed < interval) return;
-    state->last_printed = e.elapsed;
+    if (e.detail.empty() && !last_step && now - state->last_printed < interval) return;
+    state->last_printed = now;
     std::string line = prefix + ": " + e.stage;
     if (e.total > 0.0) {
       char buffer[64];
