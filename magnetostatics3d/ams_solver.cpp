@@ -115,12 +115,75 @@ struct AmsCg::Hypre {
   std::unique_ptr<Vector> x, y, z, b, solution;
   HYPRE_Solver ams = nullptr;
   HYPRE_Solver pcg = nullptr;
+  // The kernel: gradients of the nodes off the fixed edges (G_I), and BoomerAMG-preconditioned
+  // CG on G_I^T G_I (identity at the other nodes) to project right-hand sides out of it.
+  Eigen::SparseMatrix<double, Eigen::RowMajor, int> interior_gradient;
+  HYPRE_IJMatrix laplacian = nullptr;
+  std::unique_ptr<Vector> divergence, potential;
+  HYPRE_Solver amg = nullptr;
+  HYPRE_Solver laplace_pcg = nullptr;
 
   ~Hypre() {
+    if (laplace_pcg) HYPRE_ParCSRPCGDestroy(laplace_pcg);
+    if (amg) HYPRE_BoomerAMGDestroy(amg);
+    if (laplacian) HYPRE_IJMatrixDestroy(laplacian);
     if (pcg) HYPRE_ParCSRPCGDestroy(pcg);
     if (ams) HYPRE_AMSDestroy(ams);
     if (matrix) HYPRE_IJMatrixDestroy(matrix);
     if (gradient) HYPRE_IJMatrixDestroy(gradient);
+  }
+
+  /// G_I, G_I^T G_I and its solver, for the nodes off the `fixed` edges.
+  void build_projection(const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& g,
+                        const std::vector<bool>& fixed) {
+    const int nodes = static_cast<int>(g.cols());
+    std::vector<bool> boundary(nodes, false);
+    for (int e = 0; e < edges; ++e)
+      if (fixed[e])
+        for (Eigen::SparseMatrix<double, Eigen::RowMajor, int>::InnerIterator it(g, e); it; ++it)
+          boundary[it.col()] = true;
+    interior_gradient = g;
+    interior_gradient.prune([&](int, int node, double) { return !boundary[node]; });
+    Eigen::SparseMatrix<double, Eigen::RowMajor, int> identity(nodes, nodes);
+    std::vector<Eigen::Triplet<double, int>> ones;
+    for (int n = 0; n < nodes; ++n)
+      if (boundary[n]) ones.emplace_back(n, n, 1.0);
+    identity.setFromTriplets(ones.begin(), ones.end());
+    Eigen::SparseMatrix<double, Eigen::RowMajor, int> l =
+        Eigen::SparseMatrix<double, Eigen::RowMajor, int>(interior_gradient.transpose() *
+                                                          interior_gradient) +
+        identity;
+    l.makeCompressed();
+    laplacian = make_matrix(nodes, nodes, l.outerIndexPtr(), l.innerIndexPtr(), l.valuePtr());
+    divergence = std::make_unique<Vector>(nodes);
+    potential = std::make_unique<Vector>(nodes);
+    HYPRE_BoomerAMGCreate(&amg);
+    HYPRE_BoomerAMGSetCoarsenType(amg, 10);  // HMIS
+    HYPRE_BoomerAMGSetInterpType(amg, 6);    // ext+i
+    HYPRE_BoomerAMGSetPMaxElmts(amg, 4);
+    HYPRE_BoomerAMGSetRelaxType(amg, 8);  // l1-Gauss-Seidel
+    HYPRE_BoomerAMGSetStrongThreshold(amg, 0.25);
+    HYPRE_BoomerAMGSetMaxIter(amg, 1);
+    HYPRE_BoomerAMGSetTol(amg, 0.0);
+    HYPRE_BoomerAMGSetPrintLevel(amg, 0);
+    HYPRE_ParCSRPCGCreate(MPI_COMM_SELF, &laplace_pcg);
+    HYPRE_PCGSetTwoNorm(laplace_pcg, 1);
+    HYPRE_PCGSetTol(laplace_pcg, 1e-10);
+    HYPRE_PCGSetMaxIter(laplace_pcg, 500);
+    HYPRE_PCGSetPrecond(laplace_pcg, reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_BoomerAMGSolve),
+                        reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_BoomerAMGSetup), amg);
+    HYPRE_ParCSRPCGSetup(laplace_pcg, parcsr(laplacian), divergence->par, potential->par);
+  }
+
+  /// b minus its Euclidean projection on the kernel G_I y (G_I^T G_I y = G_I^T b).
+  Eigen::VectorXd consistent(const Eigen::VectorXd& b) {
+    const Eigen::VectorXd c = interior_gradient.transpose() * b;
+    if (c.norm() == 0.0) return b;
+    std::memcpy(divergence->data, c.data(), sizeof(double) * c.size());
+    std::fill(potential->data, potential->data + c.size(), 0.0);
+    HYPRE_ParCSRPCGSolve(laplace_pcg, parcsr(laplacian), divergence->par, potential->par);
+    HYPRE_ClearAllErrors();
+    return b - interior_gradient * Eigen::Map<const Eigen::VectorXd>(potential->data, c.size());
   }
 
   /// Creates the matrix with the pattern and values of `m` and finds where hypre keeps each
@@ -180,7 +243,8 @@ struct AmsCg::Hypre {
   }
 };
 
-AmsCg::AmsCg(const TetMesh& mesh) : hypre_(std::make_unique<Hypre>()) {
+AmsCg::AmsCg(const TetMesh& mesh, const std::vector<bool>& fixed)
+    : hypre_(std::make_unique<Hypre>()) {
   ensure_hypre();
   Hypre& h = *hypre_;
   h.edges = static_cast<int>(mesh.edges.size());
@@ -197,6 +261,8 @@ AmsCg::AmsCg(const TetMesh& mesh) : hypre_(std::make_unique<Hypre>()) {
   }
   h.b = std::make_unique<Vector>(h.edges);
   h.solution = std::make_unique<Vector>(h.edges);
+  if (fixed.size() != mesh.edges.size()) throw ConvergenceError("AMS: fixed edges not per edge");
+  h.build_projection(g, fixed);
 }
 
 AmsCg::~AmsCg() = default;
@@ -230,7 +296,8 @@ magnetostatics::CgResult AmsCg::solve(const Eigen::VectorXd& b, double tolerance
     result.converged = true;
     return result;
   }
-  std::memcpy(h.b->data, b.data(), sizeof(double) * h.edges);
+  const Eigen::VectorXd projected = h.consistent(b);
+  std::memcpy(h.b->data, projected.data(), sizeof(double) * h.edges);
   std::fill(h.solution->data, h.solution->data + h.edges, 0.0);
   HYPRE_PCGSetTol(h.pcg, tolerance);
   HYPRE_PCGSetMaxIter(h.pcg, max_iterations);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/format_text.hpp"
 #include "magnetostatics/cholmod_status.hpp"
 #include "magnetostatics/preconditioned_cg.hpp"
 #include "magnetostatics/serial_openmp.hpp"
@@ -64,15 +65,11 @@ class EdgeSolver::System : public magnetostatics::NonlinearSystem {
     const EdgeDofs& dofs = s_.dofs_;
     Eigen::VectorXd b = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(dofs.fixed.size())), a;
     for (int d = 0; d < dofs.free_count(); ++d) b[dofs.edge_of_dof[d]] = rhs[d];
-    // CG on the singular system stalls at the rounding of the right-hand side's gradient part
-    // (about 1e-7 relative at Newton's last steps on the lead-slot model, whose residual is then
-    // 1e-8 of the load's): the tolerance is floored where Newton still converges.
-    tolerance = std::max(tolerance, kAmsMinTolerance);
     const magnetostatics::CgResult cg = s_.ams_->solve(b, tolerance, kAmsMaxIterations, a);
     s_.cg_iterations_ += cg.iterations;
     if (!cg.converged || !a.allFinite())
       throw ConvergenceError("AMS-preconditioned CG did not reach the relative residual " +
-                             std::to_string(tolerance) + " in " +
+                             format_text("%.1e", tolerance) + " in " +
                              std::to_string(kAmsMaxIterations) + " iterations");
     Eigen::VectorXd x(dofs.free_count());
     for (int d = 0; d < dofs.free_count(); ++d) x[d] = a[dofs.edge_of_dof[d]];
@@ -91,7 +88,6 @@ class EdgeSolver::System : public magnetostatics::NonlinearSystem {
   }
 
   static constexpr int kAmsMaxIterations = 1000;
-  static constexpr double kAmsMinTolerance = 1e-6;
   EdgeSolver& s_;
   Eigen::VectorXd load_;         // over the unknowns, at the solve's currents
   bool factor_current_ = false;  // the factorisation is of the tangent last assembled
@@ -124,7 +120,7 @@ EdgeSolver::EdgeSolver(const TetMesh& mesh, std::vector<magnetostatics::Reluctiv
   }
   build_pattern();
   if (linear_ == LinearSolver3d::ams) {
-    ams_ = std::make_unique<AmsCg>(mesh_);
+    ams_ = std::make_unique<AmsCg>(mesh_, dofs_.fixed);
   } else if (dofs_.free_count() > 0) {
     const magnetostatics::SerialOpenMp serial;
     cholesky_.analyzePattern(tangent_);
