@@ -185,6 +185,12 @@ const bool solve_registered = rheomag::app::register_command([](CLI::App& root) 
                   "meridian mesh swept through angles graded towards the features: much faster "
                   "for half and full models)")
       ->check(rheomag::app::non_empty());
+  cmd->add_option("--linear-solver", o->linear_solver,
+                  "With --3d: how each Newton step's linear system is solved: \"cholmod\" "
+                  "(tree-cotree gauge, sparse Cholesky; default) or \"ams\" (all edges, "
+                  "conjugate gradients preconditioned with hypre's AMS: far less memory; "
+                  "docs/magnetostatics3d.md)")
+      ->check(rheomag::app::non_empty());
   cmd->add_option(
          "--max-memory", o->max_memory,
          "Refuse, before meshing, a mesh (2D, or 3D with --3d) whose solve is estimated to need "

@@ -21,6 +21,7 @@ void run_solve_3d(const SolveCommandOptions& o, const cases::Case& c) {
   m3::Solve3dOptions options =
       mesher == m3::Mesher3d::swept ? m3::swept_options() : m3::Solve3dOptions{};
   options.force_full = o.full;
+  options.linear = m3::kLinearSolver3dNames.parse(o.linear_solver, "--linear-solver");
   if (!o.max_memory.empty())
     options.max_memory = rheomag::parse_memory_size(o.max_memory, "--max-memory");
   if (!o.json) {

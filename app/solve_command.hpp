@@ -23,7 +23,8 @@ struct SolveCommandOptions {
   int line_points = 101;
   bool json = false, three_d = false, full = false;
   std::string mesher = "tetgen";
-  std::string max_memory;  // --max-memory text ("8G"); empty: the default limit
+  std::string linear_solver = "cholmod";  // --3d: LinearSolver3d by name
+  std::string max_memory;                 // --max-memory text ("8G"); empty: the default limit
 };
 
 /// `solve --3d`: the case revolved about z with its [[feature]] cuts (magnetostatics3d).

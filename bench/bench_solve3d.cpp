@@ -1,13 +1,15 @@
 // Benchmarks of the 3D solver (rheomag solve --3d): the bundled annular valve revolved (wedge
 // model, default mesh: 1 % agreement with 2D), the small test valve with a lead slot (half
 // model, coarse mesh) and the bundled annular valve with a lead slot on the swept mesh (half
-// model, swept_options(), docs/magnetostatics3d.md: four ways of starting and solving Newton's
-// steps side by side, BM_AnnularValveLeadSlotHalfSwept/0 the previous solver). Whole pipeline
-// timed: revolve, TetGen, gauge, loads, Newton, results. Peak memory: run under /usr/bin/time -v.
-// BM_Team20Fine: TEAM problem 20 on the 2.5 mm grid at the four measured excitations, with the
-// pole force per excitation as counters (F980 ... F5020 [N]; measured 8.0, 53.8, 74.7, 79.7 N).
+// model, swept_options(), docs/magnetostatics3d.md: six ways of starting and solving Newton's
+// steps side by side, CHOLMOD and AMS, BM_AnnularValveLeadSlotHalfSwept/0 the previous solver).
+// Whole pipeline timed: revolve, TetGen, gauge, loads, Newton, results. Peak memory: the
+// lead-slot model's max_rss_MB (process-wide) or /usr/bin/time -v. BM_Team20Fine: TEAM problem 20
+// on the 2.5 mm grid at the four measured excitations, with the pole force per excitation as
+// counters (F980 ... F5020 [N]; measured 8.0, 53.8, 74.7, 79.7 N).
 
 #include <benchmark/benchmark.h>
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <cmath>
@@ -63,12 +65,18 @@ BENCHMARK(BM_SmallValveLeadSlotHalf)->Iterations(1)->Unit(benchmark::kSecond)->U
 struct Variant {
   bool warm_start;  // from the revolved 2D solution (else A = 0)
   bool reuse;       // CG on the last factorisation (Solve3dOptions' budget; else one per step)
+  LinearSolver3d linear;  // CHOLMOD on the gauged system or AMS-preconditioned CG on all edges
+  double ams_forcing;     // AMS: Newton's largest forcing term (Solve3dOptions::ams_max_forcing)
 };
-constexpr Variant kVariants[] = {{false, false}, {false, true}, {true, false}, {true, true}};
+constexpr Variant kVariants[] = {
+    {false, false, LinearSolver3d::cholmod, 0.0}, {false, true, LinearSolver3d::cholmod, 0.0},
+    {true, false, LinearSolver3d::cholmod, 0.0},  {true, true, LinearSolver3d::cholmod, 0.0},
+    {false, false, LinearSolver3d::ams, 0.1},     {false, false, LinearSolver3d::ams, 0.01}};
 
-// The variants side by side in one process: {0, 0} is the previous solver (from A = 0, one
-// factorisation per Newton step); max_sector_change is the largest relative change of a gap's
-// 10-degree sector average from it (the first run), flux_change that of lambda.
+// The variants side by side in one process: /0 is the previous solver (from A = 0, one
+// factorisation per Newton step), /1 the default, /4 and /5 AMS (one set-up per Newton step,
+// forcing 0.1 and 0.01); max_sector_change is the largest relative change of a gap's 10-degree
+// sector average from /0 (or from the first variant run), flux_change that of lambda.
 void BM_AnnularValveLeadSlotHalfSwept(benchmark::State& state) {
   static Results3d previous;
   const std::string path = std::string(RHEOMAG_SOURCE_DIR) + "/cases/annular_valve.toml";
@@ -80,12 +88,14 @@ void BM_AnnularValveLeadSlotHalfSwept(benchmark::State& state) {
   Solve3dOptions options = swept_options();
   options.warm_start = v.warm_start;
   if (!v.reuse) options.reuse_iterations = 0;
+  options.linear = v.linear;
+  if (v.linear == LinearSolver3d::ams) options.ams_max_forcing = v.ams_forcing;
   for (auto _ : state) {
     const Solve3dResult s = solve_problem_3d(c.problem, read_features(c), options);
     report(state, s);
     state.counters["factorizations"] = s.results.factorizations;
     state.counters["cg"] = s.results.cg_iterations;
-    if (state.range(0) == 0) previous = s.results;
+    if (state.range(0) == 0 || previous.circuits.empty()) previous = s.results;  // reference
     double change = 0.0;
     for (std::size_t g = 0; g < previous.gaps.size(); ++g)
       for (int k = 0; k < kThetaSectors; ++k)
@@ -95,12 +105,19 @@ void BM_AnnularValveLeadSlotHalfSwept(benchmark::State& state) {
     state.counters["max_sector_change"] = change;
     state.counters["flux_change"] =
         s.results.circuits[0].flux_linkage / previous.circuits[0].flux_linkage - 1.0;
+    // Process-wide peak so far (getrusage): a variant's own only when it runs first or alone
+    // (--benchmark_filter=LeadSlotHalfSwept/4); else /usr/bin/time -v rheomag solve per setting.
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    state.counters["max_rss_MB"] = static_cast<double>(usage.ru_maxrss) / 1024.0;
   }
-  state.SetLabel(std::string(v.warm_start ? "2D start" : "A = 0") + ", " +
-                 (v.reuse ? "CG on reused factor" : "factor per step"));
+  const std::string steps = v.linear == LinearSolver3d::ams
+                                ? "AMS-CG, forcing " + std::to_string(v.ams_forcing).substr(0, 4)
+                                : (v.reuse ? "CG on reused factor" : "factor per step");
+  state.SetLabel(std::string(v.warm_start ? "2D start" : "A = 0") + ", " + steps);
 }
 BENCHMARK(BM_AnnularValveLeadSlotHalfSwept)
-    ->DenseRange(0, 3)
+    ->DenseRange(0, 5)
     ->Iterations(1)
     ->Unit(benchmark::kSecond)
     ->UseRealTime();

@@ -1,17 +1,20 @@
 #include "magnetostatics3d/edge_solver.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
 
 #include "core/error.hpp"
+#include "core/format_text.hpp"
 #include "magnetostatics/cholmod_status.hpp"
 #include "magnetostatics/preconditioned_cg.hpp"
 #include "magnetostatics/serial_openmp.hpp"
+#include "magnetostatics3d/ams_solver.hpp"
 
 namespace rheomag::magnetostatics3d {
 
-/// R(x) = grad E(x) over the cotree unknowns at fixed currents.
+/// R(x) = grad E(x) over the unknowns (cotree or all free edges) at fixed currents.
 class EdgeSolver::System : public magnetostatics::NonlinearSystem {
  public:
   System(EdgeSolver& solver, Eigen::VectorXd load) : s_(solver), load_(std::move(load)) {}
@@ -21,14 +24,23 @@ class EdgeSolver::System : public magnetostatics::NonlinearSystem {
     return r.norm();
   }
   void factorize_jacobian(const Eigen::VectorXd& x) override {
-    // Linear: one factorisation for all steps and solves.
+    // Linear: one factorisation (AMS set-up) for all steps and solves.
     factor_current_ = s_.factorized_ && !s_.nonlinear_;
     if (factor_current_) return;
     s_.assemble(s_.to_edges(x), nullptr, true);
+    if (s_.linear_ == LinearSolver3d::ams) {
+      // A set-up per step: one kept from an earlier step cost more CG iterations than its
+      // set-up (docs/magnetostatics3d.md).
+      s_.ams_->set_matrix(s_.tangent_);
+      s_.factorized_ = factor_current_ = true;
+      ++s_.factorizations_;
+      return;
+    }
     // With a budget for CG, only the first step factorises; the others try the old factor.
     if (!s_.factorized_ || s_.reuse_iterations_ == 0) factorize();
   }
   Eigen::VectorXd solve_jacobian(const Eigen::VectorXd& rhs, double tolerance) override {
+    if (s_.linear_ == LinearSolver3d::ams) return solve_ams(rhs, tolerance);
     const magnetostatics::SerialOpenMp serial;
     if (!factor_current_) {
       Eigen::VectorXd x;
@@ -48,6 +60,22 @@ class EdgeSolver::System : public magnetostatics::NonlinearSystem {
   }
 
  private:
+  /// AMS-preconditioned CG over the edges (fixed edges: zero) to the tolerance.
+  Eigen::VectorXd solve_ams(const Eigen::VectorXd& rhs, double tolerance) {
+    const EdgeDofs& dofs = s_.dofs_;
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(dofs.fixed.size())), a;
+    for (int d = 0; d < dofs.free_count(); ++d) b[dofs.edge_of_dof[d]] = rhs[d];
+    const magnetostatics::CgResult cg = s_.ams_->solve(b, tolerance, kAmsMaxIterations, a);
+    s_.cg_iterations_ += cg.iterations;
+    if (!cg.converged || !a.allFinite())
+      throw ConvergenceError("AMS-preconditioned CG did not reach the relative residual " +
+                             format_text("%.1e", tolerance) + " in " +
+                             std::to_string(kAmsMaxIterations) + " iterations");
+    Eigen::VectorXd x(dofs.free_count());
+    for (int d = 0; d < dofs.free_count(); ++d) x[d] = a[dofs.edge_of_dof[d]];
+    return x;
+  }
+
   void factorize() {
     const magnetostatics::SerialOpenMp serial;
     s_.cholesky_.factorize(s_.tangent_);
@@ -59,6 +87,7 @@ class EdgeSolver::System : public magnetostatics::NonlinearSystem {
     ++s_.factorizations_;
   }
 
+  static constexpr int kAmsMaxIterations = 1000;
   EdgeSolver& s_;
   Eigen::VectorXd load_;         // over the unknowns, at the solve's currents
   bool factor_current_ = false;  // the factorisation is of the tangent last assembled
@@ -67,20 +96,21 @@ class EdgeSolver::System : public magnetostatics::NonlinearSystem {
 EdgeSolver::EdgeSolver(const TetMesh& mesh, std::vector<magnetostatics::Reluctivity> laws,
                        std::vector<int> material_of_region, Eigen::VectorXd fixed_values,
                        std::vector<Eigen::VectorXd> loads, magnetostatics::NewtonOptions options,
-                       int reuse_iterations)
+                       int reuse_iterations, LinearSolver3d linear)
     : mesh_(mesh),
       laws_(std::move(laws)),
       material_of_region_(std::move(material_of_region)),
       fixed_values_(std::move(fixed_values)),
       loads_(std::move(loads)),
       options_(options),
+      linear_(linear),
       reuse_iterations_(reuse_iterations) {
   for (int m : material_of_region_) {
     if (m < 0 || m >= static_cast<int>(laws_.size()))
       throw InputError("3D mesh: a region has no material");
     nonlinear_ = nonlinear_ || laws_[m].nonlinear();
   }
-  dofs_ = tree_cotree_dofs(mesh_);
+  dofs_ = linear_ == LinearSolver3d::ams ? free_edge_dofs(mesh_) : tree_cotree_dofs(mesh_);
   const int n_tets = static_cast<int>(mesh_.tets.size());
   volume_.resize(n_tets);
   curl_.resize(n_tets);
@@ -88,44 +118,61 @@ EdgeSolver::EdgeSolver(const TetMesh& mesh, std::vector<magnetostatics::Reluctiv
     volume_[t] = mesh_.volume(t);
     curl_[t] = edge_curls(mesh_, t);
   }
-  // Pattern of the lower triangle over the unknowns, then each element entry's value slot.
-  std::vector<Eigen::Triplet<double, int>> triplets;
-  triplets.reserve(static_cast<std::size_t>(n_tets) * 21);
-  for (int t = 0; t < n_tets; ++t) {
-    for (int i = 0; i < 6; ++i) {
-      const int di = dofs_.dof_of_edge[mesh_.tet_edges[t][i]];
-      for (int j = 0; j < 6 && di >= 0; ++j) {
-        const int dj = dofs_.dof_of_edge[mesh_.tet_edges[t][j]];
-        if (dj >= 0 && dj <= di) triplets.emplace_back(di, dj, 0.0);
-      }
-    }
+  build_pattern();
+  if (linear_ == LinearSolver3d::ams) {
+    ams_ = std::make_unique<AmsCg>(mesh_, dofs_.fixed);
+  } else if (dofs_.free_count() > 0) {
+    const magnetostatics::SerialOpenMp serial;
+    cholesky_.analyzePattern(tangent_);
+    magnetostatics::throw_if_out_of_memory(cholesky_);
+    if (cholesky_.info() != Eigen::Success)
+      throw ConvergenceError("CHOLMOD symbolic analysis failed for " +
+                             std::to_string(dofs_.free_count()) + " unknowns");
   }
-  const int n = dofs_.free_count();
+}
+
+EdgeSolver::~EdgeSolver() = default;
+
+int EdgeSolver::row_of(int edge) const {
+  return linear_ == LinearSolver3d::ams ? edge : dofs_.dof_of_edge[edge];
+}
+
+void EdgeSolver::build_pattern() {
+  // The pattern of the tangent, then each element entry's value slot. An entry couples two
+  // unknowns (CHOLMOD: the lower triangle); with AMS a fixed edge also keeps its diagonal (its
+  // row and column eliminated as MFEM does, the element's diagonal kept for the scale).
+  const bool full = linear_ == LinearSolver3d::ams;
+  const int n_tets = static_cast<int>(mesh_.tets.size());
+  auto position = [&](int t, int i, int j) -> std::pair<int, int> {
+    const int ei = mesh_.tet_edges[t][i], ej = mesh_.tet_edges[t][j];
+    const int ri = row_of(ei), rj = row_of(ej);
+    const bool coupled = dofs_.dof_of_edge[ei] >= 0 && dofs_.dof_of_edge[ej] >= 0;
+    if (ri < 0 || rj < 0 || !(coupled || ei == ej) || (!full && rj > ri)) return {-1, -1};
+    return {ri, rj};
+  };
+  std::vector<Eigen::Triplet<double, int>> triplets;
+  triplets.reserve(static_cast<std::size_t>(n_tets) * (full ? 36 : 21));
+  for (int t = 0; t < n_tets; ++t)
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j)
+        if (const auto [ri, rj] = position(t, i, j); ri >= 0) triplets.emplace_back(ri, rj, 0.0);
+  const int n = full ? static_cast<int>(mesh_.edges.size()) : dofs_.free_count();
   tangent_.resize(n, n);
   tangent_.setFromTriplets(triplets.begin(), triplets.end());
   tangent_.makeCompressed();
   slot_.resize(n_tets);
   for (int t = 0; t < n_tets; ++t) {
     for (int i = 0; i < 6; ++i) {
-      const int di = dofs_.dof_of_edge[mesh_.tet_edges[t][i]];
       for (int j = 0; j < 6; ++j) {
-        const int dj = dofs_.dof_of_edge[mesh_.tet_edges[t][j]];
+        const auto [ri, rj] = position(t, i, j);
         int& slot = slot_[t][6 * i + j];
         slot = -1;
-        if (di < 0 || dj < 0 || dj > di) continue;
-        const int* begin = tangent_.innerIndexPtr() + tangent_.outerIndexPtr()[dj];
-        const int* end = tangent_.innerIndexPtr() + tangent_.outerIndexPtr()[dj + 1];
-        slot = static_cast<int>(std::lower_bound(begin, end, di) - tangent_.innerIndexPtr());
+        if (ri < 0) continue;
+        const int* begin = tangent_.innerIndexPtr() + tangent_.outerIndexPtr()[rj];
+        const int* end = tangent_.innerIndexPtr() + tangent_.outerIndexPtr()[rj + 1];
+        slot = static_cast<int>(std::lower_bound(begin, end, ri) - tangent_.innerIndexPtr());
       }
     }
-  }
-  if (n > 0) {
-    const magnetostatics::SerialOpenMp serial;
-    cholesky_.analyzePattern(tangent_);
-    magnetostatics::throw_if_out_of_memory(cholesky_);
-    if (cholesky_.info() != Eigen::Success)
-      throw ConvergenceError("CHOLMOD symbolic analysis failed for " + std::to_string(n) +
-                             " unknowns");
   }
 }
 
@@ -173,11 +220,10 @@ void EdgeSolver::assemble(const Eigen::VectorXd& a, Eigen::VectorXd* residual, b
       for (int j = 0; j <= i; ++j) {
         const double k = v * (n * c[i].dot(c[j]) + dn * bc[i] * bc[j]);
         const int s1 = slot_[t][6 * i + j], s2 = slot_[t][6 * j + i];
-        // One of (i, j), (j, i) is the lower triangle; the diagonal appears once.
-        if (s1 >= 0)
-          tangent_.valuePtr()[s1] += k;
-        else if (s2 >= 0)
-          tangent_.valuePtr()[s2] += k;
+        // CHOLMOD: one of (i, j), (j, i) is in the lower triangle; AMS: both are stored. The
+        // diagonal appears once.
+        if (s1 >= 0) tangent_.valuePtr()[s1] += k;
+        if (s2 >= 0 && i != j) tangent_.valuePtr()[s2] += k;
       }
     }
   }
@@ -203,8 +249,13 @@ EdgeSolution EdgeSolver::solve(const std::vector<double>& currents, const Eigen:
   // the start, so that a warm start converges to the same tolerance.
   Eigen::VectorXd x = Eigen::VectorXd::Zero(n), r;
   const double scale = system.residual(x, r);
-  if (start.size() == static_cast<Eigen::Index>(mesh_.edges.size()) && !start.isZero(0.0))
-    x = cotree_values(mesh_, dofs_, start);
+  if (start.size() == static_cast<Eigen::Index>(mesh_.edges.size()) && !start.isZero(0.0)) {
+    if (linear_ == LinearSolver3d::ams) {
+      for (int d = 0; d < n; ++d) x[d] = start[dofs_.edge_of_dof[d]];  // no gauge to remove
+    } else {
+      x = cotree_values(mesh_, dofs_, start);
+    }
+  }
   magnetostatics::NewtonOptions options = options_;
   options.local_iterations = 0;
   sol.newton = magnetostatics::newton_solve(system, x, scale, options);

@@ -32,9 +32,10 @@ class NodeSets {
   std::vector<int> parent_, size_;
 };
 
-}  // namespace
-
-EdgeDofs tree_cotree_dofs(const TetMesh& mesh) {
+/// The edges of the mesh's condition faces, marked in d.fixed (d.dof_of_edge all -1); `on_face`
+/// is called with each node of those faces.
+template <typename OnFaceNode>
+EdgeDofs condition_edges(const TetMesh& mesh, OnFaceNode on_face) {
   if (mesh.faces.empty()) {
     throw InputError("3D mesh: no outer or symmetry boundary, so A is not determined");
   }
@@ -42,7 +43,7 @@ EdgeDofs tree_cotree_dofs(const TetMesh& mesh) {
   const int n_edges = static_cast<int>(mesh.edges.size());
   d.fixed.assign(n_edges, false);
   d.dof_of_edge.assign(n_edges, -1);
-  // Fixed edges: those of condition faces. Edge lookup through the tets' edge lists.
+  // Edge lookup through the edges of each node.
   std::vector<std::vector<std::pair<int, int>>> by_node(mesh.nodes.size());  // (other, edge)
   for (int e = 0; e < n_edges; ++e) by_node[mesh.edges[e][0]].push_back({mesh.edges[e][1], e});
   auto find_edge = [&](int a, int b) {
@@ -51,16 +52,24 @@ EdgeDofs tree_cotree_dofs(const TetMesh& mesh) {
       if (other == b) return e;
     return -1;
   };
-  NodeSets sets(static_cast<int>(mesh.nodes.size()));
-  const int anchor = mesh.faces.front()[0];
   for (const auto& f : mesh.faces) {
     for (int k = 0; k < 3; ++k) {
       const int e = find_edge(f[k], f[(k + 1) % 3]);
       if (e >= 0) d.fixed[e] = true;
-      sets.unite(anchor, f[k]);
+      on_face(f[k]);
     }
   }
-  for (int e = 0; e < n_edges; ++e) {
+  return d;
+}
+
+}  // namespace
+
+EdgeDofs tree_cotree_dofs(const TetMesh& mesh) {
+  // The spanning tree is grown from all fixed-edge nodes taken as one node.
+  NodeSets sets(static_cast<int>(mesh.nodes.size()));
+  const int anchor = mesh.faces.empty() ? 0 : mesh.faces.front()[0];
+  EdgeDofs d = condition_edges(mesh, [&](int node) { sets.unite(anchor, node); });
+  for (int e = 0; e < static_cast<int>(mesh.edges.size()); ++e) {
     if (d.fixed[e]) continue;
     if (sets.unite(mesh.edges[e][0], mesh.edges[e][1])) {
       ++d.tree_edges;
@@ -68,6 +77,16 @@ EdgeDofs tree_cotree_dofs(const TetMesh& mesh) {
       d.dof_of_edge[e] = d.free_count();
       d.edge_of_dof.push_back(e);
     }
+  }
+  return d;
+}
+
+EdgeDofs free_edge_dofs(const TetMesh& mesh) {
+  EdgeDofs d = condition_edges(mesh, [](int) {});
+  for (int e = 0; e < static_cast<int>(mesh.edges.size()); ++e) {
+    if (d.fixed[e]) continue;
+    d.dof_of_edge[e] = d.free_count();
+    d.edge_of_dof.push_back(e);
   }
   return d;
 }

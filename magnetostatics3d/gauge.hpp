@@ -25,6 +25,10 @@ struct EdgeDofs {
 /// Throws InputError if the mesh has no condition face (A would not be determined).
 EdgeDofs tree_cotree_dofs(const TetMesh& mesh);
 
+/// The ungauged unknowns: every edge off the condition faces (no tree removed), for solvers of
+/// the singular curl-curl system (AMS). Throws InputError as tree_cotree_dofs.
+EdgeDofs free_edge_dofs(const TetMesh& mesh);
+
 /// The unknowns (cotree values) of the gauged field with the same curl as the edge values `a`
 /// (one per edge, zero tangential A on the fixed edges): a minus the discrete gradient of the
 /// potential that is zero on the fixed edges' nodes and integrates `a` along the tree, so that

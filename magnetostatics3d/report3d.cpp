@@ -60,6 +60,7 @@ nlohmann::json results_json_3d(const Results3d& results) {
       {"inductance", has_circuit ? number(results.circuits.front().inductance) : nlohmann::json()},
       {"energy", number(results.energy)},
       {"newton_iterations", results.newton_iterations},
+      {"linear_solver", std::string(kLinearSolver3dNames.name(results.linear_solver))},
       {"factorizations", results.factorizations},
       {"cg_iterations", results.cg_iterations},
       {"residual_history", results.residual_history},

@@ -50,6 +50,7 @@ Results3d compute_results_3d(const cases::Problem& closed, const EdgeSolver& sol
   res.nodes = static_cast<int>(mesh.nodes.size());
   res.edges = static_cast<int>(mesh.edges.size());
   res.newton_iterations = solution.newton.iterations;
+  res.linear_solver = solver.linear_solver();
   res.factorizations = solution.factorizations;
   res.cg_iterations = solution.cg_iterations;
   res.residual_history = solution.newton.residual_history;

@@ -55,8 +55,9 @@ struct Results3d {
   int nodes = 0;
   int edges = 0;
   int newton_iterations = 0;
-  int factorizations = 0;  ///< numeric Cholesky factorisations of the solve
-  int cg_iterations = 0;   ///< CG iterations preconditioned with a reused factorisation
+  LinearSolver3d linear_solver = LinearSolver3d::cholmod;  ///< how the Newton steps were solved
+  int factorizations = 0;  ///< numeric Cholesky factorisations (AMS: set-ups) of the solve
+  int cg_iterations = 0;   ///< CG iterations (on a reused factorisation, or AMS-preconditioned)
   std::vector<double> residual_history;
   double seconds = 0.0;  ///< mesh and solve wall time
 };

@@ -240,10 +240,12 @@ Solve3dResult solve_problem_3d(const cases::Problem& problem, const std::vector<
     report("solve", "2D solution as the start");
     initial = revolved_2d_solution(closed, source_meridian, *out.mesh);
   }
+  magnetostatics::NewtonOptions newton = options.newton;
+  if (options.linear == LinearSolver3d::ams) newton.max_forcing = options.ams_max_forcing;
   out.solver = std::make_unique<EdgeSolver>(
       *out.mesh, magnetostatics::build_reluctivities(closed), material_of_region, fixed,
-      circuit_loads(closed, source_meridian, *out.mesh, undeformed), options.newton,
-      options.reuse_iterations);
+      circuit_loads(closed, source_meridian, *out.mesh, undeformed), newton,
+      options.reuse_iterations, options.linear);
   std::vector<double> currents;
   for (const cases::Circuit& c : closed.circuits) currents.push_back(c.current);
   out.solution = out.solver->solve(currents, initial);

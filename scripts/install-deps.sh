@@ -7,7 +7,8 @@ pkgs=(build-essential cmake pkg-config git ca-certificates
   libeigen3-dev libsuitesparse-dev libcgal-dev libvtk9-dev libcairo2-dev
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev
   libboost-dev libtet1.5-dev libmuparser-dev libopenblas0-pthread coinor-libipopt-dev libceres-dev libsvm-dev gnuplot-nox)
-pkgs+=(libopenmpi-dev openmpi-bin)  # rheomag sweep under mpirun (optional at build time)
+pkgs+=(libopenmpi-dev openmpi-bin)  # rheomag sweep under mpirun; hypre's MPI (below)
+pkgs+=(libhypre-dev)  # the 3D solver's AMS-preconditioned CG (--linear-solver ams; MIT/Apache-2.0)
 if [ "${1:-}" = --tests ]; then
   pkgs+=(libgtest-dev libgmock-dev libbenchmark-dev clang-format)
   pkgs+=(chromium)  # headless screenshot test of the diagnosis report (skipped when absent)

@@ -1,6 +1,7 @@
 // `rheomag solve CASE --3d` end to end: the JSON keys (the 2D ones plus dimension,
 // tetrahedra and 36 sectors of B_avg_theta per gap), the gap average against `rheomag solve` in
-// 2D on the same case, and a bad --mesher name as exit 2 naming the option.
+// 2D on the same case, a bad --mesher or --linear-solver name as exit 2 naming the option, and
+// the AMS linear solver's field against CHOLMOD's.
 
 #include <gtest/gtest.h>
 
@@ -45,6 +46,34 @@ TEST(Solve3dCli, UnknownMesherIsExitTwoNamingTheOption) {
   const auto run = rheomag::cli_test::run_rheomag("solve '" + kValve + "' --3d --mesher voxel");
   EXPECT_EQ(run.code, 2) << run.err;
   EXPECT_NE(run.err.find("--mesher"), std::string::npos) << run.err;
+}
+
+// The message names the option and both accepted values.
+TEST(Solve3dCli, UnknownLinearSolverIsExitTwoNamingTheOptionAndTheChoices) {
+  const auto run =
+      rheomag::cli_test::run_rheomag("solve '" + kValve + "' --3d --linear-solver mumps");
+  EXPECT_EQ(run.code, 2) << run.err;
+  for (const char* text : {"--linear-solver", "\"cholmod\"", "\"ams\"", "mumps"})
+    EXPECT_NE(run.err.find(text), std::string::npos) << text << " in " << run.err;
+}
+
+// The swept wedge (1-2 s) with AMS: the JSON says so, and the gap averages are CHOLMOD's.
+// Reference: the CHOLMOD run; tolerance 1e-6 relative (both Newton solves stop at 1e-8).
+TEST(Solve3dCli, AmsLinearSolverGivesCholmodsGapField) {
+  const std::string command = "solve '" + kValve + "' --3d --mesher swept --json";
+  const auto ams = rheomag::cli_test::run_rheomag(command + " --linear-solver ams");
+  ASSERT_EQ(ams.code, 0) << ams.err;
+  const auto cholmod = rheomag::cli_test::run_rheomag(command);
+  ASSERT_EQ(cholmod.code, 0) << cholmod.err;
+  const auto a = nlohmann::json::parse(ams.out), c = nlohmann::json::parse(cholmod.out);
+  EXPECT_EQ(a["linear_solver"], "ams");
+  EXPECT_EQ(c["linear_solver"], "cholmod");
+  for (std::size_t g = 0; g < c["gaps"].size(); ++g) {
+    const double reference = c["gaps"][g]["B_avg"].get<double>();
+    EXPECT_NEAR(a["gaps"][g]["B_avg"].get<double>(), reference, 1e-6 * reference);
+  }
+  const double lambda = c["flux_linkage"].get<double>();
+  EXPECT_NEAR(a["flux_linkage"].get<double>(), lambda, 1e-6 * lambda);
 }
 
 // A bolt hole in the air around the valve refines the whole air region to half its radius: the
