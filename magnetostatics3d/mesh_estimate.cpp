@@ -48,6 +48,10 @@ constexpr double kTrianglesPerEquilateral = 2.0;
 /// 336,804 tetrahedra (5270 B each), 3.55 GB for 609,246 (5830 B each).
 constexpr double kBytesPerTetrahedron = 2700.0;
 constexpr double kFillBytesPerTetrahedron = 37.0;
+/// AMS (no factor): peak RSS of `solve --3d --linear-solver ams` 0.576 GB for the lead-slot half
+/// model's 351k tetrahedra (1640 B each) and 0.24 GB for the annular valve's TetGen wedge (139k,
+/// 1730 B each); 1800 B each, rounded up.
+constexpr double kAmsBytesPerTetrahedron = 1800.0;
 
 std::string count_text(double count) {
   char text[32];
@@ -63,7 +67,8 @@ double MeshEstimate3d::tetrahedra() const {
   return total;
 }
 
-double solve_memory_bytes(double tetrahedra) {
+double solve_memory_bytes(double tetrahedra, LinearSolver3d linear) {
+  if (linear == LinearSolver3d::ams) return tetrahedra * kAmsBytesPerTetrahedron;
   return tetrahedra * (kBytesPerTetrahedron + kFillBytesPerTetrahedron * std::cbrt(tetrahedra));
 }
 
@@ -111,7 +116,7 @@ void require_mesh_within_memory(const MeshEstimate3d& estimate, double max_memor
                                 const cases::Problem& closed, const std::vector<double>& sizes,
                                 const std::vector<std::string>& size_reasons) {
   const double tetrahedra = estimate.tetrahedra();
-  const double bytes = solve_memory_bytes(tetrahedra);
+  const double bytes = solve_memory_bytes(tetrahedra, estimate.linear);
   if (!(max_memory > 0) || bytes / estimate.spread <= max_memory) return;
   const auto& counts = estimate.region_tetrahedra;
   const std::size_t largest =
@@ -124,13 +129,18 @@ void require_mesh_within_memory(const MeshEstimate3d& estimate, double max_memor
   if (largest < size_reasons.size() && !size_reasons[largest].empty())
     driver += ": " + size_reasons[largest];
   driver += ")";
-  throw InputError(closed.geometry.source + ": the 3D mesh (" + estimate.mesher +
-                   ") would have about " + count_text(tetrahedra) +
-                   " tetrahedra and its solve would need about " + memory_size_text(bytes) +
-                   ", more than the " + memory_size_text(max_memory) +
-                   " allowed (--max-memory; default 3/4 of the memory available: physical, ulimit "
-                   "-v, cgroup); most of them in " +
-                   driver + "; expected coarser elements there or a larger --max-memory");
+  throw InputError(
+      closed.geometry.source + ": the 3D mesh (" + estimate.mesher + ") would have about " +
+      count_text(tetrahedra) + " tetrahedra and its solve (--linear-solver " +
+      std::string(kLinearSolver3dNames.name(estimate.linear)) + ") would need about " +
+      memory_size_text(bytes) + ", more than the " + memory_size_text(max_memory) +
+      " allowed (--max-memory; default 3/4 of the memory available: physical, ulimit "
+      "-v, cgroup); most of them in " +
+      driver + "; expected coarser elements there or a larger --max-memory" +
+      (estimate.linear == LinearSolver3d::cholmod
+           ? " (or --linear-solver ams, no factor: about " +
+                 memory_size_text(solve_memory_bytes(tetrahedra, LinearSolver3d::ams)) + ")"
+           : std::string()));
 }
 
 }  // namespace rheomag::magnetostatics3d

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "case/problem.hpp"
+#include "magnetostatics3d/edge_solver.hpp"
 #include "mesh/mesh.hpp"
 
 namespace rheomag::magnetostatics3d {
@@ -16,14 +17,17 @@ struct MeshEstimate3d {
   std::string mesher;   ///< "swept, full model, 96 angular steps" for messages
   double spread = 1.0;  ///< how far the estimate may exceed the count (1: exact); a mesh is
                         ///< refused when its memory over this exceeds the limit
+  LinearSolver3d linear = LinearSolver3d::cholmod;  ///< the solve's (its memory differs)
 
   /// Sum over the regions.
   double tetrahedra() const;
 };
 
 /// Estimated peak memory [bytes] of a 3D solve with `tetrahedra` first-order Nedelec elements:
-/// the mesh, the edge system and its Cholesky factor (measured, docs/magnetostatics3d.md).
-double solve_memory_bytes(double tetrahedra);
+/// the mesh, the edge system and, with CHOLMOD, its Cholesky factor; with AMS, hypre's copy of
+/// the system and its auxiliary hierarchies, linear in the size (measured,
+/// docs/magnetostatics3d.md).
+double solve_memory_bytes(double tetrahedra, LinearSolver3d linear = LinearSolver3d::cholmod);
 
 /// TetGen: per region, its volume of revolution over `span` [rad] (from the linear `meridian`
 /// mesh) over the volume of a regular tetrahedron of its size `sizes[r]` [m], times the measured

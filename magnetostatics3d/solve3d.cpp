@@ -200,6 +200,7 @@ Solve3dResult solve_problem_3d(const cases::Problem& problem, const std::vector<
     MeshEstimate3d estimate = estimate_swept_mesh(meridian, swept_sizes, default_size, steps);
     estimate.mesher = "swept, " + part_text(part, steps);
     estimate.spread = 2.0;  // from areas, up to 1.4x the count on the bundled valves
+    estimate.linear = options.linear;
     require_mesh_within_memory(estimate, max_memory, closed, swept_sizes, why);
     mesh::MeshOptions sweep_options = meridian_options;
     sweep_options.min_gap_elements = options.gap_layers;
@@ -207,6 +208,7 @@ Solve3dResult solve_problem_3d(const cases::Problem& problem, const std::vector<
     swept_meridian = mesh::generate_mesh(sized, sweep_options);
     MeshEstimate3d counted = count_swept_mesh(swept_meridian, sizes.size(), steps);
     counted.mesher = estimate.mesher;
+    counted.linear = options.linear;
     require_mesh_within_memory(counted, max_memory, closed, swept_sizes, why);
     out.mesh = std::make_unique<TetMesh>(sweep_mesh(swept_meridian, swept_revolution));
   } else {
@@ -214,6 +216,7 @@ Solve3dResult solve_problem_3d(const cases::Problem& problem, const std::vector<
     MeshEstimate3d estimate = estimate_tetgen_mesh(meridian, sizes, default_size, span);
     estimate.mesher = "TetGen, " + part_text(part, rev.angles.size() - 1);
     estimate.spread = 2.0;
+    estimate.linear = options.linear;
     require_mesh_within_memory(estimate, max_memory, closed, sizes,
                                size_reasons_3d(closed, sizes, {}, features, options));
     out.mesh = std::make_unique<TetMesh>(

@@ -97,8 +97,16 @@ TEST(Solve3dCli, MeshBeyondTheMemoryLimitIsRefusedBeforeMeshing) {
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
   EXPECT_EQ(run.code, 2) << run.err;
   for (const char* part : {"tetrahedra", "more than the 17.2 GB allowed (--max-memory",
-                           "region 'air'", "feature[1] (hole)", "swept, full model"})
+                           "region 'air'", "feature[1] (hole)", "swept, full model",
+                           "(--linear-solver cholmod)", "or --linear-solver ams, no factor"})
     EXPECT_NE(run.err.find(part), std::string::npos) << part << " in: " << run.err;
+  // AMS needs no factor (about 1800 B a tetrahedron, about 10 GB here): still more than 1G.
+  const auto ams = rheomag::cli_test::run_rheomag(
+      "solve '" + holed + "' --3d --full --mesher swept --linear-solver ams --max-memory 1G");
+  EXPECT_EQ(ams.code, 2) << ams.err;
+  EXPECT_NE(ams.err.find("(--linear-solver ams) would need about 10"), std::string::npos)
+      << ams.err;
+  EXPECT_EQ(ams.err.find("or --linear-solver ams"), std::string::npos) << ams.err;
   // The wedge of the same case without the hole fits 16G; a limit below its ~0.05 GB does not.
   const std::string valve = std::string(RHEOMAG_TEST_DATA) + "/magnetostatics3d/small_valve.toml";
   const auto tight =
