@@ -48,12 +48,21 @@ extern "C" void request_mpi_stop(int signal_number) {
   g_mpi_stop.compare_exchange_strong(expected, signal_number);
 }
 
-/// Ends MPI on every path out of run_sweep_mpi.
+/// Starts MPI unless this process already has (the 3D solver's AMS starts it on first use), and
+/// then ends it on every path out of run_sweep_mpi.
 struct MpiSession {
-  MpiSession() { MPI_Init(nullptr, nullptr); }
-  ~MpiSession() { MPI_Finalize(); }
+  MpiSession() {
+    int initialized = 0;
+    MPI_Initialized(&initialized);
+    owned = !initialized;
+    if (owned) MPI_Init(nullptr, nullptr);
+  }
+  ~MpiSession() {
+    if (owned) MPI_Finalize();
+  }
   MpiSession(const MpiSession&) = delete;
   MpiSession& operator=(const MpiSession&) = delete;
+  bool owned = false;  ///< MPI_Init was called here
 };
 
 long long row_id(const std::string& row) {
