@@ -81,6 +81,7 @@ NewtonReport newton_solve(NonlinearSystem& system, Eigen::VectorXd& x, double sc
     report.iterations = it + 1;
     report.step_lengths.push_back(alpha);
     report.residual_history.push_back(norm / scale);
+    if (options.on_step) options.on_step(report.iterations, norm / scale);
   }
 }
 

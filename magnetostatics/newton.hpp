@@ -3,6 +3,7 @@
 // potential, on that energy; optional local corrections where the residual concentrates.
 
 #include <Eigen/Core>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -29,6 +30,9 @@ struct NewtonOptions {
   int local_layers = 4;         ///< rings of elements added around the seed dofs
   /// Largest patch as a share of all dofs (fewer rings, or no local step, beyond it).
   double local_max_share = 0.1;
+  /// Called after each accepted step with the steps so far and the relative residual (progress
+  /// of a long solve; optional).
+  std::function<void(int steps, double relative_residual)> on_step;
 };
 
 /// What the iteration did.

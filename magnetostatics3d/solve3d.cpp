@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <functional>
+#include <memory>
 #include <numbers>
 
 #include "core/constants.hpp"
@@ -110,6 +113,33 @@ std::string part_text(ModelPart part, std::size_t steps) {
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// A Newton step callback reporting to `progress` the step, its relative residual against the
+/// tolerance and, from the last step's reduction, the steps and seconds left at that rate (an
+/// upper bound while Newton converges faster than linearly); elapsed times from `start`. It
+/// holds copies only: the solver keeps it beyond this solve.
+std::function<void(int, double)> newton_progress(ProgressCallback progress,
+                                                 std::chrono::steady_clock::time_point start,
+                                                 double tolerance) {
+  const auto newton_start = std::chrono::steady_clock::now();
+  auto previous = std::make_shared<double>(1.0);
+  return [progress, start, newton_start, previous, tolerance](int steps, double residual) {
+    char detail[160];
+    const double rate = residual / *previous, spent = seconds_since(newton_start);
+    *previous = residual;
+    if (residual > tolerance && rate > 0.0 && rate < 1.0) {
+      const double left = std::ceil(std::log(tolerance / residual) / std::log(rate));
+      std::snprintf(detail, sizeof detail,
+                    "relative residual %.2e (tolerance %.0e); at this step's rate at most %.0f "
+                    "more step%s, %.0f s",
+                    residual, tolerance, left, left == 1.0 ? "" : "s", left * spent / steps);
+    } else {
+      std::snprintf(detail, sizeof detail, "relative residual %.2e (tolerance %.0e)", residual,
+                    tolerance);
+    }
+    progress({"Newton step " + std::to_string(steps), 0, 0, seconds_since(start), detail});
+  };
 }
 
 }  // namespace
@@ -245,6 +275,8 @@ Solve3dResult solve_problem_3d(const cases::Problem& problem, const std::vector<
   }
   magnetostatics::NewtonOptions newton = options.newton;
   if (options.linear == LinearSolver3d::ams) newton.max_forcing = options.ams_max_forcing;
+  if (options.progress && !newton.on_step)
+    newton.on_step = newton_progress(options.progress, start, newton.relative_tolerance);
   out.solver = std::make_unique<EdgeSolver>(
       *out.mesh, magnetostatics::build_reluctivities(closed), material_of_region, fixed,
       circuit_loads(closed, source_meridian, *out.mesh, undeformed), newton,

@@ -42,6 +42,31 @@ TEST(Solve3dCli, SweptWedgePrintsTheIssuesKeysAndThe2dGapField) {
   }
 }
 
+// Progress on stderr (the lead-slot half model takes about 20 s): a line per Newton step with its
+// relative residual against the tolerance, step numbers counting up from 1, the last one below
+// the tolerance; --json keeps stderr free of them.
+TEST(Solve3dCli, PrintsEachNewtonStepsResidualOnStderr) {
+  const auto run = rheomag::cli_test::run_rheomag("solve '" + kValve + "' --3d --mesher swept");
+  ASSERT_EQ(run.code, 0) << run.err;
+  int steps = 0;
+  double last = 1.0;
+  for (std::size_t at = run.err.find("3d: Newton step "); at != std::string::npos;
+       at = run.err.find("3d: Newton step ", at + 1)) {
+    ++steps;
+    EXPECT_EQ(std::stoi(run.err.substr(at + 16)), steps) << run.err;
+    const std::size_t r = run.err.find("relative residual ", at);
+    ASSERT_NE(r, std::string::npos) << run.err;
+    last = std::stod(run.err.substr(r + 18));
+  }
+  EXPECT_GE(steps, 2) << run.err;
+  EXPECT_LE(last, 1e-8) << run.err;
+  EXPECT_NE(run.err.find("(tolerance 1e-08)"), std::string::npos) << run.err;
+  const auto json =
+      rheomag::cli_test::run_rheomag("solve '" + kValve + "' --3d --mesher swept --json");
+  ASSERT_EQ(json.code, 0) << json.err;
+  EXPECT_EQ(json.err.find("Newton step"), std::string::npos) << json.err;
+}
+
 TEST(Solve3dCli, UnknownMesherIsExitTwoNamingTheOption) {
   const auto run = rheomag::cli_test::run_rheomag("solve '" + kValve + "' --3d --mesher voxel");
   EXPECT_EQ(run.code, 2) << run.err;
