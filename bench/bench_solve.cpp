@@ -95,7 +95,9 @@ BENCHMARK(BM_NonlinearSolve)
 /// half, a quarter, ... the cells per millimetre (down to about 1.5e4 unknowns, coarsest first,
 /// their setup timed), each interpolated onto the next, Newton on the fine mesh last. Second
 /// argument: the most CG iterations with an old factorisation (0: the default reuse rule; else
-/// also no refactorisation on a changed tangent while CG converges, FactorReuse).
+/// also no refactorisation on a changed tangent while CG converges, FactorReuse). Third: 1 for
+/// Newton's default oversolving guard, 0 without it (NewtonOptions::oversolve_guard = 0, the
+/// solver before the guard), side by side.
 void BM_NestedSolve(benchmark::State& state) {
   const test::PotCore core;
   std::vector<mesh::Mesh> coarser;
@@ -103,6 +105,7 @@ void BM_NestedSolve(benchmark::State& state) {
     coarser.insert(coarser.begin(), test::pot_core_mesh(core, cells_per_mm(dofs), 2));
   }
   SolveOptions options;
+  if (state.range(2) == 0) options.newton.oversolve_guard = 0.0;
   if (state.range(1) > 0) {
     options.reuse.refactor_change = std::numeric_limits<double>::infinity();
     options.reuse.max_iterations = static_cast<int>(state.range(1));
@@ -114,7 +117,7 @@ void BM_NestedSolve(benchmark::State& state) {
   state.counters["levels"] = static_cast<double>(coarser.size() + 1);
 }
 BENCHMARK(BM_NestedSolve)
-    ->ArgsProduct({{10'000, 100'000, 1'000'000}, {0, 30}})
+    ->ArgsProduct({{10'000, 100'000, 1'000'000}, {0, 30}, {0, 1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -67,15 +67,18 @@ struct Variant {
   bool reuse;       // CG on the last factorisation (Solve3dOptions' budget; else one per step)
   LinearSolver3d linear;  // CHOLMOD on the gauged system or AMS-preconditioned CG on all edges
   double ams_forcing;     // AMS: Newton's largest forcing term (Solve3dOptions::ams_max_forcing)
+  bool guard = true;      // Newton's oversolving guard (NewtonOptions::oversolve_guard; else 0)
 };
 constexpr Variant kVariants[] = {
-    {false, false, LinearSolver3d::cholmod, 0.0}, {false, true, LinearSolver3d::cholmod, 0.0},
-    {true, false, LinearSolver3d::cholmod, 0.0},  {true, true, LinearSolver3d::cholmod, 0.0},
-    {false, false, LinearSolver3d::ams, 0.1},     {false, false, LinearSolver3d::ams, 0.01}};
+    {false, false, LinearSolver3d::cholmod, 0.0},   {false, true, LinearSolver3d::cholmod, 0.0},
+    {true, false, LinearSolver3d::cholmod, 0.0},    {true, true, LinearSolver3d::cholmod, 0.0},
+    {false, false, LinearSolver3d::ams, 0.1},       {false, false, LinearSolver3d::ams, 0.01},
+    {false, false, LinearSolver3d::ams, 0.1, false}};
 
 // The variants side by side in one process: /0 is the previous solver (from A = 0, one
 // factorisation per Newton step), /1 the default, /4 and /5 AMS (one set-up per Newton step,
-// forcing 0.1 and 0.01); max_sector_change is the largest relative change of a gap's 10-degree
+// forcing 0.1 and 0.01), /6 AMS at 0.1 without Newton's oversolving guard (the solver before
+// it); max_sector_change is the largest relative change of a gap's 10-degree
 // sector average from /0 (or from the first variant run), flux_change that of lambda.
 void BM_AnnularValveLeadSlotHalfSwept(benchmark::State& state) {
   static Results3d previous;
@@ -90,6 +93,7 @@ void BM_AnnularValveLeadSlotHalfSwept(benchmark::State& state) {
   if (!v.reuse) options.reuse_iterations = 0;
   options.linear = v.linear;
   if (v.linear == LinearSolver3d::ams) options.ams_max_forcing = v.ams_forcing;
+  if (!v.guard) options.newton.oversolve_guard = 0.0;
   for (auto _ : state) {
     const Solve3dResult s = solve_problem_3d(c.problem, read_features(c), options);
     report(state, s);
@@ -114,10 +118,11 @@ void BM_AnnularValveLeadSlotHalfSwept(benchmark::State& state) {
   const std::string steps = v.linear == LinearSolver3d::ams
                                 ? "AMS-CG, forcing " + std::to_string(v.ams_forcing).substr(0, 4)
                                 : (v.reuse ? "CG on reused factor" : "factor per step");
-  state.SetLabel(std::string(v.warm_start ? "2D start" : "A = 0") + ", " + steps);
+  state.SetLabel(std::string(v.warm_start ? "2D start" : "A = 0") + ", " + steps +
+                 (v.guard ? "" : ", no oversolving guard"));
 }
 BENCHMARK(BM_AnnularValveLeadSlotHalfSwept)
-    ->DenseRange(0, 5)
+    ->DenseRange(0, 6)
     ->Iterations(1)
     ->Unit(benchmark::kSecond)
     ->UseRealTime();

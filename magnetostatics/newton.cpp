@@ -40,7 +40,8 @@ NewtonReport newton_solve(NonlinearSystem& system, Eigen::VectorXd& x, double sc
       fail("maximum number of iterations reached", it, norm / scale, options.relative_tolerance);
     }
     system.factorize_jacobian(x);
-    const double forcing = std::min(options.max_forcing, norm / scale);
+    const double needed = options.oversolve_guard * options.relative_tolerance * scale / norm;
+    const double forcing = std::min(options.max_forcing, std::max(norm / scale, needed));
     const Eigen::VectorXd step = system.solve_jacobian(-r, forcing);
     double alpha = 1.0, trial_norm = 0.0;
     bool accepted = false;

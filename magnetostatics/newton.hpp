@@ -18,8 +18,12 @@ struct NewtonOptions {
   double divergence_factor = 1e6;     ///< ConvergenceError when |R| > factor * |R(x = 0)|
   /// Linear solves may be inexact (iterative, with a reused factorisation as preconditioner):
   /// |J dx + R| <= eta |R| with eta = min(max_forcing, |R| / |R(x = 0)|), which keeps the
-  /// convergence quadratic (eta = O(|R|)).
+  /// convergence quadratic (eta = O(|R|)), but not below oversolve_guard's bound.
   double max_forcing = 1e-2;
+  /// The forcing term is at least oversolve_guard * tol * |R(x = 0)| / |R|: a step whose linear
+  /// residual is already below what convergence needs is not solved further (Kelley's safeguard
+  /// against oversolving the last step; 0 turns it off).
+  double oversolve_guard = 0.5;
   /// Local corrections after each Newton step (nonlinear elimination): when at most
   /// local_max_dofs dofs hold local_fraction of |R|^2 (a saturating corner), up to
   /// local_iterations Newton steps on those dofs grown by local_layers rings of elements, the rest
