@@ -185,6 +185,7 @@ ParamGuess initial_guess(lumped::PhenoKind kind, const lumped::DriveSeries& d,
       add(20 * F / X, 20 * F / X, 0.1 * F / X, 1e4 * F / X, false);        // compliance_stiffness
       add(0.0, 1.0 / X, 0.0, 1e3 / X, false);                              // stiffening
       add(0.05 * F, F, 0.0, 2 * F, false);                                 // seal_friction
+      add(0.0, F / U, 0.0, 2 * F / U, true);                               // ..._per_field
       add(0.01 * X, 0.01 * X, 1e-5 * X, X, false);                         // seal_presliding
       add(0.0, F / Acc, -10 * F / Acc, 10 * F / Acc, false);               // inertance
       add(0.0, F / X, -10 * F / X, 10 * F / X, false);                     // gas_stiffness
@@ -353,7 +354,7 @@ void fit_data(const FitData& data, const GreyboxOptions& options, const std::str
       run_fit_free<14, 13, 12, 9, 8>(data, fit.setup, guess, options, fit);
       break;
     case lumped::PhenoKind::damper:
-      run_fit_free<17, 17, 16, 15, 12, 11>(data, fit.setup, guess, options, fit);
+      run_fit_free<18, 18, 17, 16, 12, 11>(data, fit.setup, guess, options, fit);
       break;
   }
 }

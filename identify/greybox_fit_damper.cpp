@@ -1,4 +1,4 @@
-// The Ceres fit of the physically based damper model (17 parameters), one instantiation per
+// The Ceres fit of the physically based damper model (18 parameters), one instantiation per
 // free-parameter count (with and without the field terms and output smoothing; greybox.cpp
 // dispatches to them).
 
@@ -6,15 +6,15 @@
 
 namespace rheomag::identify::greybox_detail {
 
-template void run_fit<17, 17>(const FitData&, const lumped::GreyboxSetup&, const ParamGuess&,
+template void run_fit<18, 18>(const FitData&, const lumped::GreyboxSetup&, const ParamGuess&,
                               const GreyboxOptions&, GreyboxFit&);
-template void run_fit<17, 16>(const FitData&, const lumped::GreyboxSetup&, const ParamGuess&,
+template void run_fit<18, 17>(const FitData&, const lumped::GreyboxSetup&, const ParamGuess&,
                               const GreyboxOptions&, GreyboxFit&);
-template void run_fit<17, 15>(const FitData&, const lumped::GreyboxSetup&, const ParamGuess&,
+template void run_fit<18, 16>(const FitData&, const lumped::GreyboxSetup&, const ParamGuess&,
                               const GreyboxOptions&, GreyboxFit&);
-template void run_fit<17, 12>(const FitData&, const lumped::GreyboxSetup&, const ParamGuess&,
+template void run_fit<18, 12>(const FitData&, const lumped::GreyboxSetup&, const ParamGuess&,
                               const GreyboxOptions&, GreyboxFit&);
-template void run_fit<17, 11>(const FitData&, const lumped::GreyboxSetup&, const ParamGuess&,
+template void run_fit<18, 11>(const FitData&, const lumped::GreyboxSetup&, const ParamGuess&,
                               const GreyboxOptions&, GreyboxFit&);
 
 }  // namespace rheomag::identify::greybox_detail

@@ -113,6 +113,7 @@ const std::vector<PhenoParam>& pheno_params(PhenoKind kind) {
                                                  {"compliance_stiffness", "Y/X", false},
                                                  {"stiffening", "1/X", false},
                                                  {"seal_friction", "Y", false},
+                                                 {"seal_friction_per_field", "Y/U", true, true},
                                                  {"seal_presliding", "X", false},
                                                  {"inertance", "Y s/M", false},
                                                  {"gas_stiffness", "Y/X", false},
@@ -187,7 +188,8 @@ Domain pheno_param_domain(PhenoKind kind, std::size_t index) {
       if (n == "field_time_constant") return Domain::between(1e-4, 1.0);
       if (named({"consistency", "pre_yield_viscous", "compliance_stiffness", "seal_presliding"}))
         return Domain::positive();
-      if (named({"yield", "stiffening", "seal_friction", "field_saturation"}))
+      if (named({"yield", "stiffening", "seal_friction", "field_saturation",
+                 "seal_friction_per_field"}))
         return Domain::non_negative();
       break;
   }

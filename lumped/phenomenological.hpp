@@ -128,6 +128,7 @@ enum Damper {
   kDmStiff,
   kDmStiffening,
   kDmSeal,
+  kDmSeal1,
   kDmSealSlip,
   kDmInertance,
   kDmGas,
@@ -439,8 +440,8 @@ T pheno_output(PhenoKind kind, const T* p, const PhenoDrive& d, const PhenoSetti
                       p[kTLag] * smooth_sign(T(d.position), 1e-2 * s.position_scale)) +
              p[kTOffset];
     case PhenoKind::damper:
-      return x[0] + p[kDmSeal] * x[1] + p[kDmInertance] * d.acceleration + p[kDmGas] * d.position +
-             p[kDmOffset];
+      return x[0] + (p[kDmSeal] + p[kDmSeal1] * abs(damper_effective_field(p, x[2]))) * x[1] +
+             p[kDmInertance] * d.acceleration + p[kDmGas] * d.position + p[kDmOffset];
   }
   return T(0.0);
 }

@@ -148,8 +148,8 @@ TEST(FitModelJson, ModelsWithoutLaterParametersReadAsBefore) {
     fit.setup.settings.output_scale = 1000.0;
     const std::vector<double> values =
         kind == PhenoKind::damper
-            ? std::vector<double>{200.0, 300.0, 0.0, 2000.0, 0.0,  1.0, 1e12, 1e6, 0.0,
-                                  0.0,   1e-3,  0.0, 0.0,    0.01, 0.0, 0.0,  0.0}
+            ? std::vector<double>{200.0, 300.0, 0.0,  2000.0, 0.0, 1.0,  1e12, 1e6, 0.0,
+                                  0.0,   0.0,   1e-3, 0.0,    0.0, 0.01, 0.0,  0.0, 0.0}
             : std::vector<double>{200.0, 300.0, 2000.0, 0.0, 0.01, 0.0, 0.0};
     ASSERT_EQ(values.size(), pheno_params(kind).size());
     for (std::size_t k = 0; k < values.size(); ++k) {
@@ -162,13 +162,14 @@ TEST(FitModelJson, ModelsWithoutLaterParametersReadAsBefore) {
     nlohmann::json j = fit_model_json(fit, rec.meta);
     nlohmann::json& list = j["parameters"];
     for (std::size_t k = list.size(); k-- > 0;)  // as written before they existed
-      if (list[k]["name"] == "output_smoothing" || list[k]["name"] == "field_saturation")
+      if (list[k]["name"] == "output_smoothing" || list[k]["name"] == "field_saturation" ||
+          list[k]["name"] == "seal_friction_per_field")
         list.erase(k);
-    ASSERT_EQ(list.size(), values.size() - (kind == PhenoKind::damper ? 2 : 1));
+    ASSERT_EQ(list.size(), values.size() - (kind == PhenoKind::damper ? 3 : 1));
     const FitModel back = parse_fit_model_json(j.dump(), "old_model.json");
     ASSERT_TRUE(back.greybox.has_value());
     ASSERT_EQ(back.greybox->params.size(), values.size());
-    for (const char* name : {"output_smoothing", "field_saturation"}) {
+    for (const char* name : {"output_smoothing", "field_saturation", "seal_friction_per_field"}) {
       const int k = pheno_param_index(kind, name);
       if (k < 0) continue;
       const FittedParameter& p = back.greybox->params[static_cast<std::size_t>(k)];

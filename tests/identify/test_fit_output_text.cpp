@@ -68,7 +68,7 @@ TEST(FitOutputText, BoucWenPerAmpereTermsAreFieldDependent) {
   EXPECT_EQ(dependent_names(lumped::PhenoKind::bingham),
             (std::vector<std::string>{"yield", "viscous"}));
   EXPECT_EQ(dependent_names(lumped::PhenoKind::damper),
-            (std::vector<std::string>{"yield+u^2", "consistency"}));
+            (std::vector<std::string>{"yield+u^2", "consistency", "seal_friction"}));
 }
 
 // fit-family used every 4th sample without saying what that means.
