@@ -40,8 +40,17 @@ NewtonReport newton_solve(NonlinearSystem& system, Eigen::VectorXd& x, double sc
       fail("maximum number of iterations reached", it, norm / scale, options.relative_tolerance);
     }
     system.factorize_jacobian(x);
-    const double needed = options.oversolve_guard * options.relative_tolerance * scale / norm;
-    const double forcing = std::min(options.max_forcing, std::max(norm / scale, needed));
+    const double relative = norm / scale;
+    double needed = 0.0;  // the loosest forcing that still ends below guard * tol, if any
+    if (it > 0 && options.oversolve_guard > 0.0) {
+      // The step leaves eta rho of linear error plus the nonlinear remainder K rho^2, with K
+      // taken from the last step (rho_k / rho_{k-1}^2: an overestimate while the linear error
+      // dominated, so the guard errs on the side of solving more).
+      const double previous = report.residual_history[static_cast<std::size_t>(it) - 1];
+      const double remainder = relative / (previous * previous) * relative * relative;
+      needed = (options.oversolve_guard * options.relative_tolerance - remainder) / relative;
+    }
+    const double forcing = std::min(options.max_forcing, std::max(relative, needed));
     const Eigen::VectorXd step = system.solve_jacobian(-r, forcing);
     double alpha = 1.0, trial_norm = 0.0;
     bool accepted = false;

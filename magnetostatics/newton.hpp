@@ -20,9 +20,10 @@ struct NewtonOptions {
   /// |J dx + R| <= eta |R| with eta = min(max_forcing, |R| / |R(x = 0)|), which keeps the
   /// convergence quadratic (eta = O(|R|)), but not below oversolve_guard's bound.
   double max_forcing = 1e-2;
-  /// The forcing term is at least oversolve_guard * tol * |R(x = 0)| / |R|: a step whose linear
-  /// residual is already below what convergence needs is not solved further (Kelley's safeguard
-  /// against oversolving the last step; 0 turns it off).
+  /// The forcing term is loosened up to (oversolve_guard * tol - K rho^2) / rho, rho = |R| / |R0|
+  /// and K = rho_k / rho_{k-1}^2 the last step's quadratic rate: the last step's linear system is
+  /// not solved beyond what convergence needs (Kelley's safeguard against oversolving, with the
+  /// nonlinear remainder subtracted so that the step still converges; 0 turns it off).
   double oversolve_guard = 0.5;
   /// Local corrections after each Newton step (nonlinear elimination): when at most
   /// local_max_dofs dofs hold local_fraction of |R|^2 (a saturating corner), up to

@@ -1,6 +1,7 @@
 // Newton's forcing terms with inexact linear solves: the oversolving guard keeps the last step's
 // linear tolerance at what convergence needs (Kelley, Iterative Methods for Linear and Nonlinear
-// Equations, SIAM 1995, section 6.3: eta >= 0.5 tau / |F|), and convergence is unchanged.
+// Equations, SIAM 1995, section 6.3: eta >= 0.5 tau / |F|, less the nonlinear remainder), and
+// convergence is unchanged.
 
 #include <gtest/gtest.h>
 
@@ -64,11 +65,13 @@ TEST(NewtonForcing, LastStepIsNotSolvedBeyondWhatConvergenceNeeds) {
   EXPECT_EQ(with.iterations, without.iterations);
   ASSERT_GE(with.iterations, 3);
   // Without the guard the last forcing is the relative residual (eta = |R| / |R0|); with it,
-  // 0.5 tol |R0| / |R| (Kelley's bound) up to max_forcing, which here is looser: fewer CG
-  // iterations, the same convergence.
+  // (0.5 tol - K rho^2) / rho (Kelley's bound less the nonlinear remainder at the last step's
+  // rate K) up to max_forcing, which here is looser: fewer CG iterations, the same convergence.
   const double last_residual = without.residual_history[without.iterations - 1];
   EXPECT_NEAR(unguarded.tolerances.back(), last_residual, 1e-12 * last_residual);
-  const double needed = std::min(0.1, 0.5 * tolerance / with.residual_history[with.iterations - 1]);
+  const double rho = with.residual_history[with.iterations - 1];
+  const double rate = rho / std::pow(with.residual_history[with.iterations - 2], 2);  // K
+  const double needed = std::min(0.1, (0.5 * tolerance - rate * rho * rho) / rho);
   EXPECT_NEAR(guarded.tolerances.back(), needed, 1e-12 * needed);
   EXPECT_GT(guarded.tolerances.back(), 3.0 * unguarded.tolerances.back());
   // Before the last step the guard does not bind: the forcing terms are the same.
