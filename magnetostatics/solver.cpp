@@ -269,6 +269,11 @@ Solution MagnetostaticSolver::solve(const std::vector<double>& currents,
   return solve_with(currents, initial_guess, options_.incremental_inductance);
 }
 
+Solution MagnetostaticSolver::solve_incremental(const std::vector<double>& currents,
+                                                const Eigen::VectorXd* initial_guess) {
+  return solve_with(currents, initial_guess, true);
+}
+
 Solution MagnetostaticSolver::solve_with(const std::vector<double>& currents,
                                          const Eigen::VectorXd* initial_guess, bool incremental) {
   const auto start = std::chrono::steady_clock::now();
@@ -315,8 +320,8 @@ Solution MagnetostaticSolver::solve_with(const std::vector<double>& currents,
     prepare_jacobian(solution.a);
     for (const Eigen::VectorXd& f : sources_) {
       const Eigen::VectorXd f_reduced = reduced_source(f);
-      solution.incremental_inductance.push_back(
-          f_reduced.dot(solve_jacobian(f_reduced, 1e-12, 1e-12)));
+      solution.incremental_field.push_back(solve_jacobian(f_reduced, 1e-12, 1e-12));
+      solution.incremental_inductance.push_back(f_reduced.dot(solution.incremental_field.back()));
     }
   }
   solution.seconds =

@@ -50,7 +50,10 @@ struct Solution {
   NewtonReport newton;                         ///< iterations, residual history
   std::vector<double> flux_linkage;            ///< per circuit lambda [Wb]
   std::vector<double> incremental_inductance;  ///< per circuit dlambda/dI [H], if requested
-  double seconds = 0.0;                        ///< wall time of the solve
+  /// Per circuit dA/dI at the reduced dofs [Wb/(m A)] (K_t^-1 F, the solve behind
+  /// incremental_inductance; free dofs when no periodic pair is constrained), if requested.
+  std::vector<Eigen::VectorXd> incremental_field;
+  double seconds = 0.0;  ///< wall time of the solve
 };
 
 /// The flux density of one fluid gap at a sweep point (the quantities of docs/quantities.md).
@@ -93,6 +96,10 @@ class MagnetostaticSolver {
   /// Throws ConvergenceError if Newton fails.
   Solution solve(const std::vector<double>& currents,
                  const Eigen::VectorXd* initial_guess = nullptr);
+  /// As solve(currents, initial_guess), with the incremental inductance and field whatever
+  /// SolveOptions::incremental_inductance says.
+  Solution solve_incremental(const std::vector<double>& currents,
+                             const Eigen::VectorXd* initial_guess = nullptr);
   /// Solves with the currents of Problem::circuits.
   Solution solve();
   /// lambda(I) and L(I) of circuit `circuit` for each current (other circuits at their problem
