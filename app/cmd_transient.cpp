@@ -1,7 +1,9 @@
 // rheomag transient: step response of a valve's field with eddy currents (current or voltage).
 
+#include <algorithm>
 #include <chrono>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,6 +15,7 @@
 #include "figures/transient_step.hpp"
 #include "plot/figure.hpp"
 #include "transient/from_case.hpp"
+#include "transient/quasi_static_report.hpp"
 #include "transient/report.hpp"
 #include "transient/vtk_series.hpp"
 
@@ -29,13 +32,58 @@ struct TransientCliOptions {
   std::string plot;  // step-response picture (.png / .svg)
   bool json = false;
   bool quiet = false;
+  bool quasi_static = false;                     // the reduction instead of time stepping
+  const CLI::Option* duration_option = nullptr;  // --duration (given or not)
+  int table_points = 8;                          // its starting currents
 };
 
+/// `--quasi-static`: the step's rise times from static solves alone (transient/quasi_static.hpp).
+void run_quasi_static(const TransientCliOptions& o, const cases::Case& c) {
+  coupling::StepRequest request = o.request;
+  if (o.duration_option->count() == 0) request.duration = 1.0;  // unused: no time stepping
+  const coupling::PreparedStep step = coupling::prepare_step(c, o.case_path, request);
+  const transient::TransientOptions& options = step.options;
+  transient::QuasiStaticRun run;
+  const bool voltage = options.drive == transient::Drive::voltage;
+  run.drive = voltage ? "voltage" : "current";
+  run.value = options.value;
+  run.from_current = options.from_current;
+  run.final_current = voltage ? options.value / options.resistance : options.value;
+  run.resistance = voltage ? options.resistance : 0.0;
+  const double low = std::min({0.0, run.from_current, run.final_current});
+  const double high = std::max({0.0, run.from_current, run.final_current});
+  run.table = transient::quasi_static_table(*step.set_up.solver, low, high, o.table_points);
+  run.step = transient::quasi_static_step(
+      run.table, run.from_current, run.final_current,
+      voltage ? options.resistance : std::numeric_limits<double>::infinity());
+  const auto& regions = step.set_up.solver->statics().problem().geometry.regions;
+  for (int r : run.table.gap_regions) run.gap_names.push_back(regions[r].name);
+  run.dofs = step.set_up.solver->statics().dofs().free_count();
+  if (o.json) {
+    nlohmann::json j = transient::quasi_static_json(run);
+    j["case"] = c.name;
+    if (!o.settings.empty()) j["set"] = o.settings;
+    rheomag::app::print_json(j, 2);
+    return;
+  }
+  std::cout << "case " << c.name << " (" << o.case_path << ")\n";
+  if (!o.settings.empty()) std::cout << c.description << "\n";
+  std::cout << transient::quasi_static_summary(run);
+}
+
 void run(const TransientCliOptions& o) {
-  coupling::check_step_request(o.request);
   if (!o.plot.empty() && !plot::is_picture_path(o.plot))
     throw InputError("--plot: expected a file name ending in .png or .svg");
   const cases::Case c = app::load_case(o.case_path, o.settings);
+  if (o.quasi_static) {
+    if (!o.vtk_series.empty() || !o.plot.empty())
+      throw InputError("--quasi-static: no states to write; drop --vtk-series and --plot");
+    run_quasi_static(o, c);
+    return;
+  }
+  if (o.duration_option->count() == 0)
+    throw InputError("--duration is required (the simulated time after the step), e.g. 50ms");
+  coupling::check_step_request(o.request);
   coupling::StepRequest request = o.request;
   double last_print = 0.0;
   if (!o.quiet) {
@@ -101,9 +149,9 @@ const bool transient_registered = app::register_command([](CLI::App& root) {
   current->excludes(voltage);
   app::add_quantity(cmd, "--from", o->request.from, QuantityKind::current,
                     "Current before the step (steady state; default 0)");
-  app::add_quantity(cmd, "--duration", o->request.duration, QuantityKind::time,
-                    "Simulated time after the step, e.g. 50ms")
-      ->required();
+  o->duration_option = app::add_quantity(
+      cmd, "--duration", o->request.duration, QuantityKind::time,
+      "Simulated time after the step, e.g. 50ms (required unless --quasi-static)");
   cmd->add_option("--steps", o->request.steps, "Equal time steps (default: adaptive steps)")
       ->check(rheomag::app::in_domain(rheomag::Domain::count()));
   cmd->add_option("--tolerance", o->request.tolerance,
@@ -128,6 +176,16 @@ const bool transient_registered = app::register_command([](CLI::App& root) {
   cmd->add_option("--plot", o->plot,
                   "Draw I(t), lambda(t) and the gaps' |B|(t) with t63/t90 to this .png or .svg")
       ->check(rheomag::app::output_file_in_writable_folder());
+  cmd->add_flag("--quasi-static", o->quasi_static,
+                "No time stepping: the field stays a static solution of a magnetising current and "
+                "the eddy currents load the coil (a one-mode reduction; fast, exact without skin "
+                "effect, its error measured in docs/transient.md)");
+  cmd->add_option(
+         "--table-points", o->table_points,
+         "With --quasi-static: equally spaced static solves from 0 to the largest current, "
+         "before the table is refined where the inductance, the eddy-current load or a "
+         "gap's dB/dI changes by more than 20 % between neighbours (default 8)")
+      ->check(rheomag::app::in_domain(rheomag::Domain::between(4.0, 10000.0).whole()));
   cmd->add_flag("--json", o->json, "Print one JSON object (SI units) instead of the summary");
   cmd->add_flag("--quiet", o->quiet, "No progress on stderr");
   cmd->callback([o] { run(*o); });

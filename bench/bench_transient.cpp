@@ -1,8 +1,8 @@
 // Benchmarks of the transient solver on the annular reference valve (cases/annular_valve.toml,
 // paper 000): the 0.5 s response to a voltage step at the default mesh with adaptive steps
 // (target < 5 s wall), and the cost against the number of dofs (element order 1 / 2, 8 instead of 4
-// elements across the gaps) and of equal steps. Counters: dofs, steps, Newton iterations,
-// factorisations.
+// elements across the gaps) and of equal steps; the quasi-static reduction of the same step.
+// Counters: dofs, steps, Newton iterations, factorisations (the reduction: its table's size).
 
 #include <benchmark/benchmark.h>
 
@@ -10,6 +10,7 @@
 
 #include "case/case_file.hpp"
 #include "magnetostatics/solve_problem.hpp"
+#include "transient/quasi_static.hpp"
 #include "transient/transient_solver.hpp"
 #include "valve/valve_chain.hpp"  // registers the case's [valve] section
 
@@ -62,7 +63,27 @@ void BM_AnnularValveEqualSteps(benchmark::State& state) {
   run(state, 2, 4, static_cast<int>(state.range(0)));
 }
 
+/// The quasi-static reduction of the same step (transient/quasi_static.hpp): its table of
+/// static solves from 0 to V / R and the step's rise times, on a solver built once.
+void BM_AnnularValveQuasiStatic(benchmark::State& state) {
+  cases::Problem problem = valve_case().problem;
+  auto statics = magnetostatics::make_solver(problem);
+  transient::TransientSolver solver(*statics, transient::eddy_coefficients(statics->problem(), {}));
+  const transient::TransientOptions o = voltage_step(0);
+  const double final_current = o.value / o.resistance;
+  transient::QuasiStaticTable table;
+  transient::QuasiStaticStep step;
+  for (auto _ : state) {
+    table = transient::quasi_static_table(solver, 0.0, final_current, 8);
+    step = transient::quasi_static_step(table, 0.0, final_current, o.resistance);
+  }
+  state.counters["table"] = static_cast<double>(table.points.size());
+  state.counters["newton"] = table.newton_iterations;
+  state.counters["t90_ms"] = step.t90 ? *step.t90 * 1e3 : -1.0;
+}
+
 BENCHMARK(BM_AnnularValveVoltageStep)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK(BM_AnnularValveQuasiStatic)->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK(BM_AnnularValveOrder1)->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK(BM_AnnularValveRefined)->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK(BM_AnnularValveEqualSteps)

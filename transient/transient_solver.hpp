@@ -103,6 +103,9 @@ class TransientSolver {
   TransientResult run(const TransientOptions& options, const StateCallback& on_state = {});
 
   const magnetostatics::MagnetostaticSolver& statics() const { return statics_; }
+  magnetostatics::MagnetostaticSolver& statics() { return statics_; }
+  /// The eddy currents' matrix D over the free dofs (lower triangle; see eddy_matrix).
+  const magnetostatics::SparseMatrix& damping() const { return damping_; }
   const EddyCoefficients& eddy() const { return eddy_; }
 
  private:

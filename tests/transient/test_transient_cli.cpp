@@ -135,6 +135,36 @@ TEST(TransientCli, BadInputExitsWithTwo) {
   EXPECT_NE(out.find("conductivity"), std::string::npos) << out;
 }
 
+// --quasi-static: the reduction on static solves (no --duration needed): JSON with the model's
+// name, both gaps' t63 < t90 from B = 0 to the steady state at V / R, and its table; the text
+// names the reduction. Its accuracy is tested against the full transient in
+// test_quasi_static.cpp and test_optimise_response.cpp. States cannot be written (exit 2), and
+// without --quasi-static --duration is required (exit 2 naming it).
+TEST(TransientCli, QuasiStaticStepOfTheValve) {
+  std::string out;
+  const std::string valve = kCases + "annular_valve.toml";
+  ASSERT_EQ(run_cli(valve + " --voltage 4.8 --quasi-static --json", out), 0) << out;
+  const auto j = nlohmann::json::parse(out);
+  EXPECT_EQ(j["model"], "quasi_static");
+  EXPECT_EQ(j["drive"], "voltage");
+  ASSERT_EQ(j["gaps"].size(), 2u);
+  for (const auto& g : j["gaps"]) {
+    ASSERT_TRUE(g["t63"].is_number() && g["t90"].is_number()) << g;
+    EXPECT_GT(g["t63"].get<double>(), 0.0);
+    EXPECT_LT(g["t63"].get<double>(), g["t90"].get<double>());
+    EXPECT_EQ(g["B_from"].get<double>(), 0.0);
+    EXPECT_GT(g["B_final"].get<double>(), 0.1);
+  }
+  EXPECT_GE(j["table"].size(), 8u);
+  EXPECT_NEAR(j["final_current"].get<double>() * j["resistance"].get<double>(), 4.8, 1e-12);
+  ASSERT_EQ(run_cli(valve + " --voltage 4.8 --quasi-static", out), 0) << out;
+  EXPECT_NE(out.find("quasi-static response"), std::string::npos) << out;
+  EXPECT_EQ(run_cli(valve + " --voltage 4.8 --quasi-static --plot q.png", out, true), 2) << out;
+  EXPECT_NE(out.find("--quasi-static"), std::string::npos) << out;
+  EXPECT_EQ(run_cli(valve + " --voltage 4.8", out, true), 2) << out;
+  EXPECT_NE(out.find("--duration is required"), std::string::npos) << out;
+}
+
 // A current step to the current it starts from ended with exit 3 and "relative residual reached
 // -nan"; 2e9 equal steps ran for hours (timeout). Both are refused before any solve.
 TEST(TransientCli, ZeroStepAndAbsurdStepCountExitWithTwo) {

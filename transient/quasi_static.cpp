@@ -1,0 +1,192 @@
+#include "transient/quasi_static.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/format_text.hpp"
+#include "transient/gap_flux.hpp"
+
+// Boost 1.74's pchip.hpp calls isnan unqualified in a template; make std::isnan visible there.
+using std::isnan;
+#include <boost/math/interpolators/cubic_hermite.hpp>
+#include <boost/math/interpolators/pchip.hpp>
+#include <boost/math/quadrature/gauss.hpp>
+#include <boost/math/tools/roots.hpp>
+
+namespace rheomag::transient {
+namespace {
+
+using Hermite = boost::math::interpolators::cubic_hermite<std::vector<double>>;
+using Pchip = boost::math::interpolators::pchip<std::vector<double>>;
+
+/// One column of the table.
+std::vector<double> column(const QuasiStaticTable& table,
+                           const std::function<double(const QuasiStaticPoint&)>& of) {
+  std::vector<double> out;
+  for (const QuasiStaticPoint& p : table.points) out.push_back(of(p));
+  return out;
+}
+
+/// The first current from `from` towards `to` at which `q` reaches `target` coming from q(from)
+/// (the table's currents `grid` as breakpoints); nothing when it does not.
+std::optional<double> first_crossing(const std::function<double(double)>& q, double target,
+                                     double from, double to, const std::vector<double>& grid) {
+  const double sense = q(to) >= q(from) ? 1.0 : -1.0;
+  auto reached = [&](double i) { return sense * (q(i) - target) >= 0.0; };
+  if (reached(from)) return from;
+  std::vector<double> stops;
+  for (double c : grid)
+    if ((c - from) * (to - c) > 0.0) stops.push_back(c);
+  if (to < from) std::reverse(stops.begin(), stops.end());
+  stops.insert(stops.begin(), from);
+  stops.push_back(to);
+  for (std::size_t k = 1; k < stops.size(); ++k) {
+    if (!reached(stops[k])) continue;
+    boost::math::tools::eps_tolerance<double> tolerance(50);
+    std::uintmax_t iterations = 200;
+    const double lo = std::min(stops[k - 1], stops[k]), hi = std::max(stops[k - 1], stops[k]);
+    const auto [a, b] = boost::math::tools::toms748_solve([&](double i) { return q(i) - target; },
+                                                          lo, hi, tolerance, iterations);
+    return 0.5 * (a + b);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double high, int points) {
+  magnetostatics::MagnetostaticSolver& statics = solver.statics();
+  const std::string where = statics.problem().geometry.source;
+  if (!(std::isfinite(low) && std::isfinite(high) && low < high) || points < 4)
+    throw InputError(format_text(
+        "%s: quasi-static response: expected at least 4 currents over a finite range low < high, "
+        "got %d over [%.6g, %.6g] A",
+        where.c_str(), points, low, high));
+  QuasiStaticTable table;
+  table.gap_regions = gap_regions(statics);
+  std::vector<double> currents;
+  for (int k = 0; k < points; ++k) currents.push_back(low + (high - low) * k / (points - 1));
+  const magnetostatics::DofMap& dofs = statics.dofs();
+  const auto mass = solver.damping().selfadjointView<Eigen::Lower>();
+  std::vector<double> held;
+  for (const cases::Circuit& circuit : statics.problem().circuits) held.push_back(circuit.current);
+  std::vector<Eigen::VectorXd> fields;  // nodal A of each point, for warm starts
+  // The static state at `current`, from nodal A `start` (or zero), inserted at `at`.
+  auto solve_at = [&](double current, const Eigen::VectorXd* start, std::size_t at) {
+    held[0] = current;
+    const magnetostatics::Solution s = statics.solve_incremental(held, start);
+    const Eigen::VectorXd& slope = s.incremental_field.at(0);  // a', free dofs
+    Eigen::VectorXd slope_nodes = Eigen::VectorXd::Zero(s.a.size());
+    for (int d = 0; d < dofs.free_count(); ++d) slope_nodes[dofs.node_of_dof[d]] = slope[d];
+    const MeanBSlope gaps =
+        region_mean_b_slope(statics, table.gap_regions, s.a, slope_nodes, slope_nodes);
+    table.points.insert(table.points.begin() + static_cast<std::ptrdiff_t>(at),
+                        {current, s.flux_linkage.at(0), s.incremental_inductance.at(0),
+                         slope.dot(mass * slope), gaps.b, gaps.slope});
+    fields.insert(fields.begin() + static_cast<std::ptrdiff_t>(at), s.a);
+    table.newton_iterations += s.newton.iterations;
+  };
+  for (int k = 0; k < points; ++k)
+    solve_at(low + (high - low) * k / (points - 1), k > 0 ? &fields.back() : nullptr,
+             static_cast<std::size_t>(k));
+  // Halve the intervals across which the coefficients change too much (a saturation knee).
+  auto changes = [](double a, double b) {
+    const double scale = std::max(std::abs(a), std::abs(b));
+    return scale > 0.0 && std::abs(a - b) > kQuasiStaticTableChange * scale;
+  };
+  const std::size_t most = 16 * static_cast<std::size_t>(points);
+  for (bool refined = true; refined && table.points.size() < most;) {
+    refined = false;
+    for (std::size_t k = 0; k + 1 < table.points.size() && table.points.size() < most; ++k) {
+      const QuasiStaticPoint &p = table.points[k], &q = table.points[k + 1];
+      bool split = changes(p.inductance, q.inductance) || changes(p.eddy_load, q.eddy_load);
+      for (std::size_t g = 0; g < p.gap_b_slope.size(); ++g)
+        split = split || changes(p.gap_b_slope[g], q.gap_b_slope[g]);
+      if (!split || q.current - p.current < 1e-6 * (high - low)) continue;
+      const Eigen::VectorXd start = fields[k];
+      solve_at(0.5 * (p.current + q.current), &start, k + 1);
+      refined = true;
+      ++k;  // the new interval's right half is looked at in the next pass
+    }
+  }
+  return table;
+}
+
+QuasiStaticStep quasi_static_step(const QuasiStaticTable& table, double from_current,
+                                  double final_current, double resistance) {
+  if (table.points.size() < 4)
+    throw InputError("quasi-static response: the table has fewer than 4 currents");
+  const double low = table.points.front().current, high = table.points.back().current;
+  const double slack = 1e-12 * (high - low);
+  if (!(resistance > 0.0) || !std::isfinite(final_current) || !std::isfinite(from_current) ||
+      final_current == from_current || from_current < low - slack || from_current > high + slack ||
+      final_current < low - slack || final_current > high + slack)
+    throw InputError(format_text(
+        "quasi-static response: the step from %.6g A to %.6g A (resistance %.6g Ohm) must change "
+        "the current within the table's [%.6g, %.6g] A",
+        from_current, final_current, resistance, low, high));
+  for (const QuasiStaticPoint& p : table.points)
+    if (!(p.inductance > 0.0) || !(p.eddy_load >= 0.0))
+      throw InputError(format_text(
+          "quasi-static response: the incremental inductance at %.6g A is %.6g H (expected > 0)",
+          p.current, p.inductance));
+  const std::vector<double> grid = column(table, [](auto& p) { return p.current; });
+  auto clamp = [&](double i) { return std::min(std::max(i, low), high); };
+  const double from = clamp(from_current), to = clamp(final_current);
+  const Hermite lambda(column(table, [](auto& p) { return p.current; }),
+                       column(table, [](auto& p) { return p.flux_linkage; }),
+                       column(table, [](auto& p) { return p.inductance; }));
+  const Pchip inductance(column(table, [](auto& p) { return p.current; }),
+                         column(table, [](auto& p) { return p.inductance; }));
+  const Pchip eddy_load(column(table, [](auto& p) { return p.current; }),
+                        column(table, [](auto& p) { return p.eddy_load; }));
+
+  // Time to reach magnetising current i. With u = -ln((to - i) / (to - from)) the voltage
+  // drive's di_m/dt = R (to - i_m) / (L_d + R D / L_d) gives dt = (L_d / R + D / L_d) du, smooth
+  // up to the steady state; a current drive (R infinite) keeps D di_m/dt = L_d (i - i_m).
+  auto time_to = [&](double i) {
+    auto rate = [&](double u) {
+      const double c = clamp(to - (to - from) * std::exp(-u)), l = inductance(c);
+      return l / resistance + eddy_load(c) / l;
+    };
+    std::vector<double> breaks{0.0};
+    for (double c : grid)
+      if ((c - from) * (i - c) > 0.0) breaks.push_back(-std::log((to - c) / (to - from)));
+    breaks.push_back(-std::log((to - i) / (to - from)));
+    std::sort(breaks.begin(), breaks.end());
+    double t = 0.0;
+    for (std::size_t k = 1; k < breaks.size(); ++k)
+      t += boost::math::quadrature::gauss<double, 10>::integrate(rate, breaks[k - 1], breaks[k]);
+    return t;
+  };
+  auto rise = [&](const std::function<double(double)>& q,
+                  double fraction) -> std::optional<double> {
+    const double start = q(from), end = q(to);
+    if (start == end) return std::nullopt;
+    const auto i = first_crossing(q, start + fraction * (end - start), from, to, grid);
+    if (!i) return std::nullopt;
+    return time_to(*i);
+  };
+
+  QuasiStaticStep out;
+  const double e_fold = 1.0 - std::exp(-1.0);
+  const std::function<double(double)> flux = [&](double i) { return lambda(i); };
+  out.t63 = rise(flux, e_fold);
+  out.t90 = rise(flux, 0.9);
+  for (std::size_t g = 0; g < table.gap_regions.size(); ++g) {
+    const Hermite b(column(table, [](auto& p) { return p.current; }),
+                    column(table, [&](auto& p) { return p.gap_b.at(g); }),
+                    column(table, [&](auto& p) { return p.gap_b_slope.at(g); }));
+    const std::function<double(double)> gap = [&](double i) { return b(i); };
+    out.gap_b_from.push_back(b(from));
+    out.gap_b_final.push_back(b(to));
+    out.gap_t63.push_back(rise(gap, e_fold));
+    out.gap_t90.push_back(rise(gap, 0.9));
+  }
+  return out;
+}
+
+}  // namespace rheomag::transient

@@ -1,0 +1,71 @@
+#pragma once
+// A step's response from static solves alone, without time stepping the mesh: the quasi-static
+// one-mode reduction of the transient problem (docs/transient.md, "Quasi-static response").
+// The field is taken to stay a static solution A_s(i_m) of a magnetising current i_m. Galerkin
+// projection of
+//   M dA/dt + K(A) = F i,   V = R i + dlambda/dt     (M: the conductors' eddy-current matrix)
+// onto a' = dA_s/di_m leaves, with L_d = F^T a' = dlambda/di_m and D = a'^T M a',
+//   D di_m/dt = L_d (i - i_m):   the eddy currents load the coil like a winding shorted through
+//                                the steel, and for a voltage drive
+//   di_m/dt = (V - R i_m) / (L_d + R D / L_d).
+// The reduction is exact when the field keeps its static shape: steel thin against its skin
+// depth over the response time. A linear device's reduced response has the exact one's mean
+// delay (first moment, L/R + D/L). It misses the skin effect otherwise (the flux front moving
+// into saturating steel); its error against the full transient is measured in the tests and
+// docs/transient.md.
+
+#include <optional>
+#include <vector>
+
+#include "transient/transient_solver.hpp"
+
+namespace rheomag::transient {
+
+/// The static state behind the reduction at one magnetising current.
+struct QuasiStaticPoint {
+  double current = 0.0;             ///< magnetising current i_m [A]
+  double flux_linkage = 0.0;        ///< lambda(i_m) [Wb]
+  double inductance = 0.0;          ///< L_d = dlambda/di_m [H]
+  double eddy_load = 0.0;           ///< D = a'^T M a' [H s], a' = dA/di_m
+  std::vector<double> gap_b;        ///< each fluid gap's mean |B| [T]
+  std::vector<double> gap_b_slope;  ///< its derivative d|B|/di_m [T/A]
+};
+
+/// The static states on a grid of magnetising currents, increasing.
+struct QuasiStaticTable {
+  std::vector<QuasiStaticPoint> points;
+  std::vector<int> gap_regions;  ///< problem regions of the gaps, as in TransientResult::gaps
+  int newton_iterations = 0;     ///< of all the static solves
+};
+
+/// Relative change of L_d, D or a gap's d|B|/di_m between neighbouring currents of the table
+/// above which the interval is halved (quasi_static_table).
+inline constexpr double kQuasiStaticTableChange = 0.2;
+
+/// Static states of the first circuit (the others held) from `low` to `high` [A] (low < high)
+/// on `solver`'s mesh: `points` >= 4 equally spaced currents, then every interval across which
+/// L_d, D or a gap's slope changes by more than kQuasiStaticTableChange halved, until none does
+/// or the table has 16 x `points` currents (saturation knees far below `high`). Each is a
+/// static solve warm-started from its neighbour, with its dA/dI and its eddy-current load from
+/// `solver`'s conductivities and remedies. InputError for bad arguments; ConvergenceError when
+/// a static solve fails.
+QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double high, int points);
+
+/// The rise times of one step in the reduction.
+struct QuasiStaticStep {
+  std::vector<std::optional<double>> gap_t63, gap_t90;  ///< per gap, of its mean |B| [s]
+  std::optional<double> t63, t90;                       ///< of the flux linkage [s]
+  std::vector<double> gap_b_from, gap_b_final;          ///< per gap, mean |B| before and after [T]
+};
+
+/// Response to a step of the first circuit from the steady state at `from_current` to the one
+/// at `final_current` [A]: a voltage step V = R final_current through `resistance` R [Ohm], or
+/// an ideal current step for R = infinity. Gives the times at which each gap's mean |B| (and
+/// lambda) first make 63 % and 90 % of their change: the quantities interpolated between the
+/// table's currents (cubic Hermite through values and slopes, PCHIP for L_d and D) and
+/// t(i_m) = integral (L_d / R + D / L_d) du, u = -ln((final - i_m) / (final - from)), by
+/// Gauss-Legendre quadrature. The table must span both currents; InputError otherwise.
+QuasiStaticStep quasi_static_step(const QuasiStaticTable& table, double from_current,
+                                  double final_current, double resistance);
+
+}  // namespace rheomag::transient
