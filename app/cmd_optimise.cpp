@@ -79,6 +79,11 @@ int run_optimise(const OptimiseCli& o) {
                           {"fe_solves", r.fe_solves},
                           {"meshes", r.meshes},
                           {"seconds", r.seconds}};
+    if (r.response_check)
+      out["response_check"] = {{"reduced", r.response_check->reduced},
+                               {"transient", r.response_check->transient},
+                               {"correction", r.response_check->correction},
+                               {"rounds", r.response_check->rounds}};
     if (r.combinations.size() > 1 || !r.spec.choices.empty()) {
       nlohmann::json combinations = nlohmann::json::array();
       for (std::size_t k = 0; k < r.combinations.size(); ++k) {

@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "transient/from_case.hpp"
+#include "transient/quasi_static.hpp"
 
 namespace rheomag::design {
 
@@ -17,6 +18,29 @@ ResponseTime response_time(magnetostatics::MagnetostaticSolver& statics, const c
     throw InputError(where + ": response_time needs supply_voltage > 0, a coil resistance and L/R");
   const transient::CaseTransient set_up = transient::transient_from_case(c, statics);
   ResponseTime out;
+  const double final_current = options.supply_voltage / options.resistance;
+  if (options.quasi_static) {
+    const transient::QuasiStaticTable table =
+        transient::quasi_static_table(*set_up.solver, 0.0, final_current, options.table_points);
+    out.static_solves = static_cast<int>(table.points.size());
+    auto slowest_gap = [&](double from, double to) {
+      const transient::QuasiStaticStep step =
+          transient::quasi_static_step(table, from, to, options.resistance);
+      double slowest = 0.0;
+      for (const std::optional<double>& t : step.gap_t90) {
+        if (!t)
+          throw ConvergenceError(where + ": response_time: in the quasi-static reduction the " +
+                                 "gaps' mean |B| does not reach 90 % of its change");
+        slowest = std::max(slowest, *t);
+      }
+      if (step.gap_t90.empty())
+        throw InputError(where + ": response_time needs a fluid gap region");
+      return slowest;
+    };
+    out.on = slowest_gap(0.0, final_current);
+    out.off = slowest_gap(final_current, 0.0);
+    return out;
+  }
   auto slowest_gap_t90 = [&](double from_current, double voltage) {
     double span = options.span_factor * options.time_constant;
     for (int attempt = 0; attempt < 4; ++attempt, span *= 2.0) {
@@ -41,7 +65,6 @@ ResponseTime response_time(magnetostatics::MagnetostaticSolver& statics, const c
     throw ConvergenceError(where + ": response_time: the gaps' mean |B| did not reach 90 % of " +
                            "its change within " + std::to_string(span / 2.0) + " s");
   };
-  const double final_current = options.supply_voltage / options.resistance;
   out.on = slowest_gap_t90(0.0, options.supply_voltage);
   out.off = slowest_gap_t90(final_current, 0.0);
   return out;

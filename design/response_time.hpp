@@ -16,6 +16,10 @@ struct ResponseTimeOptions {
   /// has not made 90 % of its change).
   double span_factor = 5.0;
   int steps = 100;  ///< equal midpoint steps per span (smooth in the design for gradients)
+  /// true: the quasi-static reduction (transient/quasi_static.hpp) on static solves from 0 to
+  /// V / R (`table_points` equal currents, refined) instead of the two transient runs.
+  bool quasi_static = false;
+  int table_points = 8;  ///< quasi-static: the table's starting currents
 };
 
 /// The two step responses' t90 [s] and the transient solves they took.
@@ -23,14 +27,17 @@ struct ResponseTime {
   double on = 0.0;   ///< 0 -> V: slowest gap's mean |B| reaches 90 % of its change
   double off = 0.0;  ///< V -> 0 from the steady state at V / R
   int transient_runs = 0;
+  int static_solves = 0;  ///< quasi-static: the table's solves (after its refinement)
   double value() const { return on > off ? on : off; }  ///< the slower of the two
 };
 
 /// t90 of every fluid gap's mean |B| after a voltage step 0 -> V and V -> 0 on the first
 /// circuit through its resistance, from `rheomag transient`'s solver on `statics` (eddy
 /// currents with the case's conductivities and [transient] remedies); the slowest gap counts.
+/// With `options.quasi_static` both steps come from one table of static solves (no time
+/// stepping; its error against the transient runs in docs/transient.md).
 /// InputError for missing conductivities or bad options; ConvergenceError when a step fails or
-/// 90 % is not reached within 8 spans.
+/// 90 % is not reached within 8 spans (the reduction: not reached at all).
 ResponseTime response_time(magnetostatics::MagnetostaticSolver& statics, const cases::Case& c,
                            const ResponseTimeOptions& options);
 

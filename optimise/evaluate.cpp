@@ -275,9 +275,12 @@ design::Quantities OptimiseEvaluator::evaluate(const std::vector<double>& x) {
       o.supply_voltage = spec_.supply_voltage;
       o.resistance = p.resistance;
       o.time_constant = p.time_constant;
+      o.quasi_static = spec_.response_model == ResponseModel::quasi_static;
       const design::ResponseTime t = design::response_time(*field.solver, c, o);
-      designs_.count_solves(2 * t.transient_runs);  // the static states of each run
-      q[design::Quantity::response_time] = t.value();
+      // the static states of each run, or the reduction's static solves
+      designs_.count_solves(2 * t.transient_runs + t.static_solves);
+      q[design::Quantity::response_time] =
+          t.value() * (o.quasi_static ? response_correction_ : 1.0);
     }
   }
   return q;

@@ -40,6 +40,10 @@ class OptimiseEvaluator {
   /// With a wire_gauge variable: true evaluates the winding as the written case has it (the
   /// case's whole turns from wire and fill_factor), false (default) the continuous relaxation.
   void exact_winding(bool exact) { exact_winding_ = exact; }
+  /// response_model = "quasi_static": the factor on the reduction's response_time (the
+  /// transient runs' value over the reduction's at a checked design; 1 until one is checked).
+  void set_response_correction(double factor) { response_correction_ = factor; }
+  double response_correction() const { return response_correction_; }
   /// The field of the last evaluate() call.
   const design::EvaluatedField& last_field() const { return designs_.last(); }
   /// FE solves done so far.
@@ -58,6 +62,7 @@ class OptimiseEvaluator {
   bool current_varies_ = false;  ///< a design variable is the first circuit's (on-state) current
   int gauge_index_ = -1;         ///< index of the wire_gauge variable (-1: none)
   bool exact_winding_ = false;   ///< whole turns as the case derives them (no relaxation)
+  double response_correction_ = 1.0;            ///< see set_response_correction
   std::optional<valve::DamperOptions> damper_;  ///< [damper] of a damper case ([optimise] velocity)
   std::optional<valve::BrakeOptions> brake_;    ///< [brake] of a brake case ([optimise] speed)
   std::vector<double> region_density_;  ///< per region of the base case [kg/m^3] (mass only)

@@ -15,6 +15,7 @@
 #include "optimise/evaluate.hpp"
 #include "optimise/pareto_front.hpp"
 #include "optimise/report.hpp"
+#include "optimise/response_check.hpp"
 #include "optimise/spec.hpp"
 
 namespace rheomag::optimise {
@@ -51,6 +52,7 @@ struct OptimiseResult {
   std::vector<CombinationResult> combinations;  ///< one per enumerated combination (>= 1)
   std::size_t chosen = 0;                       ///< index of the best combination
   std::optional<ParetoFront> pareto;            ///< with [optimise.pareto]
+  std::optional<ResponseCheck> response_check;  ///< with response_model = "quasi_static"
   std::filesystem::path case_file, history_file, vtu_file;
   std::vector<std::filesystem::path> pareto_files;  ///< pareto.csv (+ pareto.png)
 };

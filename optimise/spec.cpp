@@ -161,7 +161,7 @@ OptimiseSpec read_optimise_spec(const cases::Case& c) {
   section->allow_only({"objective", "sense", "current", "flow", "max_iterations", "tolerance",
                        "step", "variable", "constraint", "supply_voltage", "heat_transfer",
                        "thermal_resistance", "duty", "pareto", "enumerate", "velocity", "speed",
-                       "density"});
+                       "density", "response_model"});
   OptimiseSpec spec;
   read_objective(*section, spec);
   spec.maximise = read_sense(*section);
@@ -183,6 +183,8 @@ OptimiseSpec read_optimise_spec(const cases::Case& c) {
   spec.step = section->positive_or("step", 1e-3);
   if (spec.step > 0.1) section->fail("step", "expected a fraction of the bound range <= 0.1");
   spec.supply_voltage = section->non_negative_or("supply_voltage", 0.0);
+  spec.response_model =
+      section->choice_or("response_model", kResponseModelNames, ResponseModel::transient);
   spec.heat_transfer = section->positive_or("heat_transfer", 10.0);
   spec.thermal_resistance = section->non_negative_or("thermal_resistance", 0.0);
   spec.duty = section->quantity_or("duty", Domain::between(0.0, 1.0), 1.0);

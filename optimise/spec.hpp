@@ -12,6 +12,7 @@
 #include "case/case_file.hpp"
 #include "case/case_key.hpp"
 #include "case/case_sections.hpp"
+#include "core/enum_names.hpp"
 #include "design/quantities.hpp"
 
 namespace rheomag::optimise {
@@ -57,6 +58,16 @@ struct DiscreteChoice {
   std::vector<std::string> values;
 };
 
+/// [optimise] response_model: how each design's response_time is computed.
+enum class ResponseModel {
+  transient,     ///< two transient runs (design/response_time.hpp)
+  quasi_static,  ///< the quasi-static reduction on static solves (transient/quasi_static.hpp)
+};
+
+/// Names of ResponseModel in case files.
+inline constexpr auto kResponseModelNames = enum_names<ResponseModel>(
+    {{ResponseModel::transient, "transient"}, {ResponseModel::quasi_static, "quasi_static"}});
+
 /// Everything the optimiser needs from the case.
 struct OptimiseSpec {
   std::vector<DesignVariable> variables;
@@ -71,8 +82,11 @@ struct OptimiseSpec {
   std::map<std::string, double> densities;  ///< [optimise.density]: material -> [kg/m^3]
   int max_iterations = 40;                  ///< Ipopt iterations
   double tolerance = 1e-4;                  ///< Ipopt relative tolerance on the scaled problem
-  double step = 1e-3;               ///< central-difference step as a fraction of each bound range
-  double supply_voltage = 0.0;      ///< driver voltage step for rise_time [V] (0: not given)
+  double step = 1e-3;           ///< central-difference step as a fraction of each bound range
+  double supply_voltage = 0.0;  ///< driver voltage step for rise_time [V] (0: not given)
+  /// How response_time is computed: transient runs, or the quasi-static reduction checked by
+  /// transient runs at the optimum (OptimiseResult::response_check).
+  ResponseModel response_model = ResponseModel::transient;
   double heat_transfer = 10.0;      ///< coil outer surface to ambient [W/(m^2 K)]
   double thermal_resistance = 0.0;  ///< coil to ambient [K/W]; > 0 overrides heat_transfer
   double duty = 1.0;  ///< fraction of the time at the operating point (coil/fluid_temperature)

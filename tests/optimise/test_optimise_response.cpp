@@ -8,7 +8,9 @@
 #include <cstdio>
 #include <string>
 
+#include "core/error.hpp"
 #include "optimise/evaluate.hpp"
+#include "optimise/run.hpp"
 #include "optimise/spec.hpp"
 #include "optimise_fixture.hpp"
 
@@ -90,6 +92,61 @@ TEST(OptimiseResponseTime, ShortRunRespectsTheConstraint) {
   optimise::OptimiseEvaluator check(reloaded, spec);
   const double value = check.evaluate({spec.variables[0].initial})[design::Quantity::response_time];
   EXPECT_LE(value, limit * (1.0 + optimise::kFeasibilityTolerance));
+}
+
+// response_model = "quasi_static": the same short optimisation with the reduction standing in
+// for the transient runs. Reference: the transient runs at the written optimum (the run's own
+// check, OptimiseResult::response_check); the bound: the optimum's response_time within
+// 1 % of them (the run re-optimises with a scaled reduction until it is). On the drawn design the
+// reduction must be within 3 % of the transient runs (measured in the print).
+TEST(OptimiseResponseTime, QuasiStaticModelIsCheckedByTheTransientRunsAtTheOptimum) {
+  const std::string settings =
+      "objective = \"dp_on\"\nsense = \"maximise\"\n"
+      "current = 1.0\nsupply_voltage = 4.8\n"
+      "max_iterations = 6\n";
+  const std::string base = optimise_table(settings);
+  const std::string reduced_base = optimise_table(settings + "response_model = \"quasi_static\"\n");
+  const std::string probe_table =
+      "[[optimise.constraint]]\nquantity = \"response_time\"\nmax = 10.0\n";
+  const auto probe = make_case(base + probe_table);
+  const auto reduced_probe = make_case(reduced_base + probe_table);
+  optimise::OptimiseEvaluator p(probe, optimise::read_optimise_spec(probe));
+  optimise::OptimiseEvaluator r(reduced_probe, optimise::read_optimise_spec(reduced_probe));
+  const double transient = p.evaluate({5.0})[design::Quantity::response_time];
+  const double reduced = r.evaluate({5.0})[design::Quantity::response_time];
+  std::printf("drawn design: response_time %.5g s by the transient runs, %.5g s reduced\n",
+              transient, reduced);
+  EXPECT_NEAR(reduced / transient, 1.0, 0.03);
+  const double limit = 0.9 * transient;
+  const auto c =
+      make_case(reduced_base + "[[optimise.constraint]]\nquantity = \"response_time\"\nmax = " +
+                std::to_string(limit) + "\n");
+  const optimise_fixture::TempDir dir("response_reduced");
+  const auto result = optimise_fixture::run(c, dir);
+  ASSERT_TRUE(result.response_check.has_value());
+  const optimise::ResponseCheck& check = *result.response_check;
+  std::printf(
+      "optimum at pole length %.4g mm: %.5g s reduced (x %.5g, %d rounds), %.5g s by the "
+      "transient runs; %d FE solves\n",
+      result.optimal.x[0], check.reduced, check.correction, check.rounds, check.transient,
+      result.fe_solves);
+  EXPECT_NEAR(check.reduced / check.transient, 1.0, optimise::kResponseCheckTolerance);
+  EXPECT_LE(check.transient, limit * (1.0 + optimise::kResponseCheckTolerance));
+  EXPECT_TRUE(result.optimal.feasible);
+  EXPECT_NE(optimise::format_summary(result).find("by the transient runs"), std::string::npos);
+}
+
+// A response_model that is not one is refused with the key and the choices.
+TEST(OptimiseResponseTime, UnknownResponseModelIsRefused) {
+  const auto c = make_case(optimise_table("supply_voltage = 4.8\nresponse_model = \"fast\"\n"));
+  try {
+    optimise::read_optimise_spec(c);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("response_model"), std::string::npos) << what;
+    EXPECT_NE(what.find("quasi_static"), std::string::npos) << what;
+  }
 }
 
 }  // namespace
