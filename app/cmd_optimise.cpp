@@ -35,6 +35,7 @@ nlohmann::json design_json(const rheomag::optimise::DesignReport& d,
   for (rheomag::design::Quantity q : rheomag::design::all_quantities())
     if (!std::isnan(d.quantities[q]))
       quantities[rheomag::design::quantity_name(q)] = d.quantities[q];
+  if (d.response_time_transient) quantities["response_time_transient"] = *d.response_time_transient;
   nlohmann::json constraints = nlohmann::json::array();
   for (const auto& s : d.constraints) {
     nlohmann::json c = {{"quantity", rheomag::design::quantity_name(s.constraint.quantity)},

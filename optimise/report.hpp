@@ -3,6 +3,7 @@
 // activity, variables at their bounds.
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,9 @@ struct DesignReport {
   bool feasible = true;
   std::vector<ConstraintStatus> constraints;
   std::vector<std::string> variables_at_bounds;  ///< keys at a bound (within 0.1 % of the range)
+  /// response_model = "quasi_static": response_time by the two transient runs, where checked
+  /// (the optimum and the Pareto levels).
+  std::optional<double> response_time_transient;
 };
 
 /// Feasibility tolerance: a constraint may be exceeded by this fraction of its bound.

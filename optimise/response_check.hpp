@@ -34,6 +34,10 @@ struct OptimumState {
   int iterations = 0;
 };
 
+/// The two transient runs' response_time of `design`, whose field is `evaluator`'s last.
+double transient_response_time(OptimiseEvaluator& evaluator, const OptimiseSpec& spec,
+                               const DesignReport& design, int* fe_solves = nullptr);
+
 /// Checks `state.rounded` (whose field is `evaluator`'s last) by the transient runs; while they
 /// differ from the reduction by more than kResponseCheckTolerance, at most kResponseRounds times,
 /// scales the reduction by their ratio (OptimiseEvaluator::set_response_correction) and

@@ -136,6 +136,30 @@ TEST(OptimiseResponseTime, QuasiStaticModelIsCheckedByTheTransientRunsAtTheOptim
   EXPECT_NE(optimise::format_summary(result).find("by the transient runs"), std::string::npos);
 }
 
+// With [optimise.pareto] over response_time, each level's optimum by the reduction is checked
+// by the transient runs too (not re-optimised: the optimum's correction carries over). Reference:
+// those runs; tolerance 3 % (the reduction's error between designs, docs/transient.md).
+TEST(OptimiseResponseTime, QuasiStaticParetoLevelsAreCheckedByTheTransientRuns) {
+  const auto c = make_case(
+      optimise_table("objective = \"dp_on\"\nsense = \"maximise\"\ncurrent = 1.0\n"
+                     "supply_voltage = 4.8\nmax_iterations = 4\n"
+                     "response_model = \"quasi_static\"\n") +
+      "[optimise.pareto]\nquantity = \"response_time\"\nsense = \"minimise\"\npoints = 2\n"
+      "[[optimise.constraint]]\nquantity = \"response_time\"\nmax = 10.0\n");
+  const optimise_fixture::TempDir dir("response_pareto");
+  const auto result = optimise_fixture::run(c, dir);
+  ASSERT_TRUE(result.pareto.has_value());
+  ASSERT_EQ(result.pareto->points.size(), 2u);
+  const auto& level = result.pareto->points[1].design;
+  ASSERT_TRUE(level.response_time_transient.has_value());
+  const double reduced = level.quantities[design::Quantity::response_time];
+  std::printf("Pareto level 2: response_time %.5g s reduced, %.5g s by the transient runs\n",
+              reduced, *level.response_time_transient);
+  EXPECT_NEAR(reduced / *level.response_time_transient, 1.0, 0.03);
+  EXPECT_NE(optimise::format_summary(result).find("response_time by transient runs"),
+            std::string::npos);
+}
+
 // A response_model that is not one is refused with the key and the choices.
 TEST(OptimiseResponseTime, UnknownResponseModelIsRefused) {
   const auto c = make_case(optimise_table("supply_voltage = 4.8\nresponse_model = \"fast\"\n"));
