@@ -11,6 +11,7 @@
 #include "app/command.hpp"
 #include "case/case_file.hpp"
 #include "core/error.hpp"
+#include "core/format_text.hpp"
 #include "coupling/step_request.hpp"
 #include "figures/transient_step.hpp"
 #include "plot/figure.hpp"
@@ -50,6 +51,13 @@ void run_quasi_static(const TransientCliOptions& o, const cases::Case& c) {
   run.from_current = options.from_current;
   run.final_current = voltage ? options.value / options.resistance : options.value;
   run.resistance = voltage ? options.resistance : 0.0;
+  // A step to the steady state it starts from has no response (the table would span no range).
+  if (run.final_current == run.from_current)
+    throw InputError(voltage ? format_text("--voltage: %.6g V through %.6g Ohm holds the current "
+                                           "at --from; expected a different voltage or --from",
+                                           options.value, options.resistance)
+                             : std::string("--current: the step goes to the current it starts "
+                                           "from; expected a different --current or --from"));
   const double low = std::min({0.0, run.from_current, run.final_current});
   const double high = std::max({0.0, run.from_current, run.final_current});
   run.table = transient::quasi_static_table(*step.set_up.solver, low, high, o.table_points);

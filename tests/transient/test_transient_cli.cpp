@@ -163,6 +163,11 @@ TEST(TransientCli, QuasiStaticStepOfTheValve) {
   EXPECT_NE(out.find("--quasi-static"), std::string::npos) << out;
   EXPECT_EQ(run_cli(valve + " --voltage 4.8", out, true), 2) << out;
   EXPECT_NE(out.find("--duration is required"), std::string::npos) << out;
+  // A step that does not change the current is refused naming the option.
+  EXPECT_EQ(run_cli(valve + " --voltage 0 --quasi-static", out, true), 2) << out;
+  EXPECT_NE(out.find("--voltage"), std::string::npos) << out;
+  EXPECT_EQ(run_cli(valve + " --current 1 --from 1 --quasi-static", out, true), 2) << out;
+  EXPECT_NE(out.find("--current"), std::string::npos) << out;
 }
 
 // A current step to the current it starts from ended with exit 3 and "relative residual reached
