@@ -1,9 +1,7 @@
 // rheomag transient: step response of a valve's field with eddy currents (current or voltage).
 
-#include <algorithm>
 #include <chrono>
 #include <iostream>
-#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -11,7 +9,7 @@
 #include "app/command.hpp"
 #include "case/case_file.hpp"
 #include "core/error.hpp"
-#include "core/format_text.hpp"
+#include "coupling/quasi_static_request.hpp"
 #include "coupling/step_request.hpp"
 #include "figures/transient_step.hpp"
 #include "plot/figure.hpp"
@@ -40,33 +38,8 @@ struct TransientCliOptions {
 
 /// `--quasi-static`: the step's rise times from static solves alone (transient/quasi_static.hpp).
 void run_quasi_static(const TransientCliOptions& o, const cases::Case& c) {
-  coupling::StepRequest request = o.request;
-  if (o.duration_option->count() == 0) request.duration = 1.0;  // unused: no time stepping
-  const coupling::PreparedStep step = coupling::prepare_step(c, o.case_path, request);
-  const transient::TransientOptions& options = step.options;
-  transient::QuasiStaticRun run;
-  const bool voltage = options.drive == transient::Drive::voltage;
-  run.drive = voltage ? "voltage" : "current";
-  run.value = options.value;
-  run.from_current = options.from_current;
-  run.final_current = voltage ? options.value / options.resistance : options.value;
-  run.resistance = voltage ? options.resistance : 0.0;
-  // A step to the steady state it starts from has no response (the table would span no range).
-  if (run.final_current == run.from_current)
-    throw InputError(voltage ? format_text("--voltage: %.6g V through %.6g Ohm holds the current "
-                                           "at --from; expected a different voltage or --from",
-                                           options.value, options.resistance)
-                             : std::string("--current: the step goes to the current it starts "
-                                           "from; expected a different --current or --from"));
-  const double low = std::min({0.0, run.from_current, run.final_current});
-  const double high = std::max({0.0, run.from_current, run.final_current});
-  run.table = transient::quasi_static_table(*step.set_up.solver, low, high, o.table_points);
-  run.step = transient::quasi_static_step(
-      run.table, run.from_current, run.final_current,
-      voltage ? options.resistance : std::numeric_limits<double>::infinity());
-  const auto& regions = step.set_up.solver->statics().problem().geometry.regions;
-  for (int r : run.table.gap_regions) run.gap_names.push_back(regions[r].name);
-  run.dofs = step.set_up.solver->statics().dofs().free_count();
+  const transient::QuasiStaticRun run =
+      coupling::quasi_static_response(c, o.case_path, o.request, o.table_points);
   if (o.json) {
     nlohmann::json j = transient::quasi_static_json(run);
     j["case"] = c.name;

@@ -4,10 +4,13 @@
 #include <chrono>
 #include <optional>
 
+#include "core/error.hpp"
+#include "coupling/quasi_static_request.hpp"
 #include "coupling/step_request.hpp"
 #include "python/bindings.hpp"
 #include "python/handles.hpp"
 #include "thermal/thermal_report.hpp"
+#include "transient/quasi_static_report.hpp"
 #include "transient/report.hpp"
 #include "valve/brake_report.hpp"
 #include "valve/damper_report.hpp"
@@ -48,14 +51,15 @@ py::object brake_dict(const CaseHandle& h, const std::vector<double>& currents,
   return to_python(j);
 }
 
-py::object step_response(const CaseHandle& h, double duration, std::optional<double> current,
-                         std::optional<double> voltage, double from, int steps, double tolerance,
-                         int newton_iterations, const std::string& scheme,
-                         std::optional<double> resistance, const py::object& progress) {
+py::object step_response(const CaseHandle& h, std::optional<double> duration,
+                         std::optional<double> current, std::optional<double> voltage, double from,
+                         int steps, double tolerance, int newton_iterations,
+                         const std::string& scheme, std::optional<double> resistance,
+                         bool quasi_static, int table_points, const py::object& progress) {
   coupling::StepRequest r;
   r.current = current;
   r.voltage = voltage;
-  r.duration = duration;
+  r.duration = duration.value_or(0.0);
   r.from = from;
   r.steps = steps;
   r.tolerance = tolerance;
@@ -66,12 +70,21 @@ py::object step_response(const CaseHandle& h, double duration, std::optional<dou
   nlohmann::json j;
   {
     py::gil_scoped_release release;
-    const coupling::PreparedStep step = coupling::prepare_step(*h.c, h.path, r);
-    const auto start = std::chrono::steady_clock::now();
-    const transient::TransientResult result = step.set_up.solver->run(step.options, {});
-    j = transient::transient_json(result, step.options);
-    j["case"] = h.c->name;
-    j["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (quasi_static) {
+      j = transient::quasi_static_json(
+          coupling::quasi_static_response(*h.c, h.path, r, table_points));
+      j["case"] = h.c->name;
+    } else {
+      if (!duration)
+        throw InputError("--duration is required (the simulated time after the step), e.g. 50ms");
+      const coupling::PreparedStep step = coupling::prepare_step(*h.c, h.path, r);
+      const auto start = std::chrono::steady_clock::now();
+      const transient::TransientResult result = step.set_up.solver->run(step.options, {});
+      j = transient::transient_json(result, step.options);
+      j["case"] = h.c->name;
+      j["seconds"] =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
   }
   return to_python(j);
 }
@@ -124,14 +137,18 @@ void bind_chain(py::class_<CaseHandle>& c) {
         "velocity [m/s] or a brake's speed [rad/s]; duty in [0, 1]): steady and coupled, at a "
         "given temperature [deg C], or heating from ambient for `duration` [s]; the dict of "
         "`rheomag thermal --json` (docs/thermal.md).");
-  c.def("transient", &step_response, py::kw_only(), py::arg("duration"),
+  c.def("transient", &step_response, py::kw_only(), py::arg("duration") = py::none(),
         py::arg("current") = py::none(), py::arg("voltage") = py::none(),
         py::arg("from_current") = 0.0, py::arg("steps") = 0, py::arg("tolerance") = 1e-4,
         py::arg("newton_iterations") = 50, py::arg("scheme") = "midpoint",
-        py::arg("resistance") = py::none(), py::arg("progress") = py::none(),
+        py::arg("resistance") = py::none(), py::arg("quasi_static") = false,
+        py::arg("table_points") = 8, py::arg("progress") = py::none(),
         "Step response with eddy currents from the steady state at `from_current` [A]: a current "
         "[A] or voltage [V] step for `duration` [s] (steps=0: adaptive); the dict of "
-        "`rheomag transient --json`. progress(event: dict) after each accepted step.");
+        "`rheomag transient --json`. progress(event: dict) after each accepted step. "
+        "quasi_static=True: no time stepping and no duration; the rise times from a table of "
+        "static states (`table_points` starting currents), the dict of `rheomag transient "
+        "--quasi-static --json` (docs/transient.md).");
 }
 
 }  // namespace rheomag::python

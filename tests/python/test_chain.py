@@ -66,3 +66,29 @@ def test_transient_input_error_has_the_cli_message(valve_case):
     with pytest.raises(ValueError) as e:
         valve_case.transient(duration=0.02)
     assert err == "rheomag: error: " + str(e.value) + "\n"
+
+
+def test_quasi_static_transient_equals_cli(valve_case):
+    """The reduction (no time stepping, no duration) gives the CLI's document to the last digit."""
+    py = valve_case.transient(voltage=4.8, quasi_static=True)
+    cli = cli_json("transient", VALVE, "--voltage", "4.8", "--quasi-static")
+    assert py["model"] == "quasi_static"
+    assert without_timing(py) == without_timing(cli)
+    coarse = valve_case.transient(voltage=4.8, quasi_static=True, table_points=4)
+    cli = cli_json("transient", VALVE, "--voltage", "4.8", "--quasi-static", "--table-points", "4")
+    assert without_timing(coarse) == without_timing(cli)
+
+
+def test_transient_without_duration_or_with_few_table_points_is_refused(valve_case):
+    code, _, err = run_cli("transient", VALVE, "--current", "1")
+    assert code == 2
+    with pytest.raises(ValueError) as e:
+        valve_case.transient(current=1.0)
+    assert err == "rheomag: error: " + str(e.value) + "\n"
+    with pytest.raises(ValueError, match="--table-points"):
+        valve_case.transient(current=1.0, quasi_static=True, table_points=3)
+    code, _, err = run_cli("transient", VALVE, "--current", "1", "--from", "1", "--quasi-static")
+    assert code == 2
+    with pytest.raises(ValueError) as e:
+        valve_case.transient(current=1.0, from_current=1.0, quasi_static=True)
+    assert err == "rheomag: error: " + str(e.value) + "\n"
