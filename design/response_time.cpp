@@ -20,8 +20,8 @@ ResponseTime response_time(magnetostatics::MagnetostaticSolver& statics, const c
   ResponseTime out;
   const double final_current = options.supply_voltage / options.resistance;
   if (options.quasi_static) {
-    const transient::QuasiStaticTable table =
-        transient::quasi_static_table(*set_up.solver, 0.0, final_current, options.table_points);
+    const transient::QuasiStaticTable table = transient::quasi_static_table(
+        *set_up.solver, 0.0, final_current, options.table_points, options.reuse);
     out.static_solves = static_cast<int>(table.points.size());
     auto slowest_gap = [&](double from, double to) {
       const transient::QuasiStaticStep step =

@@ -4,6 +4,7 @@
 
 #include "case/case_file.hpp"
 #include "magnetostatics/solver.hpp"
+#include "transient/quasi_static.hpp"
 
 namespace rheomag::design {
 
@@ -20,6 +21,9 @@ struct ResponseTimeOptions {
   /// V / R (`table_points` equal currents, refined) instead of the two transient runs.
   bool quasi_static = false;
   int table_points = 8;  ///< quasi-static: the table's starting currents
+  /// quasi-static: an earlier design's table to start from, and where to keep this one's
+  /// (transient::QuasiStaticReuse).
+  transient::QuasiStaticReuse reuse;
 };
 
 /// The two step responses' t90 [s] and the transient solves they took.

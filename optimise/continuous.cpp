@@ -29,7 +29,10 @@ ContinuousOptimum optimise_continuous(OptimiseEvaluator& evaluator, const Optimi
                                       const IpoptSettings& settings,
                                       std::vector<HistoryRow>& history) {
   ScaledProgram program(
-      spec, [&evaluator](const std::vector<double>& x) { return evaluator.evaluate(x); },
+      spec,
+      [&evaluator](const std::vector<double>& x, bool neighbour) {
+        return evaluator.evaluate(x, neighbour);
+      },
       objective_scale, history);
   if (start_q) program.seed(start, *start_q, "initial");
   ContinuousOptimum out;

@@ -117,7 +117,7 @@ cases::Case OptimiseEvaluator::case_at(const std::vector<double>& x) const {
   return cases::with(base_, edits);
 }
 
-design::Quantities OptimiseEvaluator::evaluate(const std::vector<double>& x) {
+design::Quantities OptimiseEvaluator::evaluate(const std::vector<double>& x, bool neighbour) {
   const cases::Case c = case_at(x);
   design::ProblemAdjustment relax;
   if (gauge_index_ >= 0 && !exact_winding_) {
@@ -276,6 +276,10 @@ design::Quantities OptimiseEvaluator::evaluate(const std::vector<double>& x) {
       o.resistance = p.resistance;
       o.time_constant = p.time_constant;
       o.quasi_static = spec_.response_model == ResponseModel::quasi_static;
+      // Finite-difference neighbours reuse the last other design's states and grid (its mesh).
+      if (reference_meshes_ == designs_.meshes_built()) o.reuse.start = &reference_;
+      o.reuse.fixed_grid = neighbour;
+      if (!neighbour) o.reuse.keep = &reference_, reference_meshes_ = designs_.meshes_built();
       const design::ResponseTime t = design::response_time(*field.solver, c, o);
       // the static states of each run, or the reduction's static solves
       designs_.count_solves(2 * t.transient_runs + t.static_solves);

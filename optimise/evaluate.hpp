@@ -17,6 +17,7 @@
 #include "design/quantities.hpp"
 #include "fluid/fluid.hpp"
 #include "optimise/spec.hpp"
+#include "transient/quasi_static.hpp"
 #include "valve/brake.hpp"
 #include "valve/damper.hpp"
 #include "valve/valve_chain.hpp"
@@ -32,8 +33,11 @@ class OptimiseEvaluator {
   /// The case with design `x` set (InputError if the template rejects the dimensions).
   cases::Case case_at(const std::vector<double>& x) const;
   /// All quantities of design `x` (one nonlinear FE solve). Throws InputError for an invalid
-  /// design and ConvergenceError if Newton fails.
-  design::Quantities evaluate(const std::vector<double>& x);
+  /// design and ConvergenceError if Newton fails. `neighbour`: x is a finite-difference
+  /// neighbour of the last design evaluated without it; response_model = "quasi_static" then
+  /// builds its table on that design's grid from its states (same mesh topology), so the
+  /// stencil's differences are smooth in the design and its static solves start close.
+  design::Quantities evaluate(const std::vector<double>& x, bool neighbour = false);
   /// Makes the next evaluate() generate a fresh mesh (the one `rheomag solve` would use for that
   /// design) and use it as the reference of later morphs.
   void remesh_next() { designs_.remesh_next(); }
@@ -62,7 +66,9 @@ class OptimiseEvaluator {
   bool current_varies_ = false;  ///< a design variable is the first circuit's (on-state) current
   int gauge_index_ = -1;         ///< index of the wire_gauge variable (-1: none)
   bool exact_winding_ = false;   ///< whole turns as the case derives them (no relaxation)
-  double response_correction_ = 1.0;            ///< see set_response_correction
+  double response_correction_ = 1.0;       ///< see set_response_correction
+  transient::QuasiStaticStart reference_;  ///< the last non-neighbour design's quasi-static states
+  long long reference_meshes_ = -1;        ///< meshes_built() when reference_ was kept
   std::optional<valve::DamperOptions> damper_;  ///< [damper] of a damper case ([optimise] velocity)
   std::optional<valve::BrakeOptions> brake_;    ///< [brake] of a brake case ([optimise] speed)
   std::vector<double> region_density_;  ///< per region of the base case [kg/m^3] (mass only)

@@ -66,7 +66,7 @@ const design::Quantities* ScaledProgram::at(const std::vector<double>& u,
   row.purpose = purpose;
   row.x = to_design(u);
   try {
-    row.q = evaluate_(row.x);
+    row.q = evaluate_(row.x, purpose == "gradient");
     objective_value(spec_, row.q);
     for (const auto& c : spec_.constraints) quantity_value(row.q, c.quantity);
   } catch (const std::exception& error) {

@@ -14,7 +14,10 @@
 namespace rheomag::optimise {
 
 /// Quantities of a design (file units); throws for a design that cannot be evaluated.
-using EvaluateDesign = std::function<design::Quantities(const std::vector<double>& x)>;
+/// `neighbour`: x is a point of a finite-difference stencil, whose evaluations may reuse the
+/// work of the last design evaluated as not a neighbour (all points of one stencil alike).
+using EvaluateDesign =
+    std::function<design::Quantities(const std::vector<double>& x, bool neighbour)>;
 
 /// One evaluated design, for the history CSV.
 struct HistoryRow {

@@ -58,6 +58,11 @@ std::optional<double> first_crossing(const std::function<double(double)>& q, dou
 }  // namespace
 
 QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double high, int points) {
+  return quasi_static_table(solver, low, high, points, QuasiStaticReuse{});
+}
+
+QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double high, int points,
+                                    const QuasiStaticReuse& reuse) {
   magnetostatics::MagnetostaticSolver& statics = solver.statics();
   const std::string where = statics.problem().geometry.source;
   if (!(std::isfinite(low) && std::isfinite(high) && low < high) || points < 4)
@@ -65,19 +70,42 @@ QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double 
         "%s: quasi-static response: expected at least 4 currents over a finite range low < high, "
         "got %d over [%.6g, %.6g] A",
         where.c_str(), points, low, high));
+  const QuasiStaticStart* earlier = reuse.start;
+  if (earlier &&
+      (earlier->fields.empty() || earlier->fields.size() != earlier->fractions.size() ||
+       static_cast<std::size_t>(earlier->fields.front().size()) != statics.mesh().nodes.size()))
+    earlier = nullptr;  // another mesh: no warm starts
   QuasiStaticTable table;
   table.gap_regions = gap_regions(statics);
   std::vector<double> currents;
-  for (int k = 0; k < points; ++k) currents.push_back(low + (high - low) * k / (points - 1));
+  if (earlier && reuse.fixed_grid)
+    for (double f : earlier->fractions) currents.push_back(low + (high - low) * f);
+  else
+    for (int k = 0; k < points; ++k) currents.push_back(low + (high - low) * k / (points - 1));
   const magnetostatics::DofMap& dofs = statics.dofs();
   const auto mass = solver.damping().selfadjointView<Eigen::Lower>();
   std::vector<double> held;
   for (const cases::Circuit& circuit : statics.problem().circuits) held.push_back(circuit.current);
   std::vector<Eigen::VectorXd> fields;  // nodal A of each point, for warm starts
+  // The earlier design's state nearest to `current` when it is a better start than `start`.
+  auto better_start = [&](double current, const Eigen::VectorXd* start) {
+    if (!earlier) return start;
+    const double f = (current - low) / (high - low);
+    std::size_t nearest = 0;
+    for (std::size_t k = 1; k < earlier->fractions.size(); ++k)
+      if (std::abs(earlier->fractions[k] - f) < std::abs(earlier->fractions[nearest] - f))
+        nearest = k;
+    const Eigen::VectorXd* candidate = &earlier->fields[nearest];
+    if (!start) return candidate;
+    return statics.residual(*candidate, held).norm() < statics.residual(*start, held).norm()
+               ? candidate
+               : start;
+  };
   // The static state at `current`, from nodal A `start` (or zero), inserted at `at`.
   auto solve_at = [&](double current, const Eigen::VectorXd* start, std::size_t at) {
     held[0] = current;
-    const magnetostatics::Solution s = statics.solve_incremental(held, start);
+    const magnetostatics::Solution s =
+        statics.solve_incremental(held, better_start(current, start));
     const Eigen::VectorXd& slope = s.incremental_field.at(0);  // a', free dofs
     Eigen::VectorXd slope_nodes = Eigen::VectorXd::Zero(s.a.size());
     for (int d = 0; d < dofs.free_count(); ++d) slope_nodes[dofs.node_of_dof[d]] = slope[d];
@@ -89,16 +117,16 @@ QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double 
     fields.insert(fields.begin() + static_cast<std::ptrdiff_t>(at), s.a);
     table.newton_iterations += s.newton.iterations;
   };
-  for (int k = 0; k < points; ++k)
-    solve_at(low + (high - low) * k / (points - 1), k > 0 ? &fields.back() : nullptr,
-             static_cast<std::size_t>(k));
+  for (std::size_t k = 0; k < currents.size(); ++k)
+    solve_at(currents[k], k > 0 ? &fields.back() : nullptr, k);
   // Halve the intervals across which the coefficients change too much (a saturation knee).
   auto changes = [](double a, double b) {
     const double scale = std::max(std::abs(a), std::abs(b));
     return scale > 0.0 && std::abs(a - b) > kQuasiStaticTableChange * scale;
   };
   const std::size_t most = 16 * static_cast<std::size_t>(points);
-  for (bool refined = true; refined && table.points.size() < most;) {
+  const bool refine = !(earlier && reuse.fixed_grid);
+  for (bool refined = refine; refined && table.points.size() < most;) {
     refined = false;
     for (std::size_t k = 0; k + 1 < table.points.size() && table.points.size() < most; ++k) {
       const QuasiStaticPoint &p = table.points[k], &q = table.points[k + 1];
@@ -111,6 +139,12 @@ QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double 
       refined = true;
       ++k;  // the new interval's right half is looked at in the next pass
     }
+  }
+  if (reuse.keep) {
+    reuse.keep->fractions.clear();
+    for (const QuasiStaticPoint& p : table.points)
+      reuse.keep->fractions.push_back((p.current - low) / (high - low));
+    reuse.keep->fields = std::move(fields);
   }
   return table;
 }

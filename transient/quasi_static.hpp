@@ -51,6 +51,31 @@ inline constexpr double kQuasiStaticTableChange = 0.2;
 /// a static solve fails.
 QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double high, int points);
 
+/// The static states of a table (nodal A at each current), kept to start the table of a nearby
+/// design on a mesh of the same topology (an optimiser's morphed mesh).
+struct QuasiStaticStart {
+  std::vector<double> fractions;        ///< (current - low) / (high - low) of each state
+  std::vector<Eigen::VectorXd> fields;  ///< its nodal A [Wb/m]
+};
+
+/// How quasi_static_table reuses an earlier design's table.
+struct QuasiStaticReuse {
+  /// Warm starts: each static solve starts from this table's state at the nearest fraction of
+  /// the range when that has the smaller residual (ignored unless its fields have this mesh's
+  /// node count). The table is the one built without it, to Newton's tolerance.
+  const QuasiStaticStart* start = nullptr;
+  /// With `start`: its fractions are the grid, not refined. For a finite-difference neighbour
+  /// of the design that built `start`: both tables then have the same grid, so their difference
+  /// is smooth in the design.
+  bool fixed_grid = false;
+  QuasiStaticStart* keep = nullptr;  ///< when given, filled with this table's states
+};
+
+/// quasi_static_table(solver, low, high, points) reusing an earlier design's states as `reuse`
+/// says.
+QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double high, int points,
+                                    const QuasiStaticReuse& reuse);
+
 /// The rise times of one step in the reduction.
 struct QuasiStaticStep {
   std::vector<std::optional<double>> gap_t63, gap_t90;  ///< per gap, of its mean |B| [s]

@@ -23,7 +23,8 @@ struct AnalyticOptimiser {
   optimise::DesignReport operator()(const optimise::OptimiseSpec& spec,
                                     const std::vector<double>& start, double scale) {
     optimise::ScaledProgram program(
-        spec, [this](const std::vector<double>& x) { return model.quantities(x); }, scale, history);
+        spec, [this](const std::vector<double>& x, bool) { return model.quantities(x); }, scale,
+        history);
     optimise::IpoptSettings settings;
     settings.tolerance = spec.tolerance;
     settings.max_iterations = spec.max_iterations;
