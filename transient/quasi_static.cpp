@@ -73,6 +73,8 @@ QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double 
   const QuasiStaticStart* earlier = reuse.start;
   if (earlier &&
       (earlier->fields.empty() || earlier->fields.size() != earlier->fractions.size() ||
+       earlier->currents.size() != earlier->fields.size() ||
+       earlier->slopes.size() != earlier->fields.size() ||
        static_cast<std::size_t>(earlier->fields.front().size()) != statics.mesh().nodes.size()))
     earlier = nullptr;  // another mesh: no warm starts
   QuasiStaticTable table;
@@ -86,26 +88,41 @@ QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double 
   const auto mass = solver.damping().selfadjointView<Eigen::Lower>();
   std::vector<double> held;
   for (const cases::Circuit& circuit : statics.problem().circuits) held.push_back(circuit.current);
-  std::vector<Eigen::VectorXd> fields;  // nodal A of each point, for warm starts
-  // The earlier design's state nearest to `current` when it is a better start than `start`.
-  auto better_start = [&](double current, const Eigen::VectorXd* start) {
-    if (!earlier) return start;
-    const double f = (current - low) / (high - low);
-    std::size_t nearest = 0;
-    for (std::size_t k = 1; k < earlier->fractions.size(); ++k)
-      if (std::abs(earlier->fractions[k] - f) < std::abs(earlier->fractions[nearest] - f))
-        nearest = k;
-    const Eigen::VectorXd* candidate = &earlier->fields[nearest];
-    if (!start) return candidate;
-    return statics.residual(*candidate, held).norm() < statics.residual(*start, held).norm()
-               ? candidate
-               : start;
+  // Nodal A of each point and its dA/di_m, for tangent predictions of the next solves' starts.
+  std::vector<Eigen::VectorXd> fields, slopes;
+  // Of two starts for the solve at `held`, the one with the smaller residual; on a fixed grid
+  // (a finite-difference neighbour of the earlier design) the earlier design's, without the
+  // two residuals' cost.
+  auto closer = [&](Eigen::VectorXd a, const std::optional<Eigen::VectorXd>& b) {
+    if (b &&
+        (reuse.fixed_grid || statics.residual(*b, held).norm() < statics.residual(a, held).norm()))
+      return *b;
+    return a;
   };
-  // The static state at `current`, from nodal A `start` (or zero), inserted at `at`.
-  auto solve_at = [&](double current, const Eigen::VectorXd* start, std::size_t at) {
+  // The earlier design's state nearest to `current`, moved to it along its slope.
+  auto earlier_at = [&](double current) -> Eigen::VectorXd {
+    std::size_t k = 0;
+    for (std::size_t j = 1; j < earlier->currents.size(); ++j)
+      if (std::abs(earlier->currents[j] - current) < std::abs(earlier->currents[k] - current))
+        k = j;
+    return earlier->fields[k] + (current - earlier->currents[k]) * earlier->slopes[k];
+  };
+  // The earlier design's state at `current` plus the difference between the designs at the
+  // table's solved point `solved` (smooth in the current, so carried over).
+  auto from_earlier = [&](double current,
+                          std::optional<std::size_t> solved) -> std::optional<Eigen::VectorXd> {
+    if (!earlier) return std::nullopt;
+    Eigen::VectorXd a = earlier_at(current);
+    if (solved) a += fields[*solved] - earlier_at(table.points[*solved].current);
+    return a;
+  };
+  // The static state at `current` from nodal A `start`, inserted at `at`; `solved`: a neighbour
+  // already in the table.
+  auto solve_at = [&](double current, const Eigen::VectorXd& start, std::size_t at,
+                      std::optional<std::size_t> solved) {
     held[0] = current;
-    const magnetostatics::Solution s =
-        statics.solve_incremental(held, better_start(current, start));
+    const Eigen::VectorXd guess = closer(start, from_earlier(current, solved));
+    const magnetostatics::Solution s = statics.solve_incremental(held, &guess);
     const Eigen::VectorXd& slope = s.incremental_field.at(0);  // a', free dofs
     Eigen::VectorXd slope_nodes = Eigen::VectorXd::Zero(s.a.size());
     for (int d = 0; d < dofs.free_count(); ++d) slope_nodes[dofs.node_of_dof[d]] = slope[d];
@@ -115,10 +132,17 @@ QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double 
                         {current, s.flux_linkage.at(0), s.incremental_inductance.at(0),
                          slope.dot(mass * slope), gaps.b, gaps.slope});
     fields.insert(fields.begin() + static_cast<std::ptrdiff_t>(at), s.a);
+    slopes.insert(slopes.begin() + static_cast<std::ptrdiff_t>(at), std::move(slope_nodes));
     table.newton_iterations += s.newton.iterations;
   };
+  // Tangent predictor from the last state; zero for the first.
+  const auto nodes = static_cast<Eigen::Index>(statics.mesh().nodes.size());
   for (std::size_t k = 0; k < currents.size(); ++k)
-    solve_at(currents[k], k > 0 ? &fields.back() : nullptr, k);
+    solve_at(currents[k],
+             k == 0
+                 ? Eigen::VectorXd(Eigen::VectorXd::Zero(nodes))
+                 : Eigen::VectorXd(fields.back() + (currents[k] - currents[k - 1]) * slopes.back()),
+             k, k == 0 ? std::nullopt : std::optional<std::size_t>(k - 1));
   // Halve the intervals across which the coefficients change too much (a saturation knee).
   auto changes = [](double a, double b) {
     const double scale = std::max(std::abs(a), std::abs(b));
@@ -134,17 +158,24 @@ QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double 
       for (std::size_t g = 0; g < p.gap_b_slope.size(); ++g)
         split = split || changes(p.gap_b_slope[g], q.gap_b_slope[g]);
       if (!split || q.current - p.current < 1e-6 * (high - low)) continue;
-      const Eigen::VectorXd start = fields[k];
-      solve_at(0.5 * (p.current + q.current), &start, k + 1);
+      // Cubic Hermite midpoint of the two states and their slopes.
+      const double h = q.current - p.current;
+      const Eigen::VectorXd start =
+          0.5 * (fields[k] + fields[k + 1]) + (h / 8.0) * (slopes[k] - slopes[k + 1]);
+      solve_at(0.5 * (p.current + q.current), start, k + 1, k);
       refined = true;
       ++k;  // the new interval's right half is looked at in the next pass
     }
   }
   if (reuse.keep) {
     reuse.keep->fractions.clear();
-    for (const QuasiStaticPoint& p : table.points)
+    reuse.keep->currents.clear();
+    for (const QuasiStaticPoint& p : table.points) {
       reuse.keep->fractions.push_back((p.current - low) / (high - low));
+      reuse.keep->currents.push_back(p.current);
+    }
     reuse.keep->fields = std::move(fields);
+    reuse.keep->slopes = std::move(slopes);
   }
   return table;
 }

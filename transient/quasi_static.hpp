@@ -46,7 +46,8 @@ inline constexpr double kQuasiStaticTableChange = 0.2;
 /// on `solver`'s mesh: `points` >= 4 equally spaced currents, then every interval across which
 /// L_d, D or a gap's slope changes by more than kQuasiStaticTableChange halved, until none does
 /// or the table has 16 x `points` currents (saturation knees far below `high`). Each is a
-/// static solve warm-started from its neighbour, with its dA/dI and its eddy-current load from
+/// static solve started from its neighbours' states and slopes (the tangent predictor; cubic
+/// Hermite between two), with its dA/dI and its eddy-current load from
 /// `solver`'s conductivities and remedies. InputError for bad arguments; ConvergenceError when
 /// a static solve fails.
 QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double high, int points);
@@ -55,14 +56,17 @@ QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double 
 /// design on a mesh of the same topology (an optimiser's morphed mesh).
 struct QuasiStaticStart {
   std::vector<double> fractions;        ///< (current - low) / (high - low) of each state
+  std::vector<double> currents;         ///< its current [A]
   std::vector<Eigen::VectorXd> fields;  ///< its nodal A [Wb/m]
+  std::vector<Eigen::VectorXd> slopes;  ///< its nodal dA/di_m [Wb/(m A)]
 };
 
 /// How quasi_static_table reuses an earlier design's table.
 struct QuasiStaticReuse {
-  /// Warm starts: each static solve starts from this table's state at the nearest fraction of
-  /// the range when that has the smaller residual (ignored unless its fields have this mesh's
-  /// node count). The table is the one built without it, to Newton's tolerance.
+  /// Warm starts: each static solve starts from this table's state at the nearest current,
+  /// moved along its slope, when that has the smaller residual than the table's own prediction
+  /// (ignored unless its fields have this mesh's node count). The table is the one built without
+  /// it, to Newton's tolerance.
   const QuasiStaticStart* start = nullptr;
   /// With `start`: its fractions are the grid, not refined. For a finite-difference neighbour
   /// of the design that built `start`: both tables then have the same grid, so their difference

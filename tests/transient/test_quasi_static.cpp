@@ -213,8 +213,8 @@ TEST(QuasiStaticResponse, FiniteDifferenceNeighboursOnTheCentresGridAreSmooth) {
   };
   const auto up = neighbour(turns * 1.01);
   ASSERT_EQ(up.points.size(), at_centre.points.size());
-  // An optimiser's stencil (a 0.1 % step) from the centre's states: measured 192 Newton
-  // iterations against 333 cold.
+  // An optimiser's stencil (a 0.1 % step) from the centre's states: measured 110 Newton
+  // iterations against 174 cold.
   const int near_iterations = neighbour(turns * 1.001).newton_iterations;
   const int cold_iterations = saturating_table(turns * 1.001, 24).newton_iterations;
   std::printf("Newton iterations at a 0.1 %% step: %d from the centre, %d cold\n", near_iterations,
