@@ -63,19 +63,24 @@ void BM_AnnularValveEqualSteps(benchmark::State& state) {
   run(state, 2, 4, static_cast<int>(state.range(0)));
 }
 
+/// The reference valve's transient solver, built once, and its 4.8 V step's final current.
+struct ValveReduction {
+  std::unique_ptr<magnetostatics::MagnetostaticSolver> statics =
+      magnetostatics::make_solver(valve_case().problem);
+  transient::TransientSolver solver{*statics, transient::eddy_coefficients(statics->problem(), {})};
+  transient::TransientOptions step = voltage_step(0);
+  double final_current = step.value / step.resistance;
+};
+
 /// The quasi-static reduction of the same step (transient/quasi_static.hpp): its table of
 /// static solves from 0 to V / R and the step's rise times, on a solver built once.
 void BM_AnnularValveQuasiStatic(benchmark::State& state) {
-  cases::Problem problem = valve_case().problem;
-  auto statics = magnetostatics::make_solver(problem);
-  transient::TransientSolver solver(*statics, transient::eddy_coefficients(statics->problem(), {}));
-  const transient::TransientOptions o = voltage_step(0);
-  const double final_current = o.value / o.resistance;
+  ValveReduction v;
   transient::QuasiStaticTable table;
   transient::QuasiStaticStep step;
   for (auto _ : state) {
-    table = transient::quasi_static_table(solver, 0.0, final_current, 8);
-    step = transient::quasi_static_step(table, 0.0, final_current, o.resistance);
+    table = transient::quasi_static_table(v.solver, 0.0, v.final_current, 8);
+    step = transient::quasi_static_step(table, 0.0, v.final_current, v.step.resistance);
   }
   state.counters["table"] = static_cast<double>(table.points.size());
   state.counters["newton"] = table.newton_iterations;
@@ -86,18 +91,14 @@ void BM_AnnularValveQuasiStatic(benchmark::State& state) {
 // V / R moved), cold (/0) or on the centre's grid from its states (/1,
 // transient::QuasiStaticReuse).
 void BM_AnnularValveQuasiStaticNeighbour(benchmark::State& state) {
-  cases::Problem problem = valve_case().problem;
-  auto statics = magnetostatics::make_solver(problem);
-  transient::TransientSolver solver(*statics, transient::eddy_coefficients(statics->problem(), {}));
-  const transient::TransientOptions o = voltage_step(0);
-  const double final_current = o.value / o.resistance;
+  ValveReduction v;
   transient::QuasiStaticStart centre;
-  transient::quasi_static_table(solver, 0.0, final_current, 8, {.keep = &centre});
+  transient::quasi_static_table(v.solver, 0.0, v.final_current, 8, {.keep = &centre});
   transient::QuasiStaticReuse reuse;
   if (state.range(0) == 1) reuse = {.start = &centre, .fixed_grid = true};
   transient::QuasiStaticTable table;
   for (auto _ : state)
-    table = transient::quasi_static_table(solver, 0.0, 1.001 * final_current, 8, reuse);
+    table = transient::quasi_static_table(v.solver, 0.0, 1.001 * v.final_current, 8, reuse);
   state.counters["table"] = static_cast<double>(table.points.size());
   state.counters["newton"] = table.newton_iterations;
 }

@@ -60,12 +60,17 @@ def test_transient_non_convergence_is_convergence_error(valve_case):
     assert err == "rheomag: solver did not converge: " + str(e.value) + "\n"
 
 
-def test_transient_input_error_has_the_cli_message(valve_case):
-    code, _, err = run_cli("transient", VALVE, "--duration", "0.02")
+def refused_alike(cli_args, call):
+    """The CLI exits 2 and `call()` raises ValueError, with the same message."""
+    code, _, err = run_cli("transient", VALVE, *cli_args)
     assert code == 2
     with pytest.raises(ValueError) as e:
-        valve_case.transient(duration=0.02)
+        call()
     assert err == "rheomag: error: " + str(e.value) + "\n"
+
+
+def test_transient_input_error_has_the_cli_message(valve_case):
+    refused_alike(["--duration", "0.02"], lambda: valve_case.transient(duration=0.02))
 
 
 def test_quasi_static_transient_equals_cli(valve_case):
@@ -80,15 +85,8 @@ def test_quasi_static_transient_equals_cli(valve_case):
 
 
 def test_transient_without_duration_or_with_few_table_points_is_refused(valve_case):
-    code, _, err = run_cli("transient", VALVE, "--current", "1")
-    assert code == 2
-    with pytest.raises(ValueError) as e:
-        valve_case.transient(current=1.0)
-    assert err == "rheomag: error: " + str(e.value) + "\n"
+    refused_alike(["--current", "1"], lambda: valve_case.transient(current=1.0))
     with pytest.raises(ValueError, match="--table-points"):
         valve_case.transient(current=1.0, quasi_static=True, table_points=3)
-    code, _, err = run_cli("transient", VALVE, "--current", "1", "--from", "1", "--quasi-static")
-    assert code == 2
-    with pytest.raises(ValueError) as e:
-        valve_case.transient(current=1.0, from_current=1.0, quasi_static=True)
-    assert err == "rheomag: error: " + str(e.value) + "\n"
+    refused_alike(["--current", "1", "--from", "1", "--quasi-static"],
+                  lambda: valve_case.transient(current=1.0, from_current=1.0, quasi_static=True))
