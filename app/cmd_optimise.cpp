@@ -1,5 +1,5 @@
 // rheomag optimise CASE: design optimisation of a case's valve with the FE in the loop (Ipopt,
-// central-difference gradients on a morphed fixed-topology mesh). Logic in
+// central- or forward-difference gradients on a morphed fixed-topology mesh). Logic in
 // optimise/run.hpp; format of the [optimise] table in docs/optimisation.md.
 
 #include <CLI/CLI.hpp>
@@ -130,7 +130,8 @@ const bool optimise_registered = rheomag::app::register_command([](CLI::App& roo
       "time_constant, rise_time, ..., or a weighted sum; maximise or minimise), constraints on\n"
       "those quantities (SI units), the current and the flow; optionally discrete choices\n"
       "(enumerate: steel, fluid) and an epsilon-constraint Pareto front ([optimise.pareto]).\n"
-      "Ipopt (interior point, L-BFGS) with central-difference gradients on a morphed mesh of\n"
+      "Ipopt (interior point, L-BFGS) with central (or forward: differences = \"forward\")\n"
+      "difference gradients on a morphed mesh of\n"
       "fixed topology. Writes CASE_optimal.toml (solvable by 'rheomag solve'),\n"
       "CASE_history.csv, CASE_optimal.vtu (and pareto.csv, pareto.png); prints initial vs\n"
       "optimal.\n"

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -65,6 +66,7 @@ const design::Quantities* ScaledProgram::at(const std::vector<double>& u,
   HistoryRow row;
   row.purpose = purpose;
   row.x = to_design(u);
+  if (purpose != "gradient") last_centre_ = u;
   try {
     row.q = evaluate_(row.x, purpose == "gradient");
     objective_value(spec_, row.q);
@@ -99,23 +101,42 @@ bool ScaledProgram::values(const std::vector<double>& u, double& f_value,
   return true;
 }
 
-// Central differences in u (one-sided at the bounds of [0, 1]); objective and constraints from
-// the same evaluations.
+// Central differences in u (one-sided at the bounds of [0, 1]), or forward differences from
+// u itself (backward at the upper bound); objective and constraints from the same evaluations.
 bool ScaledProgram::derivatives(const std::vector<double>& u, std::vector<double>& grad,
                                 std::vector<double>& jacobian) {
   const std::size_t n = u.size(), m = spec_.constraints.size();
   const double h = spec_.step;
+  const bool forward = spec_.differences == Differences::forward;
+  // Forward differences subtract u's own evaluation, so it must be the design the neighbours
+  // reuse (the last evaluated as not a neighbour); otherwise u is evaluated again first.
+  std::optional<design::Quantities> centre;
+  if (forward) {
+    const design::Quantities* q = last_centre_ == u ? at(u, "iterate") : evaluate_centre(u);
+    if (!q) return false;
+    centre = *q;
+  }
   for (std::size_t i = 0; i < n; ++i) {
     std::vector<double> plus = u, minus = u;
     plus[i] = u[i] + h;
     minus[i] = u[i] - h;
-    if (plus[i] > 1.0) plus = u;
-    if (minus[i] < 0.0) minus = u;
+    if (forward) {
+      if (plus[i] <= 1.0)
+        minus = u;
+      else
+        plus = u;
+    } else {
+      if (plus[i] > 1.0) plus = u;
+      if (minus[i] < 0.0) minus = u;
+    }
     const double width = plus[i] - minus[i];
-    const design::Quantities* qp = at(plus, "gradient");
+    auto side = [&](const std::vector<double>& v) -> const design::Quantities* {
+      return centre && v == u ? &*centre : at(v, "gradient");
+    };
+    const design::Quantities* qp = side(plus);
     if (!qp) return false;
     const design::Quantities q_plus = *qp;
-    const design::Quantities* qm = at(minus, "gradient");
+    const design::Quantities* qm = side(minus);
     if (!qm) return false;
     grad[i] = (f(q_plus) - f(*qm)) / width;
     std::vector<double> g_plus, g_minus;
@@ -124,6 +145,11 @@ bool ScaledProgram::derivatives(const std::vector<double>& u, std::vector<double
     for (std::size_t j = 0; j < m; ++j) jacobian[j * n + i] = (g_plus[j] - g_minus[j]) / width;
   }
   return true;
+}
+
+const design::Quantities* ScaledProgram::evaluate_centre(const std::vector<double>& u) {
+  cache_.erase(u);
+  return at(u, "centre");
 }
 
 void ScaledProgram::seed(const std::vector<double>& x, const design::Quantities& q,

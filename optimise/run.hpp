@@ -1,8 +1,8 @@
 #pragma once
-// `rheomag optimise`: the case's [optimise] problem solved by Ipopt with central-difference
-// gradients on the morphed mesh (for each combination of the enumerated discrete choices), then
-// the optional epsilon-constraint Pareto front; writes the optimal case, a history CSV, the
-// optimum's .vtu and pareto.csv / pareto.png.
+// `rheomag optimise`: the case's [optimise] problem solved by Ipopt with central- or forward-
+// difference gradients on the morphed mesh (for each combination of the enumerated discrete
+// choices), then the optional epsilon-constraint Pareto front; writes the optimal case, a history
+// CSV, the optimum's .vtu and pareto.csv / pareto.png.
 
 #include <filesystem>
 #include <optional>

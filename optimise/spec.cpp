@@ -158,10 +158,11 @@ OptimiseSpec read_optimise_spec(const cases::Case& c) {
   auto section = top.table("optimise");
   if (!section)
     throw InputError(file + ": the case has no [optimise] table (docs/optimisation.md)");
-  section->allow_only({"objective", "sense", "current", "flow", "max_iterations", "tolerance",
-                       "step", "variable", "constraint", "supply_voltage", "heat_transfer",
-                       "thermal_resistance", "duty", "pareto", "enumerate", "velocity", "speed",
-                       "density", "response_model"});
+  section->allow_only({"objective",      "sense",          "current",        "flow",
+                       "max_iterations", "tolerance",      "step",           "variable",
+                       "constraint",     "supply_voltage", "heat_transfer",  "thermal_resistance",
+                       "duty",           "pareto",         "enumerate",      "velocity",
+                       "speed",          "density",        "response_model", "differences"});
   OptimiseSpec spec;
   read_objective(*section, spec);
   spec.maximise = read_sense(*section);
@@ -182,6 +183,7 @@ OptimiseSpec read_optimise_spec(const cases::Case& c) {
   spec.tolerance = section->positive_or("tolerance", 1e-4);
   spec.step = section->positive_or("step", 1e-3);
   if (spec.step > 0.1) section->fail("step", "expected a fraction of the bound range <= 0.1");
+  spec.differences = section->choice_or("differences", kDifferencesNames, Differences::central);
   spec.supply_voltage = section->non_negative_or("supply_voltage", 0.0);
   spec.response_model =
       section->choice_or("response_model", kResponseModelNames, ResponseModel::transient);

@@ -68,6 +68,16 @@ enum class ResponseModel {
 inline constexpr auto kResponseModelNames = enum_names<ResponseModel>(
     {{ResponseModel::transient, "transient"}, {ResponseModel::quasi_static, "quasi_static"}});
 
+/// [optimise] differences: how the gradients' finite differences are taken.
+enum class Differences {
+  central,  ///< u +- step: 2n designs per gradient, error O(step^2)
+  forward,  ///< u + step (u - step at the upper bound): n designs per gradient, error O(step)
+};
+
+/// Names of Differences in case files.
+inline constexpr auto kDifferencesNames =
+    enum_names<Differences>({{Differences::central, "central"}, {Differences::forward, "forward"}});
+
 /// Everything the optimiser needs from the case.
 struct OptimiseSpec {
   std::vector<DesignVariable> variables;
@@ -82,7 +92,8 @@ struct OptimiseSpec {
   std::map<std::string, double> densities;  ///< [optimise.density]: material -> [kg/m^3]
   int max_iterations = 40;                  ///< Ipopt iterations
   double tolerance = 1e-4;                  ///< Ipopt relative tolerance on the scaled problem
-  double step = 1e-3;           ///< central-difference step as a fraction of each bound range
+  double step = 1e-3;  ///< finite-difference step as a fraction of each bound range
+  Differences differences = Differences::central;  ///< central or forward differences
   double supply_voltage = 0.0;  ///< driver voltage step for rise_time [V] (0: not given)
   /// How response_time is computed: transient runs, or the quasi-static reduction checked by
   /// transient runs at the optimum (OptimiseResult::response_check).
