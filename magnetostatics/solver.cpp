@@ -26,7 +26,12 @@ class MagnetostaticSolver::System : public NonlinearSystem {
       r = remembered_r_;  // Newton's first residual is often the one solve_with evaluated
       return r.norm();
     }
-    solver_.assembler_->assemble(solver_.reduced_to_nodes(x), r, nullptr);
+    if (with_tangent_) {
+      solver_.assemble_residual_tangent(solver_.reduced_to_nodes(x), r);
+    } else {
+      solver_.assembler_->assemble(solver_.reduced_to_nodes(x), r, nullptr);
+      ++solver_.assemblies_;
+    }
     if (solver_.dofs_.constrained()) r = solver_.dofs_.reduce(r);
     r -= source_;
     return r.norm();
@@ -47,6 +52,10 @@ class MagnetostaticSolver::System : public NonlinearSystem {
     }
     return steps;
   }
+  /// From now on each residual also assembles the tangent at its x, which the Jacobian at the
+  /// same x then takes as it is (Newton's accepted iterate and the solution of an incremental
+  /// solve: one assembly less each; wasted where local corrections move the iterate).
+  void assemble_tangents() { with_tangent_ = !solver_.linear_; }
   /// Keeps R(x) for a later residual call at the same x (one assembly less).
   void remember(const Eigen::VectorXd& x, const Eigen::VectorXd& r) {
     remembered_x_ = x;
@@ -63,6 +72,7 @@ class MagnetostaticSolver::System : public NonlinearSystem {
   MagnetostaticSolver& solver_;
   Eigen::VectorXd source_;  // free-dof source at the solve's currents
   Eigen::VectorXd remembered_x_, remembered_r_;
+  bool with_tangent_ = false;
 };
 
 MagnetostaticSolver::MagnetostaticSolver(cases::Problem problem, mesh::Mesh mesh,
@@ -176,15 +186,16 @@ void MagnetostaticSolver::prepare_jacobian(const Eigen::VectorXd& a_nodes) {
     factor_current_ = true;
     return;
   }
-  Eigen::VectorXd r;
+  if (!(tangent_assembled_ && a_nodes.size() == tangent_nodes_.size() &&
+        a_nodes == tangent_nodes_)) {
+    Eigen::VectorXd r;
+    assemble_residual_tangent(a_nodes, r);
+  }
   if (dofs_.constrained()) {
-    assembler_->assemble(a_nodes, r, &free_tangent_);
     const SparseMatrix reduced = reduce_tangent(free_tangent_);
     if (reduced.nonZeros() != tangent_.nonZeros())
       throw ConvergenceError("periodic reduction changed the tangent's sparsity pattern");
     std::copy(reduced.valuePtr(), reduced.valuePtr() + reduced.nonZeros(), tangent_.valuePtr());
-  } else {
-    assembler_->assemble(a_nodes, r, &tangent_);
   }
   factor_current_ = false;
   // Tangent values more than kRefactorChange away from the factorised ones: far from the
@@ -194,6 +205,14 @@ void MagnetostaticSolver::prepare_jacobian(const Eigen::VectorXd& a_nodes) {
   const bool changed = !has_factor_ || (values - factored_values_).norm() >
                                            options_.reuse.refactor_change * factored_values_.norm();
   if (changed || refactor_next_ || linear_) factorize_tangent();
+}
+
+void MagnetostaticSolver::assemble_residual_tangent(const Eigen::VectorXd& a_nodes,
+                                                    Eigen::VectorXd& r) {
+  assembler_->assemble(a_nodes, r, dofs_.constrained() ? &free_tangent_ : &tangent_);
+  tangent_nodes_ = a_nodes;
+  tangent_assembled_ = true;
+  ++assemblies_;
 }
 
 void MagnetostaticSolver::factorize_tangent() {
@@ -288,6 +307,7 @@ Solution MagnetostaticSolver::solve_with(const std::vector<double>& currents,
   const Eigen::VectorXd nodal = nodal_source(currents);
   if (dofs_.gauge_node >= 0) check_compatible(nodal);
   System system(*this, reduced_source(nodal));
+  tangent_assembled_ = false;  // an earlier solve's tangent (the mesh may have moved since)
   Eigen::VectorXd x = Eigen::VectorXd::Zero(n), r;
   const double scale = system.residual(x, r);
   // Finite currents whose load overflows (1e300 A through the turns): Newton reported "the
@@ -311,6 +331,10 @@ Solution MagnetostaticSolver::solve_with(const std::vector<double>& currents,
 
   Solution solution;
   solution.currents = currents;
+  // A warm-started incremental solve: its few steps are rarely moved by local corrections
+  // (which would waste the tangent at the iterate they move), and dlambda/dI takes the tangent at
+  // the solution. A plain solve would assemble that tangent for nothing.
+  if (incremental && initial_guess) system.assemble_tangents();
   solution.newton = newton_solve(system, x, scale, options_.newton);
   solution.a = reduced_to_nodes(x);
   for (const Eigen::VectorXd& f : sources_) solution.flux_linkage.push_back(f.dot(solution.a));

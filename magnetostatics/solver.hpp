@@ -134,6 +134,8 @@ class MagnetostaticSolver {
   Eigen::VectorXd nodes_to_free(const Eigen::VectorXd& a) const;
   /// Number of numeric factorisations done so far (symbolic analysis is done once).
   int factorizations() const { return factorizations_; }
+  /// Assemblies of the residual (with or without the tangent) done by solves so far.
+  int assemblies() const { return assemblies_; }
   /// Conjugate-gradient iterations done with a reused factorisation so far.
   int reuse_iterations() const { return reuse_iterations_; }
 
@@ -154,6 +156,8 @@ class MagnetostaticSolver {
   Eigen::VectorXd nodal_source(const std::vector<double>& currents) const;  // all nodes
   void check_compatible(const Eigen::VectorXd& nodal) const;  // InputError if net current != 0
   void prepare_jacobian(const Eigen::VectorXd& a_nodes);
+  /// R and the tangent at a_nodes (into free_tangent_ when constrained, else tangent_).
+  void assemble_residual_tangent(const Eigen::VectorXd& a_nodes, Eigen::VectorXd& r);
   void factorize_tangent();
   SparseMatrix reduce_tangent(const SparseMatrix& lower) const;      // lower(T^T K T)
   Eigen::VectorXd reduced_to_nodes(const Eigen::VectorXd& x) const;  // Newton unknowns -> nodes
@@ -174,12 +178,15 @@ class MagnetostaticSolver {
   SparseMatrix tangent_;             // the matrix Newton factorises (reduced when constrained)
   SparseMatrix free_tangent_;        // constrained: the assembled free-dof tangent
   Eigen::VectorXd factored_values_;  // values of the factorised tangent
+  Eigen::VectorXd tangent_nodes_;    // nodal A of the last assembled tangent
+  bool tangent_assembled_ = false;   // ... which is still in free_tangent_ or tangent_
   bool linear_ = true;
   bool factorized_linear_ = false;  // linear problem: the one factorisation stays valid
   bool has_factor_ = false;         // cholesky_ holds a factorisation of some tangent
   bool factor_current_ = false;     // ... of the current tangent_
   bool refactor_next_ = true;       // the last reuse was slow: factorise at the next Jacobian
   int factorizations_ = 0;
+  int assemblies_ = 0;
   int reuse_iterations_ = 0;
 };
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/SparseCholesky>
 #include <string>
 
 #include "magnetostatics/results.hpp"
@@ -34,6 +35,39 @@ TEST(Incremental, ExactIncrementalInductanceEqualsFiniteDifference) {
   std::printf("L_inc %.6e H, FD %.6e H, secant %.6e H\n", s.incremental_inductance[0], fd, secant);
   EXPECT_NEAR(s.incremental_inductance[0], fd, 1e-4 * fd);
   EXPECT_LT(s.incremental_inductance[0], 0.9 * secant);  // saturation: L_inc < L_secant
+}
+
+TEST(Incremental, EachNewtonIterateIsAssembledOnceAndItsTangentGivesTheInductance) {
+  // In a warm-started incremental solve Newton's residual at each iterate also assembles the
+  // tangent there, which the Jacobian at that iterate and the final dlambda/dI take as they are.
+  // Counted (local corrections off: they move an iterate after its residual): one assembly at
+  // A = 0 (the residual's scale), then one per iterate (the start and each full step), nothing
+  // more. A cold solve keeps a residual per step and a residual-and-tangent per Jacobian.
+  // Reference for the tangent so reused: dlambda/dI = f^T K(A)^{-1} f from the solver's public
+  // tangent at the solution (f: the source per ampere, R(A, 0) - R(A, 1 A)), by a separate
+  // sparse LDL^T: tolerance 1e-9 relative (two direct solves of the same matrix).
+  const test::PotCore core;
+  SolveOptions options = tight();
+  options.newton.local_iterations = 0;
+  MagnetostaticSolver solver(test::pot_core_problem(test::aisi1010(), 400, 3.0, 2),
+                             test::pot_core_mesh(core, 1.0, 2), options);
+  const Solution near = solver.solve({2.9});
+  int before = solver.assemblies();
+  const Solution s = solver.solve_incremental({3.0}, &near.a);
+  ASSERT_GE(s.newton.iterations, 2);
+  for (double alpha : s.newton.step_lengths) ASSERT_EQ(alpha, 1.0);
+  EXPECT_EQ(solver.assemblies() - before, 1 + (s.newton.iterations + 1));
+  before = solver.assemblies();
+  const Solution cold = solver.solve_incremental({3.0});
+  const int k = cold.newton.iterations;
+  ASSERT_GE(k, 2);
+  for (double alpha : cold.newton.step_lengths) ASSERT_EQ(alpha, 1.0);
+  EXPECT_EQ(solver.assemblies() - before, 1 + k + k + 1);
+  const Eigen::VectorXd f = solver.residual(s.a, {0.0}) - solver.residual(s.a, {1.0});
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt(solver.tangent(s.a));
+  ASSERT_EQ(ldlt.info(), Eigen::Success);
+  const double reference = f.dot(ldlt.solve(f));
+  EXPECT_NEAR(s.incremental_inductance[0], reference, 1e-9 * reference);
 }
 
 TEST(Incremental, SweepCoenergyIsTheIntegralOfFluxLinkage) {
