@@ -9,11 +9,13 @@
 #include "app/command.hpp"
 #include "case/case_file.hpp"
 #include "core/error.hpp"
+#include "core/format_text.hpp"
 #include "coupling/quasi_static_request.hpp"
 #include "coupling/step_request.hpp"
 #include "figures/transient_step.hpp"
 #include "plot/figure.hpp"
 #include "transient/from_case.hpp"
+#include "transient/quasi_static.hpp"
 #include "transient/quasi_static_report.hpp"
 #include "transient/report.hpp"
 #include "transient/vtk_series.hpp"
@@ -163,9 +165,12 @@ const bool transient_registered = app::register_command([](CLI::App& root) {
                 "effect, its error measured in docs/transient.md)");
   cmd->add_option(
          "--table-points", o->table_points,
-         "With --quasi-static: equally spaced static solves from 0 to the largest current, "
-         "before the table is refined where the inductance, the eddy-current load or a "
-         "gap's dB/dI changes by more than 20 % between neighbours (default 8)")
+         format_text("With --quasi-static: equally spaced static solves from 0 to the largest "
+                     "current; then each interval's midpoint is solved, and where the table "
+                     "before it missed the inductance, the eddy-current load, the flux linkage "
+                     "or a gap's |B| there by more than %g %% its two halves are checked in turn "
+                     "(default 8: at least 15 solves)",
+                     100.0 * transient::kQuasiStaticTableTolerance))
       ->check(rheomag::app::in_domain(rheomag::Domain::between(4.0, 10000.0).whole()));
   cmd->add_flag("--json", o->json, "Print one JSON object (SI units) instead of the summary");
   cmd->add_flag("--quiet", o->quiet, "No progress on stderr");

@@ -55,6 +55,54 @@ std::optional<double> first_crossing(const std::function<double(double)>& q, dou
   return std::nullopt;
 }
 
+/// The table's interpolants as quasi_static_step uses them, to check a new current against.
+class TableInterpolants {
+ public:
+  /// Interpolants of `table` (at least 4 currents).
+  explicit TableInterpolants(const QuasiStaticTable& table)
+      : lambda_(column(table, [](auto& p) { return p.current; }),
+                column(table, [](auto& p) { return p.flux_linkage; }),
+                column(table, [](auto& p) { return p.inductance; })),
+        inductance_(column(table, [](auto& p) { return p.current; }),
+                    column(table, [](auto& p) { return p.inductance; })),
+        eddy_load_(column(table, [](auto& p) { return p.current; }),
+                   column(table, [](auto& p) { return p.eddy_load; })) {
+    for (const QuasiStaticPoint& p : table.points)
+      lambda_scale_ = std::max(lambda_scale_, std::abs(p.flux_linkage));
+    for (std::size_t g = 0; g < table.gap_regions.size(); ++g) {
+      gap_b_.emplace_back(column(table, [](auto& p) { return p.current; }),
+                          column(table, [&](auto& p) { return p.gap_b.at(g); }),
+                          column(table, [&](auto& p) { return p.gap_b_slope.at(g); }));
+      double scale = 0.0;
+      for (const QuasiStaticPoint& p : table.points) scale = std::max(scale, std::abs(p.gap_b[g]));
+      gap_b_scale_.push_back(scale);
+    }
+  }
+
+  /// Largest relative error of the interpolants at `solved`'s current: L_d and D against their
+  /// own values, lambda and each gap's mean |B| against their largest in the table.
+  double discrepancy(const QuasiStaticPoint& solved) const {
+    const double i = solved.current;
+    auto relative = [](double predicted, double value, double scale) {
+      return scale > 0.0 ? std::abs(predicted - value) / scale : 0.0;
+    };
+    double worst =
+        std::max({relative(inductance_(i), solved.inductance, std::abs(solved.inductance)),
+                  relative(eddy_load_(i), solved.eddy_load, std::abs(solved.eddy_load)),
+                  relative(lambda_(i), solved.flux_linkage, lambda_scale_)});
+    for (std::size_t g = 0; g < gap_b_.size(); ++g)
+      worst = std::max(worst, relative(gap_b_[g](i), solved.gap_b.at(g), gap_b_scale_[g]));
+    return worst;
+  }
+
+ private:
+  Hermite lambda_;
+  Pchip inductance_, eddy_load_;
+  std::vector<Hermite> gap_b_;
+  double lambda_scale_ = 0.0;
+  std::vector<double> gap_b_scale_;
+};
+
 }  // namespace
 
 QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double high, int points) {
@@ -143,27 +191,30 @@ QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double 
                  ? Eigen::VectorXd(Eigen::VectorXd::Zero(nodes))
                  : Eigen::VectorXd(fields.back() + (currents[k] - currents[k - 1]) * slopes.back()),
              k, k == 0 ? std::nullopt : std::optional<std::size_t>(k - 1));
-  // Halve the intervals across which the coefficients change too much (a saturation knee).
-  auto changes = [](double a, double b) {
-    const double scale = std::max(std::abs(a), std::abs(b));
-    return scale > 0.0 && std::abs(a - b) > kQuasiStaticTableChange * scale;
-  };
+  // Halve every interval whose midpoint the table did not predict (a saturation knee): each
+  // unsettled interval gets its midpoint solved, and both halves settle when the table before
+  // the solve had predicted it to kQuasiStaticTableTolerance.
   const std::size_t most = 16 * static_cast<std::size_t>(points);
   const bool refine = !(earlier && reuse.fixed_grid);
-  for (bool refined = refine; refined && table.points.size() < most;) {
-    refined = false;
-    for (std::size_t k = 0; k + 1 < table.points.size() && table.points.size() < most; ++k) {
+  std::vector<bool> settled(table.points.size() - 1, !refine);
+  while (table.points.size() < most &&
+         std::find(settled.begin(), settled.end(), false) != settled.end()) {
+    const TableInterpolants before(table);
+    for (std::size_t k = 0; k < settled.size() && table.points.size() < most; ++k) {
+      if (settled[k]) continue;
       const QuasiStaticPoint &p = table.points[k], &q = table.points[k + 1];
-      bool split = changes(p.inductance, q.inductance) || changes(p.eddy_load, q.eddy_load);
-      for (std::size_t g = 0; g < p.gap_b_slope.size(); ++g)
-        split = split || changes(p.gap_b_slope[g], q.gap_b_slope[g]);
-      if (!split || q.current - p.current < 1e-6 * (high - low)) continue;
-      // Cubic Hermite midpoint of the two states and their slopes.
       const double h = q.current - p.current;
+      if (h < 1e-6 * (high - low)) {
+        settled[k] = true;
+        continue;
+      }
+      // Cubic Hermite midpoint of the two states and their slopes.
       const Eigen::VectorXd start =
           0.5 * (fields[k] + fields[k + 1]) + (h / 8.0) * (slopes[k] - slopes[k + 1]);
       solve_at(0.5 * (p.current + q.current), start, k + 1, k);
-      refined = true;
+      const bool predicted = before.discrepancy(table.points[k + 1]) <= kQuasiStaticTableTolerance;
+      settled[k] = predicted;
+      settled.insert(settled.begin() + static_cast<std::ptrdiff_t>(k + 1), predicted);
       ++k;  // the new interval's right half is looked at in the next pass
     }
   }

@@ -38,14 +38,17 @@ struct QuasiStaticTable {
   int newton_iterations = 0;     ///< of all the static solves
 };
 
-/// Relative change of L_d, D or a gap's d|B|/di_m between neighbouring currents of the table
-/// above which the interval is halved (quasi_static_table).
-inline constexpr double kQuasiStaticTableChange = 0.2;
+/// Error of the table's interpolants at a new midpoint (L_d and D relative to their values,
+/// lambda and a gap's mean |B| to their largest) up to which its two halves are settled
+/// (quasi_static_table).
+inline constexpr double kQuasiStaticTableTolerance = 0.05;
 
 /// Static states of the first circuit (the others held) from `low` to `high` [A] (low < high)
-/// on `solver`'s mesh: `points` >= 4 equally spaced currents, then every interval across which
-/// L_d, D or a gap's slope changes by more than kQuasiStaticTableChange halved, until none does
-/// or the table has 16 x `points` currents (saturation knees far below `high`). Each is a
+/// on `solver`'s mesh: `points` >= 4 equally spaced currents, then each interval's midpoint
+/// solved and checked against the table's interpolants before it; where they missed it by more
+/// than kQuasiStaticTableTolerance its two halves are checked in turn, until every interval is
+/// settled or the table has 16 x `points` currents (so at least 2 `points` - 1; saturation knees
+/// far below `high` are found). Each is a
 /// static solve started from its neighbours' states and slopes (the tangent predictor; cubic
 /// Hermite between two), with its dA/dI and its eddy-current load from
 /// `solver`'s conductivities and remedies. InputError for bad arguments; ConvergenceError when
