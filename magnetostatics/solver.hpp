@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -159,6 +160,9 @@ class MagnetostaticSolver {
   /// R and the tangent at a_nodes (into free_tangent_ when constrained, else tangent_).
   void assemble_residual_tangent(const Eigen::VectorXd& a_nodes, Eigen::VectorXd& r);
   void factorize_tangent();
+  /// The assembled residual at A = 0 without the sources (magnets, prescribed A; free dofs): no
+  /// current changes it, so it is assembled once per solver.
+  const Eigen::VectorXd& zero_field_load();
   SparseMatrix reduce_tangent(const SparseMatrix& lower) const;      // lower(T^T K T)
   Eigen::VectorXd reduced_to_nodes(const Eigen::VectorXd& x) const;  // Newton unknowns -> nodes
   Eigen::VectorXd nodes_to_reduced(const Eigen::VectorXd& a) const;
@@ -187,6 +191,7 @@ class MagnetostaticSolver {
   bool refactor_next_ = true;       // the last reuse was slow: factorise at the next Jacobian
   int factorizations_ = 0;
   int assemblies_ = 0;
+  std::optional<Eigen::VectorXd> zero_field_load_;  // zero_field_load(), once assembled
   int reuse_iterations_ = 0;
 };
 
