@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 
 #include "mesh/triangle.hpp"
 
@@ -20,13 +21,36 @@ struct CircuitCoils {
   std::vector<CoilTriangle> triangles;
   double r_max = 0.0, z_min = 0.0, z_max = 0.0;
   std::vector<std::array<double, 2>> steps;  // (z, largest r) of horizontal boundary edges
+  // Equal z slabs over z_min..z_max, each listing (in order) the triangles that reach into it.
+  std::vector<std::vector<int>> slabs;
 };
+
+/// The slab of `coils` holding height z (z_min <= z <= z_max).
+int slab_of(const CircuitCoils& coils, double z) {
+  const int n = static_cast<int>(coils.slabs.size());
+  const double h = (coils.z_max - coils.z_min) / n;
+  const int k = h > 0.0 ? static_cast<int>(std::floor((z - coils.z_min) / h)) : 0;
+  return std::clamp(k, 0, n - 1);
+}
+
+/// Lists each triangle in every slab its z range reaches, so a height's slab holds every
+/// triangle that a horizontal line at that height can cross.
+void fill_slabs(CircuitCoils& coils) {
+  coils.slabs.assign(std::clamp<std::size_t>(coils.triangles.size() / 4, 1, 4096), {});
+  for (int i = 0; i < static_cast<int>(coils.triangles.size()); ++i) {
+    const auto& v = coils.triangles[i].v;
+    const double lo = std::min({v[0].z, v[1].z, v[2].z});
+    const double hi = std::max({v[0].z, v[1].z, v[2].z});
+    for (int k = slab_of(coils, lo); k <= slab_of(coils, hi); ++k) coils.slabs[k].push_back(i);
+  }
+}
 
 /// T_z(r, z) at unit current: sum of density x length of the triangle chord at z right of r.
 double source_tz(const CircuitCoils& coils, double r, double z) {
-  if (z < coils.z_min || z > coils.z_max || r >= coils.r_max) return 0.0;
+  if (!(z >= coils.z_min && z <= coils.z_max) || r >= coils.r_max) return 0.0;
   double t = 0.0;
-  for (const CoilTriangle& tri : coils.triangles) {
+  for (const int i : coils.slabs[slab_of(coils, z)]) {
+    const CoilTriangle& tri = coils.triangles[i];
     double lo = INFINITY, hi = -INFINITY;
     for (int k = 0; k < 3; ++k) {
       const mesh::Point& p = tri.v[k];
@@ -109,10 +133,26 @@ std::vector<CircuitCoils> collect_coils(const cases::Problem& closed, const mesh
       coils[closed.regions[key[0]].circuit].steps.push_back({p.z, std::max(p.r, q.r)});
     }
   }
+  for (CircuitCoils& c : coils)
+    if (!c.triangles.empty()) fill_slabs(c);
   return coils;
 }
 
 }  // namespace
+
+std::vector<std::function<double(double, double)>> circuit_source_tz(const cases::Problem& closed,
+                                                                     const mesh::Mesh& meridian) {
+  const auto coils =
+      std::make_shared<const std::vector<CircuitCoils>>(collect_coils(closed, meridian));
+  std::vector<std::function<double(double, double)>> tz;
+  for (std::size_t c = 0; c < coils->size(); ++c) {
+    tz.emplace_back([coils, c](double r, double z) {
+      const CircuitCoils& coil = (*coils)[c];
+      return coil.triangles.empty() ? 0.0 : source_tz(coil, r, z);
+    });
+  }
+  return tz;
+}
 
 Eigen::VectorXd z_source_loads(const TetMesh& mesh, const std::vector<Eigen::Vector3d>& nodes,
                                const SourceTz& tz, double z_min, double z_max,

@@ -24,6 +24,10 @@ Eigen::VectorXd z_source_loads(const TetMesh& mesh, const std::vector<Eigen::Vec
                                const SourceTz& tz, double z_min, double z_max,
                                const std::function<bool(double, double)>& jumps);
 
+/// T_z(r, z) of every circuit at 1 A, the source field circuit_loads integrates (see there).
+std::vector<std::function<double(double, double)>> circuit_source_tz(const cases::Problem& closed,
+                                                                     const mesh::Mesh& meridian);
+
 /// Edge loads f_ce = integral T_c . curl w_e dV of every circuit c at 1 A, where T_c is a source
 /// field with curl T_c = J_c, the coil current density (turns / meridian area of each coil
 /// region, azimuthal). T_c = T_z(r, z) e_z with T_z(r, z) = sum over the circuit's coil regions
