@@ -85,14 +85,13 @@ void run(const SolveCommandOptions& o) {
       throw rheomag::InputError(o.case_path + ": --current given but the case has no circuit");
     for (Circuit& circuit : problem.circuits) circuit.current = o.currents.front();
   }
-  if (o.currents.size() > 1) {
-    if (o.three_d) throw rheomag::InputError("--3d takes one --current");
-    if (o.order) problem.order = *o.order;
-    run_currents(o, c);
-    return;
-  }
   if (o.three_d) {
     rheomag::app::run_solve_3d(o, c);
+    return;
+  }
+  if (o.currents.size() > 1) {
+    if (o.order) problem.order = *o.order;
+    run_currents(o, c);
     return;
   }
   if (o.order) problem.order = *o.order;
@@ -146,7 +145,8 @@ const bool solve_registered = rheomag::app::register_command([](CLI::App& root) 
   rheomag::app::add_quantities(
       cmd, "--current", o->currents, rheomag::QuantityKind::current,
       "Current of every circuit (default: the currents in the case); several, comma-separated, "
-      "are solved in turn on one mesh, e.g. --current 0.5,1");
+      "are solved in turn on one mesh, each warm-started (also with --3d), e.g. "
+      "--current 0.5,1");
   rheomag::app::add_quantities(
       cmd, "--sweep", o->sweep, rheomag::QuantityKind::current,
       "Also tabulate lambda(I), L(I) of the first circuit and each gap's B_avg, B_max_midline "

@@ -11,6 +11,38 @@
 #include "magnetostatics3d/solve3d.hpp"
 
 namespace rheomag::app {
+namespace {
+
+/// `solve --3d --current I1,I2,..`: `solved` (at I1) solved again at each further current on its
+/// mesh; one summary per current, or one JSON document with them under "solutions".
+void print_currents_3d(const SolveCommandOptions& o, const cases::Case& c,
+                       magnetostatics3d::Solve3dResult& solved) {
+  namespace m3 = rheomag::magnetostatics3d;
+  nlohmann::json documents = nlohmann::json::array();
+  for (std::size_t k = 0; k < o.currents.size(); ++k) {
+    if (k > 0 && !o.json) std::cerr << "3d: --current " << o.currents[k] << " A" << std::endl;
+    const m3::Results3d& results =
+        k == 0 ? solved.results : m3::solve_again_at_current_3d(solved, o.currents[k]);
+    if (o.json) {
+      nlohmann::json j = m3::results_json_3d(results);
+      j["mesh_seconds"] = k == 0 ? solved.mesh_seconds : 0.0;
+      documents.push_back(std::move(j));
+      continue;
+    }
+    if (k == 0) {
+      std::cout << "case " << c.name << " (" << o.case_path << ")\n";
+      if (!c.description.empty()) std::cout << c.description << "\n";
+    }
+    std::cout << "\n=== --current " << o.currents[k] << " A ===\n"
+              << m3::results_summary_3d(results);
+  }
+  if (o.json)
+    print_json(
+        {{"case", c.name}, {"set", o.settings}, {"currents", o.currents}, {"solutions", documents}},
+        2);
+}
+
+}  // namespace
 
 void run_solve_3d(const SolveCommandOptions& o, const cases::Case& c) {
   if (!o.sweep.empty() || o.order || !o.integrals.empty() || !o.lines.empty() || !o.ans.empty())
@@ -30,7 +62,14 @@ void run_solve_3d(const SolveCommandOptions& o, const cases::Case& c) {
                 << (e.detail.empty() ? "" : ": " + e.detail) << std::endl;
     };
   }
-  const m3::Solve3dResult solved = m3::solve_problem_3d(c.problem, m3::read_features(c), options);
+  if (o.currents.size() > 1 && (!o.vtk.empty() || !o.plot.empty()))
+    throw rheomag::InputError(
+        "--current with several values solves each in turn; --vtk and --plot take one --current");
+  m3::Solve3dResult solved = m3::solve_problem_3d(c.problem, m3::read_features(c), options);
+  if (o.currents.size() > 1) {
+    print_currents_3d(o, c, solved);
+    return;
+  }
   if (!o.vtk.empty()) m3::write_results_vtu_3d(o.vtk, solved);
   if (!o.plot.empty())
     rheomag::figures::gap_theta_figure(solved.results, c.name, 800, 700).write(o.plot, "--plot");

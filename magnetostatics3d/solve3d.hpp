@@ -97,4 +97,11 @@ Solve3dResult solve_problem_3d(const cases::Problem& problem,
                                const std::vector<Feature>& features = {},
                                const Solve3dOptions& options = {});
 
+/// Solves the model of `solved` again with `current` [A] in every circuit, on the same mesh and
+/// symbolic analysis, with the last factorisation as CG preconditioner while it serves (the
+/// options it was made with), from its last solution. Replaces solved.solution and
+/// solved.results and returns the results; their seconds are this solve's alone. Throws
+/// ConvergenceError if Newton fails.
+const Results3d& solve_again_at_current_3d(Solve3dResult& solved, double current);
+
 }  // namespace rheomag::magnetostatics3d
