@@ -65,5 +65,3 @@ void BM_Diagnose(benchmark::State& state) {
 BENCHMARK(BM_Diagnose)->Arg(20000)->Arg(5000)->Unit(benchmark::kSecond)->Iterations(1);
 
 }  // namespace
-
-BENCHMARK_MAIN();

@@ -101,5 +101,3 @@ BENCHMARK(BM_CrossValidate25mm)
     ->UseRealTime();
 
 }  // namespace
-
-BENCHMARK_MAIN();

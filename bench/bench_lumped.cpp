@@ -52,5 +52,3 @@ BENCHMARK(BM_FitBoucWenMrdamper)
     ->Iterations(1)
     ->UseRealTime()
     ->MeasureProcessCPUTime();
-
-BENCHMARK_MAIN();

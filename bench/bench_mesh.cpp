@@ -114,5 +114,3 @@ BENCHMARK(BM_ManyRegions)
     ->Iterations(1);
 
 }  // namespace
-
-BENCHMARK_MAIN();

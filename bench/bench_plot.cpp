@@ -51,5 +51,3 @@ void BM_GapProfilePng(benchmark::State& state) {
 BENCHMARK(BM_GapProfilePng)->Unit(benchmark::kMillisecond);
 
 }  // namespace
-
-BENCHMARK_MAIN();

@@ -71,5 +71,3 @@ BENCHMARK(BM_DykeSimulation)
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace
-
-BENCHMARK_MAIN();

@@ -4,7 +4,6 @@
 // structured P2 meshes refined uniformly.
 
 #include <benchmark/benchmark.h>
-#include <dlfcn.h>
 #include <sys/resource.h>
 
 #include <cstdlib>
@@ -201,25 +200,4 @@ BENCHMARK(BM_CurrentSweep21)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-/// Single-threaded OpenBLAS unless OPENBLAS_NUM_THREADS is set, and element assembly on OpenMP
-/// threads only when OMP_NUM_THREADS is set, as the rheomag program does (app/main.cpp): on a
-/// shared machine BLAS threads spin and make the solves many times slower, and a second assembly
-/// thread that does not get its core makes the assembly slower instead of faster.
-void prefer_single_threaded_blas() {
-  if (std::getenv("OMP_NUM_THREADS") != nullptr) set_assembly_threads(0);
-  if (std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;
-  using SetThreads = void (*)(int);
-  if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
-    set(1);
-}
-
 }  // namespace
-
-int main(int argc, char** argv) {
-  prefer_single_threaded_blas();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}

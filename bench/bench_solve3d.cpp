@@ -145,5 +145,3 @@ void BM_Team20Fine(benchmark::State& state) {
 BENCHMARK(BM_Team20Fine)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
 }  // namespace
-
-BENCHMARK_MAIN();

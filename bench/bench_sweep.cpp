@@ -97,5 +97,3 @@ BENCHMARK(BM_SweepGeometryValve)
     ->Unit(benchmark::kSecond);
 
 }  // namespace
-
-BENCHMARK_MAIN();

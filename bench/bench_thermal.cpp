@@ -88,5 +88,3 @@ void BM_ValveThermalResolve(benchmark::State& state) {
 BENCHMARK(BM_ValveThermalResolve)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
-
-BENCHMARK_MAIN();

@@ -120,5 +120,3 @@ BENCHMARK(BM_AnnularValveEqualSteps)
     ->Iterations(1);
 
 }  // namespace
-
-BENCHMARK_MAIN();

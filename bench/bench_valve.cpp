@@ -148,5 +148,3 @@ void BM_AnnularValveSweep21(benchmark::State& state) {
 BENCHMARK(BM_AnnularValveSweep21)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
-
-BENCHMARK_MAIN();
