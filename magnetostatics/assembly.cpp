@@ -120,6 +120,7 @@ Assembler::Assembler(const cases::Problem& problem, const mesh::Mesh& mesh, cons
   const int edge_nodes = mesh.order == 1 ? 2 : 3;
   build_node_adjacency(edge_nodes);
   build_colouring();
+  build_linear_part();
   for (const RobinEdge& edge : robin_edges_) {
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) {
@@ -214,6 +215,49 @@ bool Assembler::nonlinear() const {
                      [](const Reluctivity& l) { return l.nonlinear(); });
 }
 
+void Assembler::build_linear_part() {
+  const int elements = static_cast<int>(mesh_.triangles.size());
+  const int m = mesh_.nodes_per_triangle();
+  for (int e = 0; e < elements; ++e) linear_triangles_ += law(e).nonlinear() ? 0 : 1;
+  if (linear_triangles_ == 0) return;
+  // A linear triangle's residual is its tangent times its nodal values, at any state.
+  linear_values_.assign(static_cast<std::size_t>(pattern_.nonZeros()), 0.0);
+  std::vector<Eigen::Triplet<double, int>> prescribed;
+  ElementQuadrature q;
+  const double a_local[kMaxElementNodes] = {};
+  double r_local[kMaxElementNodes], k_local[kMaxElementNodes * kMaxElementNodes];
+  for (int e = 0; e < elements; ++e) {
+    if (law(e).nonlinear()) continue;
+    element_residual_tangent(geometry(e, q), a_local, law(e), r_local, k_local);
+    const int* offsets = &element_offsets_[static_cast<std::size_t>(e) * m * m];
+    for (int k = 0; k < m * m; ++k) {
+      if (offsets[k] >= 0) linear_values_[offsets[k]] += k_local[k];
+    }
+    const auto& t = mesh_.triangles[e];
+    for (int i = 0; i < m; ++i) {
+      const int row = dofs_.dof_of_node[t[i]];
+      if (row < 0) continue;
+      for (int j = 0; j < m; ++j) {
+        if (dofs_.dof_of_node[t[j]] < 0) prescribed.emplace_back(row, t[j], k_local[i * m + j]);
+      }
+    }
+  }
+  linear_prescribed_.resize(dofs_.free_count(), static_cast<int>(mesh_.nodes.size()));
+  linear_prescribed_.setFromTriplets(prescribed.begin(), prescribed.end());
+}
+
+void Assembler::add_linear_part(const Eigen::VectorXd& a, Eigen::VectorXd& residual,
+                                double* values) const {
+  const int n = dofs_.free_count();
+  const Eigen::Map<const SparseMatrix> k(n, n, pattern_.nonZeros(), pattern_.outerIndexPtr(),
+                                         pattern_.innerIndexPtr(), linear_values_.data());
+  Eigen::VectorXd a_free(n);
+  for (int d = 0; d < n; ++d) a_free[d] = a[dofs_.node_of_dof[d]];
+  residual.noalias() += k.selfadjointView<Eigen::Lower>() * a_free;
+  residual.noalias() += linear_prescribed_ * a;
+  if (values) std::copy(linear_values_.begin(), linear_values_.end(), values);
+}
+
 void Assembler::assemble(const Eigen::VectorXd& a, Eigen::VectorXd& residual, SparseMatrix* tangent,
                          ElementSet set) const {
   residual.setZero(dofs_.free_count());
@@ -221,11 +265,16 @@ void Assembler::assemble(const Eigen::VectorXd& a, Eigen::VectorXd& residual, Sp
   const int elements = static_cast<int>(mesh_.triangles.size());
   double* values = tangent ? tangent->valuePtr() : nullptr;
   const std::ptrdiff_t nonzeros = tangent ? tangent->nonZeros() : 0;
+  // The linear triangles come from their kept matrix; only the nonlinear ones are visited.
+  const bool kept = linear_triangles_ > 0 && set != ElementSet::nonlinear;
+  if (kept) add_linear_part(a, residual, values);
   const int team = assembly_team(elements, kChunkElements);
 #pragma omp parallel num_threads(team) if (team > 1)
   {
+    if (!kept) {
 #pragma omp for schedule(static)
-    for (std::ptrdiff_t k = 0; k < nonzeros; ++k) values[k] = 0.0;
+      for (std::ptrdiff_t k = 0; k < nonzeros; ++k) values[k] = 0.0;
+    }
     ElementQuadrature q;
     double a_local[kMaxElementNodes], r_local[kMaxElementNodes];
     double k_local[kMaxElementNodes * kMaxElementNodes];
@@ -234,7 +283,9 @@ void Assembler::assemble(const Eigen::VectorXd& a, Eigen::VectorXd& residual, Sp
 #pragma omp for schedule(dynamic, 1)
       for (std::size_t c = 0; c < chunks.size(); ++c) {
         for_chunk_elements(chunks[c], [&](int e) {
-          if (set != ElementSet::all && law(e).nonlinear() != (set == ElementSet::nonlinear))
+          const bool nonlinear = law(e).nonlinear();
+          if ((kept && !nonlinear) || (set == ElementSet::linear && nonlinear) ||
+              (set == ElementSet::nonlinear && !nonlinear))
             return;
           const auto& t = mesh_.triangles[e];
           for (int i = 0; i < m; ++i) a_local[i] = a[t[i]];

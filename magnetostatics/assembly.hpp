@@ -44,7 +44,9 @@ struct Patch {
 /// consecutive triangles, chunks sharing no free dof get one colour, and the chunks of a colour
 /// are assembled in parallel, colour after colour (see set_assembly_threads). Every matrix and
 /// residual entry thus receives its contributions in the same order for any number of threads
-/// (bitwise the same result).
+/// (bitwise the same result). The triangles without a B-H curve are assembled once, in the
+/// constructor: later assemblies start from their matrix (residual by a sparse product) and
+/// visit only the nonlinear triangles (equal to a full assembly to rounding).
 class Assembler {
  public:
   /// Checks that every triangle's region has a material (InputError otherwise).
@@ -101,6 +103,8 @@ class Assembler {
   SparseMatrix region_matrix(const std::vector<double>& region_coefficient, bool curl) const;
   /// True when some material has a B-H curve.
   bool nonlinear() const;
+  /// Number of triangles whose law is linear (kept assembled from the constructor on).
+  int linear_triangles() const { return linear_triangles_; }
 
  private:
   struct RobinEdge {
@@ -121,6 +125,9 @@ class Assembler {
   int matrix_offset(int row, int col) const;  // position in pattern_ values, -1 if not stored
   // Triangle e's quadrature: the cached one, or computed into `scratch`.
   const ElementQuadrature& geometry(int e, ElementQuadrature& scratch) const;
+  void build_linear_part();  // linear_values_ and linear_prescribed_ from the linear triangles
+  // Residual and (when `values` is not null) tangent values of the linear triangles at `a`.
+  void add_linear_part(const Eigen::VectorXd& a, Eigen::VectorXd& residual, double* values) const;
 
   const cases::Problem& problem_;
   const mesh::Mesh& mesh_;
@@ -137,6 +144,11 @@ class Assembler {
   static constexpr int kChunkElements = 256;             // triangles per assembly chunk
   std::vector<std::vector<int>> colour_chunks_;          // chunks of each colour, ascending
   std::vector<ElementQuadrature> geometry_;  // per triangle (empty above kMaxCachedElements)
+  // The linear triangles' part: tangent values on pattern_ (free-free couplings) and the
+  // couplings of free rows to prescribed nodes (free dofs x nodes, prescribed columns only).
+  int linear_triangles_ = 0;
+  std::vector<double> linear_values_;
+  Eigen::SparseMatrix<double, Eigen::RowMajor, int> linear_prescribed_;
 };
 
 }  // namespace rheomag::magnetostatics
