@@ -296,7 +296,7 @@ Solution MagnetostaticSolver::solve(const std::vector<double>& currents,
 
 Solution MagnetostaticSolver::solve_incremental(const std::vector<double>& currents,
                                                 const Eigen::VectorXd* initial_guess) {
-  return solve_with(currents, initial_guess, true);
+  return solve_with(currents, initial_guess, true, initial_guess == nullptr);
 }
 
 const Eigen::VectorXd& MagnetostaticSolver::zero_field_load() {
@@ -312,7 +312,8 @@ const Eigen::VectorXd& MagnetostaticSolver::zero_field_load() {
 }
 
 Solution MagnetostaticSolver::solve_with(const std::vector<double>& currents,
-                                         const Eigen::VectorXd* initial_guess, bool incremental) {
+                                         const Eigen::VectorXd* initial_guess, bool incremental,
+                                         bool local_corrections) {
   const auto start = std::chrono::steady_clock::now();
   if (currents.size() != problem_.circuits.size()) {
     throw InputError(std::to_string(currents.size()) + " current(s) given for " +
@@ -349,11 +350,14 @@ Solution MagnetostaticSolver::solve_with(const std::vector<double>& currents,
 
   Solution solution;
   solution.currents = currents;
-  // A warm-started incremental solve: its few steps are rarely moved by local corrections
-  // (which would waste the tangent at the iterate they move), and dlambda/dI takes the tangent at
-  // the solution. A plain solve would assemble that tangent for nothing.
+  // A warm-started incremental solve (sweeps, quasi-static tables): its few steps are rarely
+  // moved by local corrections (which would waste the tangent at the iterate they move), and
+  // dlambda/dI takes the tangent at the solution. A plain solve would assemble that tangent for
+  // nothing.
   if (incremental && initial_guess) system.assemble_tangents();
-  solution.newton = newton_solve(system, x, scale, options_.newton);
+  NewtonOptions newton = options_.newton;
+  if (!local_corrections) newton.local_iterations = 0;
+  solution.newton = newton_solve(system, x, scale, newton);
   solution.a = reduced_to_nodes(x);
   for (const Eigen::VectorXd& f : sources_) solution.flux_linkage.push_back(f.dot(solution.a));
   if (incremental && n > 0) {

@@ -98,7 +98,9 @@ class MagnetostaticSolver {
   Solution solve(const std::vector<double>& currents,
                  const Eigen::VectorXd* initial_guess = nullptr);
   /// As solve(currents, initial_guess), with the incremental inductance and field whatever
-  /// SolveOptions::incremental_inductance says.
+  /// SolveOptions::incremental_inductance says, and, when warm started, without local
+  /// corrections: from a nearby state (the quasi-static table's tangent predictions) they rarely
+  /// pay and cost more than they save (docs/performance.md, round 8).
   Solution solve_incremental(const std::vector<double>& currents,
                              const Eigen::VectorXd* initial_guess = nullptr);
   /// Solves with the currents of Problem::circuits.
@@ -153,7 +155,7 @@ class MagnetostaticSolver {
  private:
   class System;
   Solution solve_with(const std::vector<double>& currents, const Eigen::VectorXd* initial_guess,
-                      bool incremental);
+                      bool incremental, bool local_corrections = true);
   Eigen::VectorXd nodal_source(const std::vector<double>& currents) const;  // all nodes
   void check_compatible(const Eigen::VectorXd& nodal) const;  // InputError if net current != 0
   void prepare_jacobian(const Eigen::VectorXd& a_nodes);

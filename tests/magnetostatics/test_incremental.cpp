@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/SparseCholesky>
+#include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "magnetostatics/results.hpp"
@@ -76,6 +78,35 @@ TEST(Incremental, EachNewtonIterateIsAssembledOnceAndItsTangentGivesTheInductanc
   ASSERT_EQ(ldlt.info(), Eigen::Success);
   const double reference = f.dot(ldlt.solve(f));
   EXPECT_NEAR(s.incremental_inductance[0], reference, 1e-9 * reference);
+}
+
+TEST(Incremental, AWarmStartedIncrementalSolveTakesNoLocalCorrections) {
+  // A warm-started solve_incremental (the quasi-static table's solves, an optimiser's
+  // neighbours) skips the local corrections a plain solve makes: from a nearby state they rarely
+  // pay and would waste the tangent its residual assembles. A plain solve from the same start
+  // takes local steps here, so the skip is what the counts show: no local step, and one assembly
+  // per residual the line searches tried plus the start. Reference for the solution: the plain
+  // solve's, within Newton's tolerance (|R| / |R(0)| < 1e-11 for both: fields within 1e-9 of the
+  // largest |A|).
+  const test::PotCore core;
+  MagnetostaticSolver solver(test::pot_core_problem(test::aisi1010(), 400, 3.0, 2),
+                             test::pot_core_mesh(core, 1.0, 2), tight());
+  const Solution low = solver.solve({1.0});
+  const Solution plain = solver.solve({3.0}, &low.a);
+  ASSERT_GT(plain.newton.local_steps, 0)
+      << "this start needs no local step: the test shows nothing";
+  const int before = solver.assemblies();
+  const Solution warm = solver.solve_incremental({3.0}, &low.a);
+  EXPECT_EQ(warm.newton.local_steps, 0);
+  int trials = 0;  // residuals the line searches assembled: one per step length tried
+  for (double alpha : warm.newton.step_lengths) trials += 1 + std::lround(-std::log2(alpha));
+  EXPECT_EQ(solver.assemblies() - before, trials + 1);
+  const double difference =
+      (warm.a - plain.a).cwiseAbs().maxCoeff() / plain.a.cwiseAbs().maxCoeff();
+  std::printf("Newton steps: plain %d (%d local), warm incremental %d; field difference %.2e\n",
+              plain.newton.iterations, plain.newton.local_steps, warm.newton.iterations,
+              difference);
+  EXPECT_LT(difference, 1e-9);
 }
 
 TEST(Incremental, SweepCoenergyIsTheIntegralOfFluxLinkage) {
