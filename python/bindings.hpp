@@ -27,6 +27,9 @@ void bind_solution(py::module_& m);
 /// Adds the steady chain and the transient: Case.valve, Case.damper, Case.brake, Case.transient.
 void bind_chain(py::class_<CaseHandle>& case_class);
 
+/// Adds Case.solve_3d: the case revolved about z and solved in 3D (magnetostatics3d).
+void bind_solve_3d(py::class_<CaseHandle>& case_class);
+
 /// Adds Recording and fit, fit_family, simulate, diagnose.
 void bind_identify(py::module_& m);
 

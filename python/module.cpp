@@ -30,5 +30,6 @@ PYBIND11_MODULE(_rheomag, m) {
   rheomag::python::bind_solution(m);
   auto case_class = rheomag::python::bind_case(m);
   rheomag::python::bind_chain(case_class);
+  rheomag::python::bind_solve_3d(case_class);
   rheomag::python::bind_identify(m);
 }
