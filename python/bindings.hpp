@@ -8,6 +8,7 @@
 #include <pybind11/stl.h>
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,10 @@ void bind_solution(py::module_& m);
 
 /// Adds the steady chain and the transient: Case.valve, Case.damper, Case.brake, Case.transient.
 void bind_chain(py::class_<CaseHandle>& case_class);
+
+/// The case's problem with every circuit at `current` [A] when given (InputError for a
+/// non-finite current or a case without circuits), else as the case has it.
+cases::Problem problem_at_current(const CaseHandle& h, std::optional<double> current);
 
 /// Adds Case.solve_3d: the case revolved about z and solved in 3D (magnetostatics3d).
 void bind_solve_3d(py::class_<CaseHandle>& case_class);

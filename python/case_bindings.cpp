@@ -58,13 +58,7 @@ CaseHandle with_edits(const CaseHandle& base, const py::dict& edits) {
 }
 
 SolutionHandle solve(const CaseHandle& h, std::optional<double> current) {
-  cases::Problem problem = h.c->problem;
-  if (current) {
-    if (!std::isfinite(*current)) throw InputError("current: expected a finite current in A");
-    if (problem.circuits.empty())
-      throw InputError(h.path + ": current given but the case has no circuit");
-    for (cases::Circuit& circuit : problem.circuits) circuit.current = *current;
-  }
+  const cases::Problem problem = problem_at_current(h, current);
   py::gil_scoped_release release;
   return {
       std::make_shared<const magnetostatics::SolveResult>(magnetostatics::solve_problem(problem)),
@@ -72,6 +66,17 @@ SolutionHandle solve(const CaseHandle& h, std::optional<double> current) {
 }
 
 }  // namespace
+
+cases::Problem problem_at_current(const CaseHandle& h, std::optional<double> current) {
+  cases::Problem problem = h.c->problem;
+  if (current) {
+    if (!std::isfinite(*current)) throw InputError("current: expected a finite current in A");
+    if (problem.circuits.empty())
+      throw InputError(h.path + ": current given but the case has no circuit");
+    for (cases::Circuit& circuit : problem.circuits) circuit.current = *current;
+  }
+  return problem;
+}
 
 py::class_<CaseHandle> bind_case(py::module_& m) {
   return py::class_<CaseHandle>(

@@ -1,7 +1,6 @@
 // Python: Case.solve_3d — the case revolved about z (with its [[feature]] cuts) and solved in 3D,
 // the dict of `rheomag solve CASE --3d --json`, built by the same library functions.
 
-#include <cmath>
 #include <optional>
 #include <string>
 
@@ -22,13 +21,7 @@ py::object solve_3d(const CaseHandle& h, std::optional<double> current, const st
                     const std::string& linear_solver, bool full,
                     const std::optional<std::string>& max_memory, const std::string& vtk,
                     const py::object& progress) {
-  cases::Problem problem = h.c->problem;
-  if (current) {
-    if (!std::isfinite(*current)) throw InputError("current: expected a finite current in A");
-    if (problem.circuits.empty())
-      throw InputError(h.path + ": current given but the case has no circuit");
-    for (cases::Circuit& circuit : problem.circuits) circuit.current = *current;
-  }
+  const cases::Problem problem = problem_at_current(h, current);
   const m3::Mesher3d kind = m3::kMesher3dNames.parse(mesher, "mesher");
   m3::Solve3dOptions options =
       kind == m3::Mesher3d::swept ? m3::swept_options() : m3::Solve3dOptions{};
