@@ -34,6 +34,7 @@ class MagnetostaticSolver::System : public NonlinearSystem {
     }
     if (solver_.dofs_.constrained()) r = solver_.dofs_.reduce(r);
     r -= source_;
+    remember(x, r);
     return r.norm();
   }
   /// R(0), the residual with no field, from the solver's cached assembly at A = 0.
@@ -62,7 +63,8 @@ class MagnetostaticSolver::System : public NonlinearSystem {
   /// same x then takes as it is (Newton's accepted iterate and the solution of an incremental
   /// solve: one assembly less each; wasted where local corrections move the iterate).
   void assemble_tangents() { with_tangent_ = !solver_.linear_; }
-  /// Keeps R(x) for a later residual call at the same x (one assembly less).
+  /// Keeps R(x) for a later residual call at the same x (one assembly less); the last residual
+  /// evaluated is kept too.
   void remember(const Eigen::VectorXd& x, const Eigen::VectorXd& r) {
     remembered_x_ = x;
     remembered_r_ = r;
@@ -276,6 +278,23 @@ Eigen::VectorXd MagnetostaticSolver::residual(const Eigen::VectorXd& a,
   return r;
 }
 
+Eigen::VectorXd MagnetostaticSolver::residual(const Eigen::VectorXd& a,
+                                              const std::vector<double>& currents,
+                                              SparseMatrix& tangent) const {
+  tangent = assembler_->pattern();
+  Eigen::VectorXd r;
+  assembler_->assemble(a, r, &tangent);
+  const Eigen::VectorXd f = nodal_source(currents);
+  for (int d = 0; d < dofs_.free_count(); ++d) r[d] -= f[dofs_.node_of_dof[d]];
+  return r;
+}
+
+std::shared_ptr<const FrozenFactor> MagnetostaticSolver::freeze_tangent_factor() {
+  if (dofs_.reduced_count() == 0 || !tangent_assembled_) return nullptr;
+  if (!factor_current_) factorize_tangent();
+  return std::make_shared<const FrozenFactor>(*cholesky_.factor());
+}
+
 SparseMatrix MagnetostaticSolver::tangent(const Eigen::VectorXd& a) const {
   SparseMatrix k = assembler_->pattern();
   Eigen::VectorXd r;
@@ -361,6 +380,7 @@ Solution MagnetostaticSolver::solve_with(const std::vector<double>& currents,
   solution.a = reduced_to_nodes(x);
   for (const Eigen::VectorXd& f : sources_) solution.flux_linkage.push_back(f.dot(solution.a));
   if (incremental && n > 0) {
+    system.residual(x, solution.residual);  // Newton's last evaluation: no assembly
     // dlambda_c/dI_c = F_c^T K_t^{-1} F_c with K_t the exact tangent at the solution, to 1e-12
     // relative (CG's error of F.x, r.K^-1.r, below 1e-12 F.x, or a residual below 1e-12).
     prepare_jacobian(solution.a);

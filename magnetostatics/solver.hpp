@@ -13,6 +13,7 @@
 #include "case/problem.hpp"
 #include "magnetostatics/assembly.hpp"
 #include "magnetostatics/dof_map.hpp"
+#include "magnetostatics/frozen_factor.hpp"
 #include "magnetostatics/newton.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/mesher.hpp"
@@ -54,6 +55,8 @@ struct Solution {
   /// Per circuit dA/dI at the reduced dofs [Wb/(m A)] (K_t^-1 F, the solve behind
   /// incremental_inductance; free dofs when no periodic pair is constrained), if requested.
   std::vector<Eigen::VectorXd> incremental_field;
+  /// R(A) at the solution over the reduced dofs, what Newton left (incremental solves only).
+  Eigen::VectorXd residual;
   double seconds = 0.0;  ///< wall time of the solve
 };
 
@@ -110,6 +113,11 @@ class MagnetostaticSolver {
   /// `each`, when given, is called with every point's solution and row (e.g. to add its gaps).
   std::vector<SweepPoint> sweep(int circuit, const std::vector<double>& currents,
                                 const std::function<void(const Solution&, SweepPoint&)>& each = {});
+  /// A copy of the factorisation of the tangent at the last incremental solve's solution (the
+  /// one behind its dlambda/dI; factorised now when that was solved with an older factor), to
+  /// solve nearby systems with after this solver has moved on. Null when there is none: no solve
+  /// since the tangent was last assembled elsewhere, or no unknowns.
+  std::shared_ptr<const FrozenFactor> freeze_tangent_factor();
   /// Drops the numeric factorisation but keeps the symbolic analysis: the next solve gives
   /// bitwise what a newly constructed solver of the same problem and mesh would give.
   void discard_factorisation();
@@ -129,6 +137,10 @@ class MagnetostaticSolver {
   bool flux_linkage_gauge_free(int c) const;
   /// Residual R(A) over the free dofs for nodal A and currents (for tests and diagnostics).
   Eigen::VectorXd residual(const Eigen::VectorXd& a, const std::vector<double>& currents) const;
+  /// R(A) as above and, in the same assembly, the lower-triangular exact tangent dR/dA (free
+  /// dofs) into `tangent`.
+  Eigen::VectorXd residual(const Eigen::VectorXd& a, const std::vector<double>& currents,
+                           SparseMatrix& tangent) const;
   /// Lower-triangular exact tangent dR/dA (free dofs) at nodal A.
   SparseMatrix tangent(const Eigen::VectorXd& a) const;
   /// Nodal values of A from the free dofs `x` (prescribed values at the other nodes).
@@ -180,7 +192,7 @@ class MagnetostaticSolver {
   std::unique_ptr<Assembler> assembler_;
   std::vector<Eigen::VectorXd> sources_;
   Eigen::VectorXd fixed_source_;  // all nodes
-  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholesky_;
+  SupernodalCholesky cholesky_;
   SparseMatrix tangent_;             // the matrix Newton factorises (reduced when constrained)
   SparseMatrix free_tangent_;        // constrained: the assembled free-dof tangent
   Eigen::VectorXd factored_values_;  // values of the factorised tangent

@@ -5,8 +5,10 @@
 #include <Eigen/SparseCholesky>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
 
+#include "core/error.hpp"
 #include "magnetostatics/results.hpp"
 #include "magnetostatics/solver.hpp"
 #include "tests/magnetostatics/pot_core.hpp"
@@ -107,6 +109,37 @@ TEST(Incremental, AWarmStartedIncrementalSolveTakesNoLocalCorrections) {
               plain.newton.iterations, plain.newton.local_steps, warm.newton.iterations,
               difference);
   EXPECT_LT(difference, 1e-9);
+}
+
+TEST(Incremental, AFrozenFactorSolvesWithTheTangentAtTheSolutionAfterTheSolverMovedOn) {
+  // freeze_tangent_factor() copies the factorisation of the tangent at an incremental solve's
+  // solution (the one behind dlambda/dI). Reference: that tangent, assembled again at the
+  // solution: K x = b to 1e-10 relative, also after the solver has factorised other tangents,
+  // and x = dA/dI for b = F. Solution::residual is R(A) at the solution: the residual assembled
+  // there, to 1e-12 of |R(0)|, and within Newton's tolerance.
+  const test::PotCore core;
+  MagnetostaticSolver solver(test::pot_core_problem(test::aisi1010(), 400, 3.0, 2),
+                             test::pot_core_mesh(core, 1.0, 2), tight());
+  const Solution low = solver.solve({1.0});
+  const Solution s = solver.solve_incremental({3.0}, &low.a);
+  const std::shared_ptr<const FrozenFactor> frozen = solver.freeze_tangent_factor();
+  ASSERT_TRUE(frozen);
+  ASSERT_EQ(frozen->size(), solver.dofs().free_count());
+  EXPECT_GT(frozen->bytes(), 0u);
+  solver.solve_incremental({0.5}, &low.a);  // the solver's own factor moves on
+  const SparseMatrix k = solver.tangent(s.a);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(frozen->size(), 1.0, 2.0);
+  const Eigen::VectorXd x = frozen->solve(b);
+  EXPECT_LT((k.selfadjointView<Eigen::Lower>() * x - b).norm(), 1e-10 * b.norm());
+  const Eigen::VectorXd f = solver.nodes_to_free(solver.circuit_source(0));
+  EXPECT_LT((frozen->solve(f) - s.incremental_field.at(0)).norm(),
+            1e-8 * s.incremental_field.at(0).norm());
+  const Eigen::VectorXd r = solver.residual(s.a, {3.0});
+  const double scale = solver.residual(Eigen::VectorXd::Zero(s.a.size()), {3.0}).norm();
+  ASSERT_EQ(s.residual.size(), r.size());
+  EXPECT_LT((s.residual - r).norm(), 1e-12 * scale);
+  EXPECT_LE(s.residual.norm(), tight().newton.relative_tolerance * scale);
+  EXPECT_THROW(frozen->solve(Eigen::VectorXd::Ones(3)), ConvergenceError);
 }
 
 TEST(Incremental, SweepCoenergyIsTheIntegralOfFluxLinkage) {
