@@ -14,8 +14,12 @@
 // into saturating steel); its error against the full transient is measured in the tests and
 // docs/transient.md.
 
+#include <cstddef>
+#include <memory>
 #include <optional>
 #include <vector>
+
+#include "magnetostatics/frozen_factor.hpp"
 
 #include "transient/transient_solver.hpp"
 
@@ -36,6 +40,7 @@ struct QuasiStaticTable {
   std::vector<QuasiStaticPoint> points;
   std::vector<int> gap_regions;  ///< problem regions of the gaps, as in TransientResult::gaps
   int newton_iterations = 0;     ///< of all the static solves
+  int linearised = 0;            ///< states found by QuasiStaticReuse::linearise, without Newton
 };
 
 /// Error of the table's interpolants at a new midpoint (L_d and D relative to their values,
@@ -62,6 +67,11 @@ struct QuasiStaticStart {
   std::vector<double> currents;         ///< its current [A]
   std::vector<Eigen::VectorXd> fields;  ///< its nodal A [Wb/m]
   std::vector<Eigen::VectorXd> slopes;  ///< its nodal dA/di_m [Wb/(m A)]
+  /// The factorisation of the tangent at each state (QuasiStaticReuse::keep_factor_bytes; null
+  /// beyond the budget), else empty.
+  std::vector<std::shared_ptr<const magnetostatics::FrozenFactor>> factors;
+  /// With factors: the residual R(A) Newton left at each state (free dofs).
+  std::vector<Eigen::VectorXd> residuals;
 };
 
 /// How quasi_static_table reuses an earlier design's table.
@@ -75,7 +85,17 @@ struct QuasiStaticReuse {
   /// of the design that built `start`: both tables then have the same grid, so their difference
   /// is smooth in the design.
   bool fixed_grid = false;
+  /// With `start` on its fixed grid: each state whose earlier state kept its factorisation is
+  /// linearised about it, without Newton: chord steps with the earlier tangent's factorisation to
+  /// Newton's tolerance, and dA/di_m of this design, both to second order in the designs'
+  /// difference (the table a finite-difference neighbour needs; docs/transient.md, "Linearised
+  /// neighbours"). A state whose chord steps do not converge in 4 is solved by Newton from them.
+  bool linearise = false;
   QuasiStaticStart* keep = nullptr;  ///< when given, filled with this table's states
+  /// With `keep`: also keep each state's tangent factorisation, in the order the states are
+  /// solved (the starting currents from the lowest, then the midpoints), while they hold at most
+  /// this many bytes in all (0: none).
+  std::size_t keep_factor_bytes = 0;
 };
 
 /// quasi_static_table(solver, low, high, points) reusing an earlier design's states as `reuse`

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <limits>
 #include <numbers>
+#include <tuple>
 #include <vector>
 
 #include "core/constants.hpp"
@@ -237,6 +238,105 @@ TEST(QuasiStaticResponse, FiniteDifferenceNeighboursOnTheCentresGridAreSmooth) {
   std::printf("dt90/dturns: %.6g s (h = 1 %%), %.6g s (h = 0.5 %%)\n", slope[0], slope[1]);
   EXPECT_NEAR(slope[1] / slope[0], 1.0, 0.01);
   EXPECT_NEAR(step_on_t90(up) / step_on_t90(saturating_table(turns * 1.01, 24)), 1.0, 0.005);
+}
+
+/// The saturating cylinder's table at `turns` and radius `radius` [m] (the mesh moved with the
+/// radius, its nodes kept: an optimiser's morphed mesh) on 24 cells, 8 starting currents, Newton
+/// to the relative residual `tolerance`.
+transient::QuasiStaticTable cylinder_table(double turns, double radius,
+                                           const transient::QuasiStaticReuse& reuse = {},
+                                           double tolerance = 1e-8) {
+  test::Cylinder c;
+  c.sigma = 5e4;
+  c.turns = turns;
+  c.a = radius;
+  magnetostatics::SolveOptions options;
+  options.newton.relative_tolerance = tolerance;
+  magnetostatics::MagnetostaticSolver statics(c.problem(test::kSaturatingBh), c.mesh(24), options);
+  transient::TransientSolver solver(statics, transient::eddy_coefficients(statics.problem(), {}));
+  return transient::quasi_static_table(solver, 0.0, 20.0, 8, reuse);
+}
+
+// Linearised finite-difference neighbours (QuasiStaticReuse::linearise) at the optimiser's
+// default step (0.1 %) in the turns and in the radius (the mesh morphed), and at 0.01 %.
+// Reference: the neighbour's difference from the centre with both solved by Newton to a 1e-10
+// relative residual. Each point's change of lambda, L_d and D (where it is at least 1 % of the
+// step) is within 1 % of it, no worse than from two Newton tables at the default tolerance
+// (1e-8), and so is dt90's. No Newton step is taken. With a memory budget for the factorisations
+// only the states that kept theirs are linearised. A centre 20 % away does not contract: those
+// states are solved by Newton and match the Newton table to its tolerance (1e-6).
+TEST(QuasiStaticResponse, LinearisedNeighboursMatchNewtonsToSecondOrder) {
+  const double turns = 10.0, radius = 0.01;
+  transient::QuasiStaticStart centre, centre_exact;
+  const auto at_centre =
+      cylinder_table(turns, radius, {.keep = &centre, .keep_factor_bytes = std::size_t{1} << 30});
+  const auto at_centre_exact = cylinder_table(turns, radius, {.keep = &centre_exact}, 1e-10);
+  ASSERT_EQ(at_centre_exact.points.size(), at_centre.points.size());
+  ASSERT_EQ(centre.factors.size(), at_centre.points.size());
+  for (const auto& f : centre.factors) ASSERT_TRUE(f);
+  const transient::QuasiStaticReuse newton{.start = &centre, .fixed_grid = true};
+  const transient::QuasiStaticReuse linear{.start = &centre, .fixed_grid = true, .linearise = true};
+  const transient::QuasiStaticReuse exact{.start = &centre_exact, .fixed_grid = true};
+  for (const auto& [t, r, h] :
+       {std::tuple{turns * 1.001, radius, 1e-3}, std::tuple{turns, radius * 1.001, 1e-3},
+        std::tuple{turns, radius * 1.0001, 1e-4}}) {
+    const auto solved = cylinder_table(t, r, newton);
+    const auto linearised = cylinder_table(t, r, linear);
+    const auto reference = cylinder_table(t, r, exact, 1e-10);
+    ASSERT_EQ(linearised.points.size(), at_centre.points.size());
+    EXPECT_EQ(linearised.linearised, static_cast<int>(at_centre.points.size()));
+    EXPECT_EQ(linearised.newton_iterations, 0);
+    double worst = 0.0, worst_newton = 0.0;
+    auto check = [&](auto of, const char* what) {
+      for (std::size_t k = 0; k < at_centre.points.size(); ++k) {
+        const double change = of(reference.points[k]) - of(at_centre_exact.points[k]);
+        if (change == 0.0 || std::abs(change) < 0.01 * h * std::abs(of(reference.points[k])))
+          continue;
+        const double error = std::abs(of(linearised.points[k]) - of(at_centre.points[k]) - change) /
+                             std::abs(change);
+        const double newton_error =
+            std::abs(of(solved.points[k]) - of(at_centre.points[k]) - change) / std::abs(change);
+        worst = std::max(worst, error);
+        worst_newton = std::max(worst_newton, newton_error);
+        EXPECT_LE(error, std::max(0.01, newton_error)) << what << " at point " << k;
+      }
+    };
+    check([](const transient::QuasiStaticPoint& p) { return p.flux_linkage; }, "lambda");
+    check([](const transient::QuasiStaticPoint& p) { return p.inductance; }, "L_d");
+    check([](const transient::QuasiStaticPoint& p) { return p.eddy_load; }, "D");
+    const double dt = step_on_t90(reference) - step_on_t90(at_centre_exact);
+    const double dt_linearised = step_on_t90(linearised) - step_on_t90(at_centre);
+    const double dt_newton = step_on_t90(solved) - step_on_t90(at_centre);
+    std::printf(
+        "turns %g, radius %g mm: worst error of a change: linearised %.3g, Newton %.3g; dt90 "
+        "%.6g s, linearised %.6g s, Newton %.6g s\n",
+        t, r * 1e3, worst, worst_newton, dt, dt_linearised, dt_newton);
+    EXPECT_NEAR(dt_linearised / dt, 1.0, std::max(0.01, std::abs(dt_newton / dt - 1.0)));
+  }
+  // A budget of about 3 states' factorisations: the first states solved (the lowest starting
+  // currents) keep theirs and are linearised, the others are solved by Newton.
+  transient::QuasiStaticStart budgeted;
+  cylinder_table(turns, radius,
+                 {.keep = &budgeted, .keep_factor_bytes = 3 * centre.factors[1]->bytes()});
+  ASSERT_EQ(budgeted.factors.size(), at_centre.points.size());
+  int kept = 0;
+  for (const auto& f : budgeted.factors) kept += f != nullptr;
+  EXPECT_TRUE(budgeted.factors.front() && !budgeted.factors.back());
+  EXPECT_GE(kept, 2);
+  EXPECT_LE(kept, 4);
+  const auto partly = cylinder_table(turns * 1.001, radius,
+                                     {.start = &budgeted, .fixed_grid = true, .linearise = true});
+  EXPECT_EQ(partly.linearised, kept);
+  const auto far = cylinder_table(turns * 1.2, radius, linear);
+  const auto far_newton = cylinder_table(turns * 1.2, radius, newton);
+  std::printf("20 %% away: %d of %zu states linearised\n", far.linearised, far.points.size());
+  EXPECT_LT(far.linearised, static_cast<int>(far.points.size()));
+  for (std::size_t k = 0; k < far.points.size(); ++k) {
+    EXPECT_NEAR(far.points[k].flux_linkage, far_newton.points[k].flux_linkage,
+                1e-6 * std::abs(far_newton.points[k].flux_linkage));
+    EXPECT_NEAR(far.points[k].inductance, far_newton.points[k].inductance,
+                1e-6 * far_newton.points[k].inductance);
+  }
 }
 
 // Reference: the table from 128 equal starting currents (each of their intervals is checked too,
