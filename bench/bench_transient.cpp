@@ -6,6 +6,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cstddef>
 #include <memory>
 
 #include "case/case_file.hpp"
@@ -88,19 +89,26 @@ void BM_AnnularValveQuasiStatic(benchmark::State& state) {
 }
 
 // An optimiser's finite-difference neighbour: the table over a range 0.1 % wider (a design whose
-// V / R moved), cold (/0) or on the centre's grid from its states (/1,
-// transient::QuasiStaticReuse).
+// V / R moved), cold (/0), on the centre's grid from its states (/1,
+// transient::QuasiStaticReuse) or linearised about them (/2, QuasiStaticReuse::linearise).
 void BM_AnnularValveQuasiStaticNeighbour(benchmark::State& state) {
   ValveReduction v;
   transient::QuasiStaticStart centre;
-  transient::quasi_static_table(v.solver, 0.0, v.final_current, 8, {.keep = &centre});
+  transient::quasi_static_table(v.solver, 0.0, v.final_current, 8,
+                                {.keep = &centre, .keep_factor_bytes = std::size_t{1} << 30});
   transient::QuasiStaticReuse reuse;
-  if (state.range(0) == 1) reuse = {.start = &centre, .fixed_grid = true};
+  if (state.range(0) >= 1)
+    reuse = {.start = &centre, .fixed_grid = true, .linearise = state.range(0) == 2};
   transient::QuasiStaticTable table;
   for (auto _ : state)
     table = transient::quasi_static_table(v.solver, 0.0, 1.001 * v.final_current, 8, reuse);
   state.counters["table"] = static_cast<double>(table.points.size());
   state.counters["newton"] = table.newton_iterations;
+  state.counters["linearised"] = table.linearised;
+  double factor_bytes = 0.0;  // the centre's kept factorisations
+  for (const auto& factor : centre.factors)
+    if (factor) factor_bytes += static_cast<double>(factor->bytes());
+  state.counters["factors_MB"] = factor_bytes / 1e6;
 }
 
 BENCHMARK(BM_AnnularValveVoltageStep)->Unit(benchmark::kSecond)->Iterations(1);
@@ -108,6 +116,7 @@ BENCHMARK(BM_AnnularValveQuasiStatic)->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK(BM_AnnularValveQuasiStaticNeighbour)
     ->Arg(0)
     ->Arg(1)
+    ->Arg(2)
     ->Unit(benchmark::kSecond)
     ->Iterations(3);
 BENCHMARK(BM_AnnularValveOrder1)->Unit(benchmark::kSecond)->Iterations(1);

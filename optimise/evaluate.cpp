@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <map>
 #include <numbers>
 
@@ -22,6 +23,9 @@ namespace rheomag::optimise {
 namespace {
 
 constexpr int kRiseSamples = 4;  // lambda(i) samples of the rise-time integral
+// Most memory the quasi-static table's kept factorisations take (for linearised neighbours; the
+// P2 response-time example's peak memory grew by 134 MB with them, docs/performance.md, round 9).
+constexpr std::size_t kNeighbourFactorBytes = std::size_t{512} << 20;
 
 // 90 % rise time of the coil current after a voltage step V on R and the flux linkage
 // lambda(i): V = R i + dlambda/dt, so t = integral_0^{0.9 I_f} lambda'(i) / (V - R i) di with
@@ -278,8 +282,12 @@ design::Quantities OptimiseEvaluator::evaluate(const std::vector<double>& x, boo
       o.quasi_static = spec_.response_model == ResponseModel::quasi_static;
       // Finite-difference neighbours reuse the last other design's states and grid (its mesh).
       if (reference_meshes_ == designs_.meshes_built()) o.reuse.start = &reference_;
-      o.reuse.fixed_grid = neighbour;
-      if (!neighbour) o.reuse.keep = &reference_, reference_meshes_ = designs_.meshes_built();
+      // Finite-difference neighbours are linearised about it (its factorisations kept).
+      o.reuse.fixed_grid = o.reuse.linearise = neighbour;
+      if (!neighbour) {
+        o.reuse.keep = &reference_, reference_meshes_ = designs_.meshes_built();
+        o.reuse.keep_factor_bytes = kNeighbourFactorBytes;
+      }
       const design::ResponseTime t = design::response_time(*field.solver, c, o);
       // the static states of each run, or the reduction's static solves
       designs_.count_solves(2 * t.transient_runs + t.static_solves);
