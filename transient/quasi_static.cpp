@@ -103,6 +103,19 @@ class TableInterpolants {
   std::vector<double> gap_b_scale_;
 };
 
+// Whether contracting steps (step_j = rho step_j-1) have settled: the error the last one leaves,
+// rho / (1 - rho) |step|, is within kDifferenceTolerance of `change`, the neighbour's difference
+// from its centre that a finite difference divides, and of 1e-3 of `size`, the solution's norm
+// (so a distant design is solved to 1e-8 of its solution, as Newton would). A forward difference
+// of step 1e-3 is itself about 1e-3 off, so an error of 1e-5 of the change does not show in it.
+constexpr double kDifferenceTolerance = 1e-5;
+bool settled(double step, double previous_step, double change, double size) {
+  if (!(previous_step > 0.0)) return false;
+  const double rho = step / previous_step;
+  return rho < 0.01 &&
+         rho / (1.0 - rho) * step <= kDifferenceTolerance * std::min(change, 1e-3 * size);
+}
+
 }  // namespace
 
 QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double high, int points) {
@@ -221,7 +234,8 @@ QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double 
   // steps with its tangent's factorisation K0, A_j+1 = A_j - K0^-1 (R(A_j) - R0), R0 the residual
   // Newton left at A0 (so this state keeps A0's error and the designs' difference is smooth),
   // until |R(A_j) - R0| is within Newton's tolerance (j >= 1; measured: 2 for a change of turns,
-  // 3 for a morphed mesh, whose residual at A0 is larger than the load); then dA/di_m from A0's
+  // 3 for a morphed mesh, whose residual at A0 is larger than the load) or the steps have
+  // settled (`settled`: then 2 where the residual needed 3); then dA/di_m from A0's
   // by steps s += K0^-1 (F - K(A_j) s). Both errors are second order in the designs' difference
   // (a tangent at A1 moved L_d by 10 % of its change in a saturation knee). Newton from A_4 when
   // the steps did not converge.
@@ -238,11 +252,22 @@ QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double 
     Eigen::VectorXd x =
         statics.nodes_to_free(k == 0 ? earlier->fields[0] : *from_earlier(current, k - 1));
     magnetostatics::SparseMatrix tangent;
+    const Eigen::VectorXd centre = statics.nodes_to_free(earlier->fields[k]);
     bool converged = false;
+    double previous_step = 0.0;
     for (int step = 0; step <= kChordSteps && !converged; ++step) {
       const Eigen::VectorXd r = statics.residual(statics.free_to_nodes(x), held, tangent) - left;
       converged = r.norm() <= tolerance;
-      if (!converged) x -= factor.solve(r);
+      if (converged) break;
+      const Eigen::VectorXd dx = factor.solve(r);
+      x -= dx;
+      const double step_norm = dx.norm();
+      if (settled(step_norm, previous_step, (x - centre).norm(), x.norm())) {
+        // Settled within the difference's tolerance: the tangent at the final state, for dA/di_m.
+        statics.residual(statics.free_to_nodes(x), held, tangent);
+        converged = true;
+      }
+      previous_step = step_norm;
     }
     if (!converged) {
       newton_at(current, statics.free_to_nodes(x), k);
@@ -253,21 +278,18 @@ QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double 
     const Eigen::VectorXd centre_slope = statics.nodes_to_free(earlier->slopes[k]);
     Eigen::VectorXd slope = centre_slope;
     const auto full = tangent.selfadjointView<Eigen::Lower>();
-    double last_step = 0.0;
+    double previous_slope_step = 0.0;
     for (int step = 0; step < 4; ++step) {
       const Eigen::VectorXd change = factor.solve(f - full * slope);
       slope += change;
-      // Converged when the step is small against the slope, or when the error it leaves, from
-      // the steps' contraction rho (|error| <= rho / (1 - rho) |step|), is below 1e-6 of the
-      // designs' difference of slopes, which a finite difference divides (measured on the
-      // reference valve: rho 3e-5 to 3e-3, so two or three steps where 1e-12 of the slope took
-      // four).
+      // Converged when the step is small against the slope or has settled against the slope's
+      // change from the centre's (measured on the reference valve: rho 3e-5 to 3e-3, so two
+      // steps where 1e-12 of the slope took four).
       const double step_norm = change.norm();
-      const double rho = step > 0 ? step_norm / last_step : 1.0;
-      last_step = step_norm;
       if (step_norm <= 1e-12 * slope.norm() ||
-          (rho < 0.5 && rho / (1.0 - rho) * step_norm <= 1e-6 * (slope - centre_slope).norm()))
+          settled(step_norm, previous_slope_step, (slope - centre_slope).norm(), slope.norm()))
         break;
+      previous_slope_step = step_norm;
     }
     insert(current, a, slope, statics.circuit_source(0).dot(a), f.dot(slope), k);
     if (keep_factors) {
