@@ -1,107 +1,55 @@
 #include "magnetostatics/local_correction.hpp"
 
-#include <Eigen/SparseCholesky>
-#include <algorithm>
-#include <cmath>
-#include <numeric>
+#include <memory>
 #include <vector>
+
+#include "magnetostatics/local_newton.hpp"
 
 namespace rheomag::magnetostatics {
 namespace {
 
-/// The dofs of largest |r_i| that hold `fraction` of |r|^2, if at most `max_dofs` of them do;
-/// empty otherwise.
-std::vector<int> concentrated_dofs(const Eigen::VectorXd& r, double fraction, int max_dofs) {
-  const int n = static_cast<int>(r.size());
-  const int count = std::min(n, max_dofs);
-  if (count == 0) return {};
-  std::vector<int> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::partial_sort(order.begin(), order.begin() + count, order.end(),
-                    [&](int i, int j) { return std::abs(r[i]) > std::abs(r[j]); });
-  const double target = fraction * r.squaredNorm();
-  double held = 0.0;
-  for (int k = 0; k < count; ++k) {
-    held += r[order[k]] * r[order[k]];
-    if (held >= target) return {order.begin(), order.begin() + k + 1};
+/// A patch of the nodal 2D problem: the nodal values `a` change with its unknowns.
+class NodalPatch : public LocalPatch {
+ public:
+  NodalPatch(const Assembler& assembler, const DofMap& dofs, const Eigen::VectorXd& source,
+             Eigen::VectorXd& a, Patch patch)
+      : assembler_(assembler), dofs_(dofs), source_(source), a_(a), patch_(std::move(patch)) {}
+  const std::vector<int>& rows() const override { return patch_.rows; }
+  int unknowns() const override { return static_cast<int>(patch_.dofs.size()); }
+  Eigen::VectorXd values() const override {
+    Eigen::VectorXd v(unknowns());
+    for (int k = 0; k < unknowns(); ++k) v[k] = a_[dofs_.node_of_dof[patch_.dofs[k]]];
+    return v;
   }
-  return {};
-}
+  void set_values(const Eigen::VectorXd& values) override {
+    for (int k = 0; k < unknowns(); ++k) a_[dofs_.node_of_dof[patch_.dofs[k]]] = values[k];
+  }
+  void assemble(Eigen::VectorXd& internal, SparseMatrix* tangent) const override {
+    assembler_.assemble_patch(patch_, a_, internal, tangent);
+  }
+  double potential() const override {
+    double work = 0.0;
+    for (int d : patch_.dofs) work += source_[d] * a_[dofs_.node_of_dof[d]];
+    return assembler_.patch_energy(patch_, a_) - work;
+  }
 
-/// Energy of the patch including the sources' work on its dofs (differences equal those of E).
-double patch_potential(const Assembler& assembler, const DofMap& dofs, const Patch& patch,
-                       const Eigen::VectorXd& source, const Eigen::VectorXd& a) {
-  double work = 0.0;
-  for (int d : patch.dofs) work += source[d] * a[dofs.node_of_dof[d]];
-  return assembler.patch_energy(patch, a) - work;
-}
+ private:
+  const Assembler& assembler_;
+  const DofMap& dofs_;
+  const Eigen::VectorXd& source_;
+  Eigen::VectorXd& a_;
+  Patch patch_;
+};
 
 }  // namespace
 
 int correct_locally(const Assembler& assembler, const DofMap& dofs, const Eigen::VectorXd& source,
                     const NewtonOptions& options, Eigen::VectorXd& a, Eigen::VectorXd& r,
                     double& norm) {
-  int steps = 0;
-  for (int it = 0; it < options.local_iterations; ++it) {
-    const std::vector<int> seeds =
-        concentrated_dofs(r, options.local_fraction, options.local_max_dofs);
-    // A local step pays when its patch is small against the whole problem: fewer rings when
-    // the patch would exceed local_max_share of the dofs, none when even one ring does.
-    const double limit = options.local_max_share * static_cast<double>(r.size());
-    Patch patch;
-    for (int layers = options.local_layers; layers >= 1; layers /= 2) {
-      patch = assembler.patch(seeds, layers);
-      if (static_cast<double>(patch.dofs.size()) <= limit) break;
-    }
-    if (static_cast<double>(patch.dofs.size()) > limit) break;
-    const int unknowns = static_cast<int>(patch.dofs.size());
-    const int rows = static_cast<int>(patch.rows.size());
-    Eigen::VectorXd internal, trial_internal;
-    SparseMatrix tangent;
-    assembler.assemble_patch(patch, a, internal, &tangent);
-    Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower> cholesky(tangent);
-    if (cholesky.info() != Eigen::Success) break;
-    Eigen::VectorXd r_rows(rows);
-    for (int k = 0; k < rows; ++k) r_rows[k] = r[patch.rows[k]];
-    const Eigen::VectorXd step = cholesky.solve(-r_rows.head(unknowns));
-    const double slope = r_rows.head(unknowns).dot(step);
-    if (!step.allFinite() || !(slope < 0.0)) break;
-    const double rows_norm = r_rows.norm();
-    const double potential = patch_potential(assembler, dofs, patch, source, a);
-
-    Eigen::VectorXd start(unknowns);
-    for (int k = 0; k < unknowns; ++k) start[k] = a[dofs.node_of_dof[patch.dofs[k]]];
-    double alpha = 1.0;
-    bool accepted = false;
-    Eigen::VectorXd trial_rows;
-    for (int k = 0; k <= options.max_backtracks; ++k, alpha *= 0.5) {
-      for (int j = 0; j < unknowns; ++j) {
-        a[dofs.node_of_dof[patch.dofs[j]]] = start[j] + alpha * step[j];
-      }
-      assembler.assemble_patch(patch, a, trial_internal, nullptr);
-      trial_rows = r_rows + (trial_internal - internal);  // the source is unchanged
-      const double trial_norm = trial_rows.norm();
-      if (!std::isfinite(trial_norm)) continue;
-      if (trial_norm <= (1.0 - options.sufficient_decrease * alpha) * rows_norm ||
-          patch_potential(assembler, dofs, patch, source, a) <=
-              potential + options.sufficient_decrease * alpha * slope) {
-        accepted = true;
-        break;
-      }
-    }
-    if (!accepted) {
-      for (int j = 0; j < unknowns; ++j) a[dofs.node_of_dof[patch.dofs[j]]] = start[j];
-      break;
-    }
-    for (int k = 0; k < rows; ++k) r[patch.rows[k]] = trial_rows[k];
-    const double previous = norm;
-    norm = r.norm();
-    ++steps;
-    // Another local step only after one that paid: at least halved |R| (a global step is then
-    // the better use of the time).
-    if (norm > 0.5 * previous) break;
-  }
-  return steps;
+  const PatchBuilder build = [&](const std::vector<int>& seeds, int layers) {
+    return std::make_unique<NodalPatch>(assembler, dofs, source, a, assembler.patch(seeds, layers));
+  };
+  return correct_locally(build, options, r, norm);
 }
 
 }  // namespace rheomag::magnetostatics
