@@ -68,18 +68,24 @@ struct Variant {
   LinearSolver3d linear;  // CHOLMOD on the gauged system or AMS-preconditioned CG on all edges
   double ams_forcing;     // AMS: Newton's largest forcing term (Solve3dOptions::ams_max_forcing)
   bool guard = true;      // Newton's oversolving guard (NewtonOptions::oversolve_guard; else 0)
+  bool local = false;     // local Newton corrections where the residual concentrates
 };
-constexpr Variant kVariants[] = {
-    {false, false, LinearSolver3d::cholmod, 0.0},   {false, true, LinearSolver3d::cholmod, 0.0},
-    {true, false, LinearSolver3d::cholmod, 0.0},    {true, true, LinearSolver3d::cholmod, 0.0},
-    {false, false, LinearSolver3d::ams, 0.1},       {false, false, LinearSolver3d::ams, 0.01},
-    {false, false, LinearSolver3d::ams, 0.1, false}};
+constexpr Variant kVariants[] = {{false, false, LinearSolver3d::cholmod, 0.0},
+                                 {false, true, LinearSolver3d::cholmod, 0.0},
+                                 {true, false, LinearSolver3d::cholmod, 0.0},
+                                 {true, true, LinearSolver3d::cholmod, 0.0},
+                                 {false, false, LinearSolver3d::ams, 0.1},
+                                 {false, false, LinearSolver3d::ams, 0.01},
+                                 {false, false, LinearSolver3d::ams, 0.1, false},
+                                 {true, true, LinearSolver3d::cholmod, 0.0, true, true},
+                                 {true, false, LinearSolver3d::ams, 0.1, true, true}};
 
-// The variants side by side in one process: /0 is the previous solver (from A = 0, one
-// factorisation per Newton step), /1 the default, /4 and /5 AMS (one set-up per Newton step,
-// forcing 0.1 and 0.01), /6 AMS at 0.1 without Newton's oversolving guard (the solver before
-// it); max_sector_change is the largest relative change of a gap's 10-degree
-// sector average from /0 (or from the first variant run), flux_change that of lambda.
+// The variants side by side in one process: /0 is the first solver (from A = 0, one
+// factorisation per Newton step), /1 the default before local corrections, /4 and /5 AMS (one
+// set-up per Newton step, forcing 0.1 and 0.01), /6 AMS at 0.1 without Newton's oversolving guard
+// (the solver before it); /7 and /8 today's defaults with CHOLMOD and AMS (2D start, local
+// corrections; the others have none); max_sector_change is the largest relative change of a gap's
+// 10-degree sector average from /0 (or from the first variant run), flux_change that of lambda.
 void BM_AnnularValveLeadSlotHalfSwept(benchmark::State& state) {
   static Results3d previous;
   const std::string path = std::string(RHEOMAG_SOURCE_DIR) + "/cases/annular_valve.toml";
@@ -94,9 +100,11 @@ void BM_AnnularValveLeadSlotHalfSwept(benchmark::State& state) {
   options.linear = v.linear;
   if (v.linear == LinearSolver3d::ams) options.ams_max_forcing = v.ams_forcing;
   if (!v.guard) options.newton.oversolve_guard = 0.0;
+  if (!v.local) options.newton.local_iterations = 0;
   for (auto _ : state) {
     const Solve3dResult s = solve_problem_3d(c.problem, read_features(c), options);
     report(state, s);
+    state.counters["local_steps"] = s.solution.newton.local_steps;
     state.counters["factorizations"] = s.results.factorizations;
     state.counters["cg"] = s.results.cg_iterations;
     if (state.range(0) == 0 || previous.circuits.empty()) previous = s.results;  // reference
@@ -119,10 +127,11 @@ void BM_AnnularValveLeadSlotHalfSwept(benchmark::State& state) {
                                 ? "AMS-CG, forcing " + std::to_string(v.ams_forcing).substr(0, 4)
                                 : (v.reuse ? "CG on reused factor" : "factor per step");
   state.SetLabel(std::string(v.warm_start ? "2D start" : "A = 0") + ", " + steps +
-                 (v.guard ? "" : ", no oversolving guard"));
+                 (v.guard ? "" : ", no oversolving guard") +
+                 (v.local ? ", local corrections" : ""));
 }
 BENCHMARK(BM_AnnularValveLeadSlotHalfSwept)
-    ->DenseRange(0, 6)
+    ->DenseRange(0, 8)
     ->Iterations(1)
     ->Unit(benchmark::kSecond)
     ->UseRealTime();

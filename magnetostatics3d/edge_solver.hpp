@@ -17,6 +17,7 @@
 namespace rheomag::magnetostatics3d {
 
 class AmsCg;
+struct EdgeTetrahedra;
 
 /// How EdgeSolver solves the linear system of a Newton step.
 enum class LinearSolver3d {
@@ -85,6 +86,10 @@ class EdgeSolver {
   }
   /// Flux density of tetrahedron t for edge values a.
   Eigen::Vector3d flux_density(int t, const Eigen::VectorXd& a) const;
+  /// Volume of tetrahedron t [m^3].
+  double volume(int t) const { return volume_[t]; }
+  /// Curls of the six Whitney functions of tetrahedron t (edge_curls).
+  const std::array<Eigen::Vector3d, 6>& curls(int t) const { return curl_[t]; }
   /// How the Newton steps' linear systems are solved.
   LinearSolver3d linear_solver() const { return linear_; }
   /// Numeric Cholesky factorisations so far (one per Newton step without a CG budget).
@@ -115,6 +120,7 @@ class EdgeSolver {
   SparseMatrix tangent_;
   LinearSolver3d linear_ = LinearSolver3d::cholmod;
   std::unique_ptr<AmsCg> ams_;
+  std::unique_ptr<EdgeTetrahedra> around_;  // the pattern's and local corrections' adjacency
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholesky_;
   int reuse_iterations_ = 0;
   bool nonlinear_ = false;

@@ -14,6 +14,7 @@
 #include "magnetostatics3d/solve3d.hpp"
 #include "magnetostatics3d/warm_start.hpp"
 #include "tests/magnetostatics3d/same_gap_field.hpp"
+#include "tests/magnetostatics3d/small_lead_slot.hpp"
 
 namespace rheomag::magnetostatics3d {
 namespace {
@@ -77,21 +78,13 @@ TEST(WarmStart, CotreeValuesKeepTheCurl) {
 
 // The small valve with a lead slot at 2 A (its 4 mm neck saturates: a nonlinear solve), half
 // model on a coarse swept mesh, solved from A = 0 with a factorisation per Newton step (the
-// previous solver) and from the revolved 2D solution with CG on a reused factorisation. Both
-// converge to Newton's 1e-8; reference: the cold start; tolerance 0.1 % in every 10-degree sector
-// of every gap and in the flux linkage. The warm start needs fewer factorisations.
+// first solver, with today's local corrections) and from the revolved 2D solution with CG on a
+// reused factorisation. Both converge to Newton's 1e-8; reference: the cold start; tolerance 0.1 %
+// in every 10-degree sector of every gap and in the flux linkage. The warm start needs fewer
+// factorisations.
 TEST(WarmStart, WarmStartedSolveMatchesColdStartInEverySector) {
-  const std::string path = std::string(RHEOMAG_TEST_DATA) + "/magnetostatics3d/small_valve.toml";
-  cases::Case c = cases::parse_case(
-      cases::read_input_file(path) +
-          "\n[[feature]]\nkind = \"lead_slot\"\nregion = \"core\"\nwidth = 2.0\ndepth = 1.5\n",
-      path);
-  c.problem.circuits.at(0).current = 2.0;
-  Solve3dOptions warm = swept_options();
-  warm.gap_layers = 1;
-  warm.region_fraction = 0.5;
-  warm.facet_angle = 7.5 * std::numbers::pi / 180.0;
-  warm.fine_angle = 3.75 * std::numbers::pi / 180.0;
+  const cases::Case c = small_valve_with_lead_slot();
+  const Solve3dOptions warm = coarse_swept_options();
   Solve3dOptions cold = warm;
   cold.warm_start = false;
   cold.reuse_iterations = 0;
