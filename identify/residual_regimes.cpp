@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <numeric>
 
 namespace rheomag::identify {
 
@@ -43,10 +44,13 @@ std::optional<ResidualRegimes> residual_regimes(const std::vector<double>& motio
                                                 const std::vector<double>& prediction) {
   const std::size_t n = motion.size();
   if (n < 2 || measured.size() != n || prediction.size() != n) return std::nullopt;
+  // The force about its mean: a load cell's offset (or a gas force) is not part of either stroke.
+  const double level =
+      std::accumulate(measured.begin(), measured.end(), 0.0) / static_cast<double>(n);
   double motion_ss = 0.0, power = 0.0;
   for (std::size_t k = 0; k < n; ++k) {
     motion_ss += motion[k] * motion[k];
-    power += measured[k] * motion[k];
+    power += (measured[k] - level) * motion[k];
   }
   const auto [lo, hi] = std::minmax_element(motion.begin(), motion.end());
   if (!(*hi > *lo)) return std::nullopt;
@@ -61,7 +65,8 @@ std::optional<ResidualRegimes> residual_regimes(const std::vector<double>& motio
     while (end < n && dir[end] == dir[begin]) ++end;
     // The force in the stroke's direction; the transition lasts until it settles.
     std::vector<double> along(end - begin);
-    for (std::size_t k = begin; k < end; ++k) along[k - begin] = sign * dir[begin] * measured[k];
+    for (std::size_t k = begin; k < end; ++k)
+      along[k - begin] = sign * dir[begin] * (measured[k] - level);
     const double settled = kSettledFraction * median(along);
     std::size_t k = begin;
     if (settled > 0.0)

@@ -21,7 +21,8 @@ struct RegimeResidual {
 /// The residual of a prediction by regime of the measured cycle. A stroke is a run of samples
 /// with one direction of motion (a reversal needs the motion to cross a band of
 /// kReversalBandFraction of its rms, so noise does not split a stroke). Its `transition` is from
-/// the reversal until the measured force, taken in the direction it opposes the motion, first
+/// the reversal until the measured force (about its mean over the recording, so an offset does not
+/// count as a direction), taken in the direction it opposes the motion, first
 /// reaches kSettledFraction of its median over the stroke: the pre-yield, compliance and
 /// low-speed part. The rest of the stroke is `positive` or `negative` by the motion's sign.
 struct ResidualRegimes {

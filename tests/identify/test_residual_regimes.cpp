@@ -102,6 +102,24 @@ TEST(ResidualRegimes, ForceOppositeToTheMotionAndNoisyMotion) {
   EXPECT_NEAR(g->transition.time_percent, expected_transition_percent(), 1.0);
 }
 
+TEST(ResidualRegimes, AForceOffsetIsNotADirection) {
+  // The same force on a load cell that reads 300 N at rest (three tenths of the amplitude: the
+  // force is then positive for most of the negative strokes): the regimes are those of the force
+  // without the offset. Before the force was taken about its mean, every negative stroke stayed
+  // in the reversals (measured on a shaking-table recording with a 100 N offset: 0 % negative).
+  const Cycle c = settling_force(1000.0);
+  std::vector<double> shifted = c.f, prediction = c.f;
+  for (std::size_t k = 0; k < c.f.size(); ++k) {
+    shifted[k] += 300.0;
+    prediction[k] += 301.0;
+  }
+  const auto g = residual_regimes(c.v, shifted, prediction);
+  ASSERT_TRUE(g.has_value());
+  EXPECT_NEAR(g->transition.time_percent, expected_transition_percent(), 0.2);
+  EXPECT_NEAR(g->positive.time_percent, g->negative.time_percent, 0.2);
+  EXPECT_NEAR(g->negative.mean, 1.0, 1e-9);
+}
+
 TEST(ResidualRegimes, NoRegimesWithoutMotion) {
   const std::vector<double> still(100, 0.3), f(100, 1.0);
   EXPECT_FALSE(residual_regimes(still, f, f).has_value());
