@@ -134,9 +134,10 @@ const bool fit_family_registered = rheomag::app::register_command([](CLI::App& r
   cmd->add_flag("--json", o->json,
                 "Print one JSON object: the fitted model (readable back as a model file, "
                 "docs/fit-model-json.md), params, train and prediction (arrays of {file, "
-                "field, fit_percent, rmse_percent, re, mean_removed, band_rms, band_percent, "
+                "field, fit_percent, rmse_percent, re, mean_removed, tared_at_rest_s, band_rms, "
+                "band_percent, "
                 "repeatability_percent, level_fit_percent, level_pure_fit_percent, level_gain, "
-                "level_offset, level_window_s, viscosity_factor, "
+                "level_offset, level_window_s, level_window_start_s, viscosity_factor, "
                 "viscosity_temperature_offset_k, regimes: the residual's share in the reversals "
                 "and in the settled strokes of each direction, {transition, positive, negative} "
                 "each {time_percent, energy_percent, rms, mean}}), "

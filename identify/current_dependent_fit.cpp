@@ -24,6 +24,8 @@ FamilyMember evaluate_family_member(const lumped::Recording& rec, const GreyboxF
   }
   m.simulated = simulate_greybox(rec, fit);
   m.mean_removed = lumped::output_mean_removed(rec.column(fit.setup.output_column));
+  if (const std::size_t rest = lumped::tared_rest(rec, fit.setup); rest > 0)
+    m.rest_seconds = rec.t[rest] - rec.t.front();
   m.metrics = lumped::compute_metrics(rec.column(fit.setup.output_column), m.simulated);
   m.repeatability = repeatability_percent(rec.t, rec.column(fit.setup.motion_column),
                                           rec.column(fit.setup.output_column));

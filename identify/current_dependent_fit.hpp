@@ -40,6 +40,9 @@ struct FamilyMember {
   lumped::Metrics metrics;
   /// The recording's output had its mean removed, so the model's was too (output_mean_removed).
   bool mean_removed = false;
+  /// [s] The recording starts at rest for this long (lumped::leading_rest), so the model's output
+  /// was tared to the recording's level there, as a load cell is zeroed before a test; 0: not.
+  double rest_seconds = 0.0;
   /// Predicted recordings: the prediction's one-sigma band from the parameters' disagreement
   /// between the training recordings (prediction_band).
   std::optional<PredictionBand> band;

@@ -33,27 +33,30 @@ nlohmann::json regimes_json(const FamilyMember& m) {
 }
 
 nlohmann::json member_json(const FamilyMember& m) {
-  return {{"file", m.csv_path},
-          {"field", m.field},
-          {"fit_percent", m.metrics.fit_percent},
-          {"rmse_percent", m.metrics.rmse_percent},
-          {"re", m.metrics.re},
-          {"mean_removed", m.mean_removed},
-          {"band_rms", m.band ? nlohmann::json(m.band->rms) : nlohmann::json()},
-          {"band_percent", m.band ? nlohmann::json(m.band->percent) : nlohmann::json()},
-          {"repeatability_percent",
-           m.repeatability ? nlohmann::json(*m.repeatability) : nlohmann::json()},
-          {"level_fit_percent", level_json(m, &LevelCalibration::fit_percent)},
-          {"level_pure_fit_percent", level_json(m, &LevelCalibration::pure_fit_percent)},
-          {"level_gain", level_json(m, &LevelCalibration::gain)},
-          {"level_offset", level_json(m, &LevelCalibration::offset)},
-          {"level_window_s", level_json(m, &LevelCalibration::seconds)},
-          {"viscosity_factor",
-           m.viscosity_factor ? nlohmann::json(*m.viscosity_factor) : nlohmann::json()},
-          {"viscosity_temperature_offset_k",
-           m.viscosity_factor ? nlohmann::json(viscosity_temperature_offset(*m.viscosity_factor))
-                              : nlohmann::json()},
-          {"regimes", regimes_json(m)}};
+  return {
+      {"file", m.csv_path},
+      {"field", m.field},
+      {"fit_percent", m.metrics.fit_percent},
+      {"rmse_percent", m.metrics.rmse_percent},
+      {"re", m.metrics.re},
+      {"mean_removed", m.mean_removed},
+      {"tared_at_rest_s", m.rest_seconds > 0.0 ? nlohmann::json(m.rest_seconds) : nlohmann::json()},
+      {"band_rms", m.band ? nlohmann::json(m.band->rms) : nlohmann::json()},
+      {"band_percent", m.band ? nlohmann::json(m.band->percent) : nlohmann::json()},
+      {"repeatability_percent",
+       m.repeatability ? nlohmann::json(*m.repeatability) : nlohmann::json()},
+      {"level_fit_percent", level_json(m, &LevelCalibration::fit_percent)},
+      {"level_pure_fit_percent", level_json(m, &LevelCalibration::pure_fit_percent)},
+      {"level_gain", level_json(m, &LevelCalibration::gain)},
+      {"level_offset", level_json(m, &LevelCalibration::offset)},
+      {"level_window_s", level_json(m, &LevelCalibration::seconds)},
+      {"level_window_start_s", level_json(m, &LevelCalibration::start_seconds)},
+      {"viscosity_factor",
+       m.viscosity_factor ? nlohmann::json(*m.viscosity_factor) : nlohmann::json()},
+      {"viscosity_temperature_offset_k",
+       m.viscosity_factor ? nlohmann::json(viscosity_temperature_offset(*m.viscosity_factor))
+                          : nlohmann::json()},
+      {"regimes", regimes_json(m)}};
 }
 
 void print_members(std::ostream& out, const char* title, const std::vector<FamilyMember>& members) {
@@ -85,8 +88,14 @@ void print_members(std::ostream& out, const char* title, const std::vector<Famil
     if (m.viscosity_factor)
       out << format_text("  %6.3f (%+.1f K)", *m.viscosity_factor,
                          viscosity_temperature_offset(*m.viscosity_factor));
-    out << format_text("%s\n",
-                       m.mean_removed ? "  (mean removed: compared without the model's mean)" : "");
+    if (m.mean_removed)
+      out << "  (mean removed: compared without the model's mean)";
+    else if (m.rest_seconds > 0.0)
+      out << format_text(
+          "  (tared: the model's level set to the recording's over its first %.2f s "
+          "at rest)",
+          m.rest_seconds);
+    out << "\n";
   }
 }
 

@@ -365,29 +365,39 @@ std::vector<double> param_values(const GreyboxFit& fit) {
   return values;
 }
 
-/// Where every training series had its output's mean removed and is fitted whole, the model is
-/// compared without its mean, so the offset is not identified by the fit and its value is
-/// whatever the optimiser left. Sets it so that the model's output has zero mean over the
-/// training series, as the recordings do (a model saved and run elsewhere then keeps their level);
-/// nothing any comparison with these recordings sees changes.
+/// Where every training series is fitted whole and compared without its level (its output's mean
+/// removed, or tared at its leading rest), the offset is not identified by the fit and its value
+/// is whatever the optimiser left. Sets it so that the model's raw output has the recordings' own
+/// level: zero mean over a mean-removed series, the measured level over a tared series' rest (a
+/// model saved and run elsewhere then keeps their level); nothing any comparison with these
+/// recordings sees changes.
 void centre_unidentified_offset(const FitData& data, GreyboxFit& fit, double max_substep) {
-  for (std::size_t r = 0; r < data.series.size(); ++r)
-    if (!data.series[r].mean_removed || data.ranges[r].begin != 0 ||
-        data.ranges[r].end != data.series[r].t.size())
+  for (std::size_t r = 0; r < data.series.size(); ++r) {
+    const lumped::DriveSeries& s = data.series[r];
+    if (!(s.mean_removed || s.rest_samples > 0) || data.ranges[r].begin != 0 ||
+        data.ranges[r].end != s.t.size())
       return;
+  }
   const int k = lumped::pheno_param_index(fit.setup.kind, "offset");
   if (k < 0 || fit.params[static_cast<std::size_t>(k)].fixed) return;
-  double sum = 0.0, count = 0.0;
+  // The level wanted minus the raw model's level, weighted by the samples it is taken over.
+  double shift = 0.0, weight = 0.0;
   for (const lumped::DriveSeries& series : data.series) {
     lumped::DriveSeries raw = series;
-    raw.mean_removed = false;  // the model's own mean, not removed
-    for (double y : lumped::simulate_for_report(raw, fit.setup, param_values(fit), max_substep))
-      sum += y;
-    count += static_cast<double>(series.t.size());
+    raw.mean_removed = false;  // the model's own level, neither removed nor tared
+    raw.rest_samples = 0;
+    const std::vector<double> y =
+        lumped::simulate_for_report(raw, fit.setup, param_values(fit), max_substep);
+    const std::size_t n = series.mean_removed ? y.size() : series.rest_samples;
+    const double level =
+        std::accumulate(y.begin(), y.begin() + static_cast<std::ptrdiff_t>(n), 0.0) /
+        static_cast<double>(n);
+    shift += static_cast<double>(n) * ((series.mean_removed ? 0.0 : series.rest_level) - level);
+    weight += static_cast<double>(n);
   }
-  // The output is orientation x (model + offset): shifting the offset by -mean/orientation
-  // zeroes the mean.
-  fit.params[static_cast<std::size_t>(k)].value -= sum / count / fit.setup.orientation;
+  // The output is orientation x (model + offset): shifting the offset by shift/orientation moves
+  // the raw output by shift.
+  fit.params[static_cast<std::size_t>(k)].value += shift / weight / fit.setup.orientation;
 }
 
 }  // namespace

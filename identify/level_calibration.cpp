@@ -7,6 +7,7 @@
 #include <cmath>
 #include <span>
 
+#include "lumped/leading_rest.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/output_smoothing.hpp"
 
@@ -18,33 +19,38 @@ std::optional<LevelCalibration> calibrate_level(const std::vector<double>& t,
                                                 const std::vector<double>& prediction) {
   const std::size_t n = t.size();
   if (n < 4 || v.size() != n || y.size() != n || prediction.size() != n) return std::nullopt;
+  // The window starts where the motion does: a test that starts at rest has no cycle there.
+  const std::size_t start = lumped::motion_start(v);
   const double period = lumped::drive_period(t, v);
-  std::size_t window = 0;
+  std::size_t window = 0;  // the window is [start, window)
   if (period > 0.0) {
-    // The samples before the one nearest to t[0] + period (the sampling need not divide it).
-    const double end = t.front() + period;
+    // The samples before the one nearest to t[start] + period (the sampling need not divide it).
+    const double end = t[start] + period;
     window = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), end) - t.begin());
-    if (window > 0 && (window == n || end - t[window - 1] < t[window] - end)) --window;
+    if (window > start && (window == n || end - t[window - 1] < t[window] - end)) --window;
   } else
-    window = static_cast<std::size_t>(kCalibrationFractionWithoutPeriod * static_cast<double>(n));
-  if (window < 2 || n - window < 2) return std::nullopt;
+    window = start + static_cast<std::size_t>(kCalibrationFractionWithoutPeriod *
+                                              static_cast<double>(n - start));
+  if (window < start + 2 || window > n || n - window < 2) return std::nullopt;
   // Least squares y ~ gain x prediction + offset on the window.
+  const auto count = static_cast<double>(window - start);
   double mp = 0.0, my = 0.0;
-  for (std::size_t i = 0; i < window; ++i) {
+  for (std::size_t i = start; i < window; ++i) {
     mp += prediction[i];
     my += y[i];
   }
-  mp /= static_cast<double>(window);
-  my /= static_cast<double>(window);
+  mp /= count;
+  my /= count;
   double spp = 0.0, spy = 0.0;
-  for (std::size_t i = 0; i < window; ++i) {
+  for (std::size_t i = start; i < window; ++i) {
     spp += (prediction[i] - mp) * (prediction[i] - mp);
     spy += (prediction[i] - mp) * (y[i] - my);
   }
   if (!(spp > 0.0)) return std::nullopt;
   LevelCalibration c;
-  c.samples = window;
-  c.seconds = t[window] - t.front();
+  c.samples = window - start;
+  c.start_seconds = t[start] - t.front();
+  c.seconds = t[window] - t[start];
   c.gain = spy / spp;
   c.offset = my - c.gain * mp;
   std::vector<double> calibrated(prediction.begin() + static_cast<std::ptrdiff_t>(window),

@@ -16,7 +16,8 @@ inline constexpr double kCalibrationFractionWithoutPeriod = 0.2;
 
 /// One calibrated level of a prediction and its FIT after the calibration window.
 struct LevelCalibration {
-  double seconds = 0.0;           ///< [s] length of the calibration window from the first sample
+  double start_seconds = 0.0;     ///< [s] start of the window: the motion's (after a leading rest)
+  double seconds = 0.0;           ///< [s] length of the calibration window
   std::size_t samples = 0;        ///< samples in the calibration window
   double gain = 1.0;              ///< least-squares gain of the prediction on the window
   double offset = 0.0;            ///< [output unit] least-squares offset on the window
@@ -25,9 +26,10 @@ struct LevelCalibration {
 };
 
 /// Calibrates `prediction` of the measured output y(t) under the drive v(t): gain and offset by
-/// least squares on the first cycle (the samples before the one nearest to t[0] +
-/// drive_period(t, v); without a periodic drive, the first kCalibrationFractionWithoutPeriod of
-/// the samples), both FITs on the samples after it. Empty if the window or the rest holds fewer
+/// least squares on the first cycle of the motion (from the motion's start, lumped::motion_start,
+/// to the sample nearest to one drive_period(t, v) later; without a periodic drive, the first
+/// kCalibrationFractionWithoutPeriod of the samples from the motion's start), both FITs on the
+/// samples after it. Empty if the window or the rest holds fewer
 /// than 2 samples, or the prediction is constant on the window (no gain to fit).
 std::optional<LevelCalibration> calibrate_level(const std::vector<double>& t,
                                                 const std::vector<double>& v,

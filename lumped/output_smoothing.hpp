@@ -3,8 +3,9 @@
 // the two are compared: a centred moving average (boxcar) over a window that is a fixed fraction
 // of the drive's period (the UTFSM damper tests were filtered with a moving average over a tenth
 // of the period, docs/damper-model.md) and the drive period it is measured against, and the
-// removal of the output's mean (those tests' forces had their means removed). Templated so Ceres
-// Jets flow through.
+// removal of the output's mean (those tests' forces had their means removed), or a tare to the
+// level the recording shows at rest before its motion starts. Templated so Ceres Jets flow
+// through.
 
 #include <algorithm>
 #include <cmath>
@@ -75,6 +76,16 @@ void remove_mean(T* y, std::size_t n) {
   for (std::size_t i = 0; i < n; ++i) sum += y[i];
   const T mean = sum / static_cast<double>(n);
   for (std::size_t i = 0; i < n; ++i) y[i] -= mean;
+}
+
+/// Shifts y[0..n) so that its mean over the first `rest` samples is `level` (a tare; rest <= n).
+template <class T>
+void tare(T* y, std::size_t n, std::size_t rest, double level) {
+  if (rest == 0 || rest > n) return;
+  T sum = T(0.0);
+  for (std::size_t i = 0; i < rest; ++i) sum += y[i];
+  const T shift = level - sum / static_cast<double>(rest);
+  for (std::size_t i = 0; i < n; ++i) y[i] += shift;
 }
 
 }  // namespace rheomag::lumped

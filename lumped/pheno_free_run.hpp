@@ -38,13 +38,17 @@ double stiffest_rate(PhenoKind kind, const T* p, const PhenoDrive& d, const Phen
 /// A model's output seen through the recording's processing: a centred moving average over
 /// output_smoothing (the model's last parameter) times the drive's period (nothing without a
 /// periodic drive), then, if the recording's output had its mean removed and `range` is the whole
-/// recording, the output's own mean removed.
+/// recording, the output's own mean removed; or, if the recording starts at rest and `range` starts
+/// with it, the output tared to the recording's level at rest (DriveSeries::rest_samples).
 template <class T>
 void process_output(PhenoKind kind, const T* p, const DriveSeries& d, SampleRange range, T* out) {
   if (d.period > 0.0)
     centred_boxcar(&d.t[range.begin], range.size(), T(p[pheno_smoothing_index(kind)] * d.period),
                    out);
-  if (d.mean_removed && range.begin == 0 && range.end == d.t.size()) remove_mean(out, range.size());
+  if (d.mean_removed && range.begin == 0 && range.end == d.t.size())
+    remove_mean(out, range.size());
+  else if (d.rest_samples > 0 && range.begin == 0 && range.end > d.rest_samples)
+    tare(out, range.size(), d.rest_samples, d.rest_level);
 }
 
 /// Models integrated by their own stiff-stable exponential step (damper_step, bouc_wen_step).

@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "core/error.hpp"
+#include "lumped/leading_rest.hpp"
 #include "lumped/ode.hpp"
 #include "lumped/output_smoothing.hpp"
 #include "lumped/pheno_free_run.hpp"
@@ -89,6 +90,14 @@ std::vector<double> simulate_stiff(const DriveSeries& d, const GreyboxSetup& set
 
 }  // namespace
 
+std::size_t tared_rest(const Recording& rec, const GreyboxSetup& setup) {
+  const std::vector<double>& y = rec.column(setup.output_column);
+  const auto [lo, hi] = std::minmax_element(y.begin(), y.end());
+  // A constant output column is a placeholder, not a measurement to tare to.
+  if (y.empty() || !(*hi > *lo) || output_mean_removed(y)) return 0;
+  return leading_rest(rec.t, rec.column(setup.motion_column));
+}
+
 DriveSeries drive_series(const Recording& rec, const GreyboxSetup& setup, std::size_t step) {
   DriveSeries d;
   d.t = every(rec.t, step);
@@ -99,6 +108,12 @@ DriveSeries drive_series(const Recording& rec, const GreyboxSetup& setup, std::s
   d.acceleration = rate_of(d.t, d.motion);
   d.period = drive_period(d.t, d.motion);
   d.mean_removed = output_mean_removed(rec.column(setup.output_column));
+  // The rest of the full recording, in kept samples (0, step, 2 step, ... below it).
+  const std::size_t rest = tared_rest(rec, setup);
+  d.rest_samples = step > 0 ? (rest + step - 1) / step : 0;
+  if (d.rest_samples >= d.t.size()) d.rest_samples = 0;
+  for (std::size_t i = 0; i < d.rest_samples; ++i) d.rest_level += d.y[i];
+  if (d.rest_samples > 0) d.rest_level /= static_cast<double>(d.rest_samples);
   if (!setup.position_column.empty()) {
     d.position = every(rec.column(setup.position_column), step);
   } else {

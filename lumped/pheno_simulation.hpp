@@ -32,6 +32,10 @@ struct DriveSeries {
   std::vector<double> t, position, motion, field, acceleration, y;
   double period = 0.0;        ///< [s] period of a periodic motion drive, else 0 (drive_period)
   bool mean_removed = false;  ///< the recording's output had its mean removed (output_mean_removed)
+  /// Leading samples at rest (leading_rest; 0: none): the model's output is tared to the
+  /// recording's mean output `rest_level` over them, as a load cell is zeroed before a test.
+  std::size_t rest_samples = 0;
+  double rest_level = 0.0;  ///< [output unit] the recording's mean output over the rest samples
   PhenoDrive at(std::size_t i) const { return {position[i], motion[i], field[i], acceleration[i]}; }
   /// Linear interpolation between sample i and i+1 at fraction w in [0, 1].
   PhenoDrive between(std::size_t i, double w) const {
@@ -40,6 +44,11 @@ struct DriveSeries {
             acceleration[i] + w * (acceleration[i + 1] - acceleration[i])};
   }
 };
+
+/// Leading samples of `rec` at rest (leading_rest of its motion) over which a model's output is
+/// tared to the recording's (DriveSeries::rest_samples); 0 where the output had its mean removed
+/// or is constant (a placeholder column, nothing measured to tare to).
+std::size_t tared_rest(const Recording& rec, const GreyboxSetup& setup);
 
 /// The drive and output of `rec` as `setup` reads them, keeping every `step`-th sample.
 DriveSeries drive_series(const Recording& rec, const GreyboxSetup& setup, std::size_t step = 1);
