@@ -1,0 +1,75 @@
+// A second lab's damper (tests/data/labcontrol: UTFPR's shaking table, 100 Hz, coil level not
+// recorded, each test with its own load-cell zero and most starting at rest): a `damper` family
+// fitted on half of the tests at each of four coil levels predicts the other half.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "identify/current_dependent_fit.hpp"
+#include "lumped/recording_io.hpp"
+
+using namespace rheomag::identify;
+using rheomag::lumped::Recording;
+
+namespace {
+
+std::vector<Recording> read(const std::vector<std::string>& names) {
+  std::vector<Recording> recs;
+  for (const std::string& name : names)
+    recs.push_back(rheomag::lumped::read_recording(std::string(RHEOMAG_TEST_DATA) + "/labcontrol/" +
+                                                   name + ".csv"));
+  return recs;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+}  // namespace
+
+// Reference: the recordings themselves (held-out tests, never fitted). Measured 2026-12-04 with
+// the default decimation and starts: predicted median 89.6 % (19 tests), lowest FIT but one
+// 78.9 % (0 V test 10); the family's tests at 0 V are noise-limited
+// (repeatability 92-96 %). Before the tare the median was 86.7 % (training median 85.3 -> 89.0 %).
+// Tolerances: median >= 88 %, lowest tared >= 77 % (2 points under the measurement; the fit's
+// multi-start makes it platform-dependent to about a point). 0x87V test 8 and 3x21V A.8 move
+// after 0.06 and 0.11 s, too short a rest to tare on; test 8's zero is 160 N below the others',
+// so it is left out of the floor (A.8's zero is near the family's: 93.5 %). The level calibrated on
+// each tared test's first moving cycle has a gain of 0.88-1.21 (tolerance 0.8-1.3); on the first
+// cycle from t = 0, which is the rest, it was -0.3 to 1e11.
+TEST(ShakingTableFamily, HalfTheTestsAtFourLevelsPredictTheOtherHalf) {
+  const std::vector<Recording> training =
+      read({"0V_test1_1", "0V_test3_1", "0V_test5_1", "0V_test7_1", "0V_test9_1", "0x87V_test1_2",
+            "0x87V_test3_2", "0x87V_test5_2", "0x87V_test7_2", "0x87V_test9_2", "1x98V_test_B_1",
+            "1x98V_test_B_5", "1x98V_test_B_7", "1x98V_test_B_9", "3x21V_test_A_1",
+            "3x21V_test_A_3", "3x21V_test_A_5", "3x21V_test_A_7", "3x21V_test_A_9"});
+  const std::vector<Recording> predicted =
+      read({"0V_test2_1", "0V_test4_1", "0V_test6_1", "0V_test8_1", "0V_test10_1", "0x87V_test2_2",
+            "0x87V_test4_2", "0x87V_test6_2", "0x87V_test8_2", "0x87V_test10_2", "1x98V_test_B_3",
+            "1x98V_test_B_6", "1x98V_test_B_8", "1x98V_test_B_10", "3x21V_test_A_2",
+            "3x21V_test_A_4", "3x21V_test_A_6", "3x21V_test_A_8", "3x21V_test_A_10"});
+  const FamilyFit r = fit_current_dependent(training, "damper", predicted, FamilyFitOptions{});
+  ASSERT_EQ(r.predicted.size(), predicted.size());
+  std::vector<double> fits;
+  for (const FamilyMember& m : r.predicted) {
+    fits.push_back(m.metrics.fit_percent);
+    const auto is = [&](const char* name) { return m.csv_path.find(name) != std::string::npos; };
+    if (is("0x87V_test8_2") || is("3x21V_test_A_8")) {
+      EXPECT_EQ(m.rest_seconds, 0.0) << m.csv_path;  // 0.06 and 0.11 s: shorter than 0.2 s
+      if (is("0x87V_test8_2")) continue;
+    } else {
+      EXPECT_GT(m.rest_seconds, 0.3) << m.csv_path;
+      ASSERT_TRUE(m.level.has_value()) << m.csv_path;
+      EXPECT_GT(m.level->start_seconds, 0.3) << m.csv_path;
+    }
+    EXPECT_GE(m.metrics.fit_percent, 77.0) << m.csv_path;
+    ASSERT_TRUE(m.level.has_value()) << m.csv_path;
+    EXPECT_GT(m.level->gain, 0.8) << m.csv_path;
+    EXPECT_LT(m.level->gain, 1.3) << m.csv_path;
+  }
+  EXPECT_GE(median(fits), 88.0);
+}
