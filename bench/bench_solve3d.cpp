@@ -69,6 +69,8 @@ struct Variant {
   double ams_forcing;     // AMS: Newton's largest forcing term (Solve3dOptions::ams_max_forcing)
   bool guard = true;      // Newton's oversolving guard (NewtonOptions::oversolve_guard; else 0)
   bool local = false;     // local Newton corrections where the residual concentrates
+  int ams_seeds = 0;      // AMS: seed edges of the corrections (0: Solve3dOptions' default)
+  double ams_fraction = 0.0;  // AMS: their share of |R|^2 (0: Solve3dOptions' default)
 };
 constexpr Variant kVariants[] = {{false, false, LinearSolver3d::cholmod, 0.0},
                                  {false, true, LinearSolver3d::cholmod, 0.0},
@@ -78,13 +80,15 @@ constexpr Variant kVariants[] = {{false, false, LinearSolver3d::cholmod, 0.0},
                                  {false, false, LinearSolver3d::ams, 0.01},
                                  {false, false, LinearSolver3d::ams, 0.1, false},
                                  {true, true, LinearSolver3d::cholmod, 0.0, true, true},
-                                 {true, false, LinearSolver3d::ams, 0.1, true, true}};
+                                 {true, false, LinearSolver3d::ams, 0.01, true, true},
+                                 {true, false, LinearSolver3d::ams, 0.1, true, true, 500, 0.9}};
 
 // The variants side by side in one process: /0 is the first solver (from A = 0, one
 // factorisation per Newton step), /1 the default before local corrections, /4 and /5 AMS (one
 // set-up per Newton step, forcing 0.1 and 0.01), /6 AMS at 0.1 without Newton's oversolving guard
 // (the solver before it); /7 and /8 today's defaults with CHOLMOD and AMS (2D start, local
-// corrections; the others have none); max_sector_change is the largest relative change of a gap's
+// corrections; the others have none), /9 the AMS default of session 48 (forcing 0.1, 500 seed
+// edges holding 90 % of |R|^2); max_sector_change is the largest relative change of a gap's
 // 10-degree sector average from /0 (or from the first variant run), flux_change that of lambda.
 void BM_AnnularValveLeadSlotHalfSwept(benchmark::State& state) {
   static Results3d previous;
@@ -99,6 +103,8 @@ void BM_AnnularValveLeadSlotHalfSwept(benchmark::State& state) {
   if (!v.reuse) options.reuse_iterations = 0;
   options.linear = v.linear;
   if (v.linear == LinearSolver3d::ams) options.ams_max_forcing = v.ams_forcing;
+  if (v.ams_seeds > 0) options.ams_local_max_dofs = v.ams_seeds;
+  if (v.ams_fraction > 0.0) options.ams_local_fraction = v.ams_fraction;
   if (!v.guard) options.newton.oversolve_guard = 0.0;
   if (!v.local) options.newton.local_iterations = 0;
   for (auto _ : state) {
@@ -131,7 +137,7 @@ void BM_AnnularValveLeadSlotHalfSwept(benchmark::State& state) {
                  (v.local ? ", local corrections" : ""));
 }
 BENCHMARK(BM_AnnularValveLeadSlotHalfSwept)
-    ->DenseRange(0, 8)
+    ->DenseRange(0, 9)
     ->Iterations(1)
     ->Unit(benchmark::kSecond)
     ->UseRealTime();

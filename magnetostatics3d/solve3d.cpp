@@ -274,7 +274,11 @@ Solve3dResult solve_problem_3d(const cases::Problem& problem, const std::vector<
     initial = revolved_2d_solution(closed, source_meridian, *out.mesh);
   }
   magnetostatics::NewtonOptions newton = options.newton;
-  if (options.linear == LinearSolver3d::ams) newton.max_forcing = options.ams_max_forcing;
+  if (options.linear == LinearSolver3d::ams) {
+    newton.max_forcing = options.ams_max_forcing;
+    newton.local_max_dofs = options.ams_local_max_dofs;
+    newton.local_fraction = options.ams_local_fraction;
+  }
   if (options.progress && !newton.on_step)
     newton.on_step = newton_progress(options.progress, start, newton.relative_tolerance);
   out.solver = std::make_unique<EdgeSolver>(

@@ -129,5 +129,26 @@ TEST(LocalCorrections3d, SameFieldInFewerNewtonSteps) {
   }
 }
 
+// AMS's defaults (Newton's forcing 0.01, 2 000 seed edges holding 80 % of |R|^2) against those
+// of session 48 (0.1, 500, 90 %) on the same model from A = 0: the same field within 1e-6 (both
+// converge to 1e-8), with more local corrections (measured 2 -> 6) in fewer Newton steps (6 -> 5;
+// CG iterations 38 -> 39). On the bundled valve's lead-slot half model they cut 8 Newton steps
+// to 5 (docs/performance.md, session 49).
+TEST(LocalCorrections3d, AmsDefaultsCorrectAfterTighterSteps) {
+  const cases::Case c = small_valve_with_lead_slot();
+  Solve3dOptions now = coarse_swept_options();
+  now.linear = LinearSolver3d::ams;
+  now.warm_start = false;
+  Solve3dOptions before = now;
+  before.ams_max_forcing = 0.1;
+  before.ams_local_max_dofs = 500;
+  before.ams_local_fraction = 0.9;
+  const Solve3dResult a = solve_problem_3d(c.problem, read_features(c), before);
+  const Solve3dResult b = solve_problem_3d(c.problem, read_features(c), now);
+  expect_same_gap_field(a.results, b.results, 1e-6);
+  EXPECT_GT(b.solution.newton.local_steps, a.solution.newton.local_steps);
+  EXPECT_LT(b.results.newton_iterations, a.results.newton_iterations);
+}
+
 }  // namespace
 }  // namespace rheomag::magnetostatics3d
