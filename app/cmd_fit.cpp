@@ -88,7 +88,8 @@ const bool fit_registered = rheomag::app::register_command([](CLI::App& root) {
                 "Print one JSON object: the fitted model (format, kind, model, rig, drive, output, "
                 "setup, parameters with units, static_map of valve-chain; readable back as a "
                 "model file, docs/fit-model-json.md), params, train and validation "
-                "({fit_percent, rmse_percent, re}), mode");
+                "({fit_percent, rmse_percent, re, repeatability_percent, tared_at_rest_s: the "
+                "leading rest the model's output is tared over, null if none}), mode");
   cmd->add_option("--plot", o->request.plot,
                   "Write a PNG figure (measured vs model, residual) with gnuplot")
       ->check(rheomag::app::output_file());

@@ -145,6 +145,12 @@ FitReport fit_grey_box_model(const FitRequest& o, const Recording& rec, const Sa
   FitReport report = grey_box_report(
       fit, rec, train, val, [&](const Recording& other) { return simulate_greybox(other, fit); });
   report.fitted = fit_model_json(fit, rec.meta);
+  report.tared_at_rest_s = fit.tared_rest_seconds;
+  if (val.other) {  // simulate_greybox tares a validation recording at its own rest
+    const lumped::GreyboxSetup setup = lumped::greybox_setup_for(*val.other, fit.setup.kind);
+    if (const std::size_t rest = lumped::tared_rest(*val.other, setup); rest > 0)
+      report.validation_tared_at_rest_s = val.other->t[rest] - val.other->t.front();
+  }
   return report;
 }
 
@@ -297,10 +303,15 @@ nlohmann::json fit_run_json(const FitRun& run) {
   j["train"] = metrics_json(report.train, report.train_stability);
   add_repeatability(j["train"], run.train_repeatability);
   j["train_range"] = {train.begin, train.end};
+  const auto tare = [](double s) { return s > 0.0 ? nlohmann::json(s) : nlohmann::json(); };
+  j["train"]["tared_at_rest_s"] = tare(report.tared_at_rest_s);
   j["validation"] = report.validation
                         ? metrics_json(*report.validation, report.validation_stability)
                         : nlohmann::json(nullptr);
-  if (report.validation) add_repeatability(j["validation"], run.validation_repeatability);
+  if (report.validation) {
+    add_repeatability(j["validation"], run.validation_repeatability);
+    if (val.other) j["validation"]["tared_at_rest_s"] = tare(report.validation_tared_at_rest_s);
+  }
   if (val.range) j["validation_range"] = {val.range->begin, val.range->end};
   if (val.other) j["validation_file"] = o.validate;
   j["mode"] = o.mode == EvalMode::simulation ? "simulation" : "prediction";
@@ -331,11 +342,20 @@ void write_fit_run_text(const FitRun& run, std::ostream& out) {
       out << format_text("%-34s FIT %7.2f %%   (its own mean cycle: no periodic model beats it)\n",
                          "  repeatability", *rep);
   };
+  const auto tared = [&out](double seconds) {
+    if (seconds > 0.0)
+      out << format_text(
+          "  (the model's output tared to the recording's level over its first "
+          "%.2f s, at rest)\n",
+          seconds);
+  };
   line("train " + range_text(train), r.train, r.train_stability);
+  tared(r.tared_at_rest_s);
   repeatability(run.train_repeatability);
   if (r.validation) {
     line("validation " + (val.range ? range_text(*val.range) : o.validate), *r.validation,
          r.validation_stability);
+    if (val.other) tared(r.validation_tared_at_rest_s);
     repeatability(run.validation_repeatability);
   }
   out << format_text("parameters:\n");

@@ -55,6 +55,9 @@ struct FitReport {
   std::vector<double> train_output, validation_output;
   std::optional<StabilityVerdict> train_stability;       ///< black-box, simulation mode only
   std::optional<StabilityVerdict> validation_stability;  ///< black-box, simulation mode only
+  /// [s] grey-box: the leading rest over which the model's output is tared to the training /
+  /// validation recording's level (GreyboxFit::tared_rest_seconds); 0 where it is not tared
+  double tared_at_rest_s = 0.0, validation_tared_at_rest_s = 0.0;
 };
 
 /// A finished fit: the request, the data it used and the report.

@@ -450,6 +450,11 @@ GreyboxFit fit_greybox(const lumped::Recording& rec, const std::string& model,
                      std::to_string(min_samples) + " training samples, got " +
                      std::to_string(range.size()));
   fit.train_range = range;
+  // Training that starts after the rest is simulated from its own first sample, so it cannot be
+  // tared; the run over the whole recording then keeps the level the fit found, untared too.
+  if (range.begin != 0) data.series.front().rest_samples = 0;
+  if (const std::size_t rest = d.rest_samples; rest > 0)
+    fit.tared_rest_seconds = d.t[rest] - d.t[0];
   data.ranges.push_back(range);
   double y_scale = 0.0;
   for (std::size_t i = range.begin; i < range.end; ++i)

@@ -76,6 +76,9 @@ struct GreyboxFit {
   std::vector<double> simulated;        ///< free-run model output over the whole recording
   lumped::Metrics train;                ///< simulation-mode metrics on the training samples
   lumped::SampleRange train_range;
+  /// [s] the recording's leading rest over which the model's output is tared to its level
+  /// (lumped::tared_rest); 0 where it is not tared (no rest, or training that starts after it)
+  double tared_rest_seconds = 0.0;
   double residual_sigma = 0.0;  ///< [output unit] rms residual on the training samples
   int starts_run = 0;
   int best_start = 0;

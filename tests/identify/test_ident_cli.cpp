@@ -225,3 +225,25 @@ TEST(FitHelp, NamesTheModesAndTheDefaults) {
         << line;
   }
 }
+
+// Reference: UTFPR's 0 V test 10 (tests/data/labcontrol) lies 2.91 s at rest before it moves
+// (its first sample above 5 % of the motion's rms, at 100 Hz) and test 1 1.80 s: `fit` says that
+// it tares the model's output there, in its text and JSON (tolerance: one sample, 0.01 s), and a
+// fit that trains after the rest is not tared (null).
+TEST(FitCliRest, SaysWhereItTaresTheModelAtRest) {
+  const std::string data = std::string(RHEOMAG_TEST_DATA) + "/labcontrol/";
+  const std::string rec = data + "0V_test10_1.csv", other = data + "0V_test1_1.csv";
+  const CliRun text = run_cli(rec + " --model bingham --quiet");
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("tared to the recording's level over its first 2.91 s, at rest"),
+            std::string::npos)
+      << text.out;
+  const CliRun whole = run_cli(rec + " --model bingham --quiet --json --validate " + other);
+  ASSERT_EQ(whole.code, 0) << whole.err;
+  const auto j = nlohmann::json::parse(whole.out);
+  EXPECT_NEAR(j["train"]["tared_at_rest_s"].get<double>(), 2.91, 0.01);
+  EXPECT_NEAR(j["validation"]["tared_at_rest_s"].get<double>(), 1.80, 0.01);
+  const CliRun after = run_cli(rec + " --model bingham --quiet --json --train 1000:");
+  ASSERT_EQ(after.code, 0) << after.err;
+  EXPECT_TRUE(nlohmann::json::parse(after.out)["train"]["tared_at_rest_s"].is_null());
+}
