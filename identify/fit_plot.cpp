@@ -58,6 +58,35 @@ bool gnuplot_available() {
   return false;
 }
 
+std::string fit_plot_script(const std::string& png_path, const std::string& title,
+                            const std::string& output_label,
+                            const std::vector<PlotSegment>& segments,
+                            const std::vector<std::string>& data_files) {
+  std::ostringstream gp;
+  gp << "set terminal pngcairo size 1400,900 font 'sans,11' noenhanced\n"
+     << "set output " << quoted(png_path) << "\n"
+     << "set multiplot layout 2,1 title " << quoted(title) << "\n"
+     << "set grid\nset key outside right top\nset xlabel 't [s]'\n"
+     << "set ylabel " << quoted(output_label) << "\n";
+  const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
+  gp << "plot ";
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    if (s) gp << ", ";
+    gp << quoted(data_files[s]) << " using 1:2 with lines lw 1.5 lc rgb 'black' title "
+       << quoted(s == 0 ? "measured" : "") << ", " << quoted(data_files[s])
+       << " using 1:3 with lines lw 1.2 lc rgb '" << colours[s % 4] << "' title "
+       << quoted("model, " + segments[s].label);
+  }
+  gp << "\nset ylabel " << quoted("residual (measured - model)") << "\nplot ";
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    if (s) gp << ", ";
+    gp << quoted(data_files[s]) << " using 1:4 with lines lw 1 lc rgb '" << colours[s % 4]
+       << "' title " << quoted(segments[s].label);
+  }
+  gp << "\nunset multiplot\nset output\n";
+  return gp.str();
+}
+
 void write_fit_plot(const std::string& png_path, const std::string& title,
                     const std::string& output_label, const std::vector<PlotSegment>& segments) {
   if (!gnuplot_available())
@@ -78,28 +107,8 @@ void write_fit_plot(const std::string& png_path, const std::string& title,
   // gnuplot draws into the atomic writer's temporary file beside the target.
   write_file_atomically_with(png_path, [&](const std::filesystem::path& temp) {
     {
-      std::ofstream gp(script_path);
-      gp << "set terminal pngcairo size 1400,900 font 'sans,11'\n"
-         << "set output " << quoted(temp.string()) << "\n"
-         << "set multiplot layout 2,1 title " << quoted(title) << "\n"
-         << "set grid\nset key outside right top\nset xlabel 't [s]'\n"
-         << "set ylabel " << quoted(output_label) << "\n";
-      const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
-      gp << "plot ";
-      for (std::size_t s = 0; s < segments.size(); ++s) {
-        if (s) gp << ", ";
-        gp << quoted(data_files[s]) << " using 1:2 with lines lw 1.5 lc rgb 'black' title "
-           << quoted(s == 0 ? "measured" : "") << ", " << quoted(data_files[s])
-           << " using 1:3 with lines lw 1.2 lc rgb '" << colours[s % 4] << "' title "
-           << quoted("model, " + segments[s].label);
-      }
-      gp << "\nset ylabel " << quoted("residual (measured - model)") << "\nplot ";
-      for (std::size_t s = 0; s < segments.size(); ++s) {
-        if (s) gp << ", ";
-        gp << quoted(data_files[s]) << " using 1:4 with lines lw 1 lc rgb '" << colours[s % 4]
-           << "' title " << quoted(segments[s].label);
-      }
-      gp << "\nunset multiplot\nset output\n";
+      std::ofstream(script_path) << fit_plot_script(temp.string(), title, output_label, segments,
+                                                    data_files);
     }
     const std::string program = "gnuplot";
     const std::string script = script_path.string();
