@@ -52,16 +52,18 @@ CandidateScore fitted_score(const DiagnosisModel& model, const Candidate* c, int
 }
 
 /// Whether candidate `c` is tried again at `step` (> 0). A candidate fitted at the first step is
-/// retried unless it made the fit clearly worse alone (BIC up by more than `margin`): masked by
-/// a larger effect, it still gets its second chance. A candidate screened out at the first step
-/// (no decade of its parameter helped the bare baseline) is re-screened once, at the step after
-/// the first accepted effect, and not after it: an effect can be invisible beside the one it
-/// sits next to (a Coulomb step beside a chamber compliance that is not yet in) and show once
-/// that one is in; one that shows only after two others is not looked for.
+/// retried at every step unless it made the fit clearly worse alone (BIC up by more than
+/// `margin`): masked by a larger effect, it still gets its second chance. A candidate screened
+/// out at the first step (no decade of its parameter helped the bare baseline), or fitted there
+/// and clearly worse, is tried once more, at the step after the first accepted effect, and not
+/// after it: an effect can be invisible beside the one it sits next to (a Coulomb step beside a
+/// chamber compliance, a magnetic loop beside air, that is not yet in) and show once that one is
+/// in; one that shows only after two others is not looked for.
 bool worth_retrying(const std::vector<CandidateScore>& scores, const Candidate* c, int step,
                     double margin) {
   for (const auto& s : scores)
-    if (s.step == 0 && s.effect == c) return s.screened ? step == 1 : s.delta_bic > -margin;
+    if (s.step == 0 && s.effect == c)
+      return s.screened || s.delta_bic <= -margin ? step == 1 : true;
   return false;
 }
 
