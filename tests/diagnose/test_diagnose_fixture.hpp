@@ -78,6 +78,17 @@ inline void print_findings(const diagnose::Diagnosis& d) {
   }
 }
 
+/// Prints the diagnosis's FIT against the noise ceiling, its findings and every candidate it
+/// scored, one line per forward-selection step (ΔBIC, screened or fitted).
+inline void print_selection(const diagnose::Diagnosis& d, double noise_ceiling) {
+  std::cout << "baseline FIT " << d.baseline_fit_percent << ", final " << d.final_fit_percent
+            << ", ceiling " << noise_ceiling << "\n";
+  print_findings(d);
+  for (const auto& s : d.candidates)
+    std::cout << "  step " << s.step + 1 << " " << s.effect->name() << " dBIC " << s.delta_bic
+              << (s.screened ? " screened" : "") << "\n";
+}
+
 /// The diagnosis with default options (candidate timings on stderr if RHEOMAG_DIAGNOSE_TRACE set).
 inline diagnose::Diagnosis run_diagnosis(const lumped::Recording& rec) {
   diagnose::DiagnoseOptions options;

@@ -34,12 +34,7 @@ TEST(DiagnoseMasked, FrictionScreenedOutBesideAirIsNamedOnceTheAirIsIn) {
                             "current=steps:levels=0/1/0.5,period=0.3"}),
       15.0);
   const auto d = rheomag::test::run_diagnosis(v.noisy);
-  std::cout << "baseline FIT " << d.baseline_fit_percent << ", final " << d.final_fit_percent
-            << ", ceiling " << v.noise_ceiling << "\n";
-  rheomag::test::print_findings(d);
-  for (const auto& s : d.candidates)
-    std::cout << "  step " << s.step + 1 << " " << s.effect->name() << " dBIC " << s.delta_bic
-              << (s.screened ? " screened" : "") << "\n";
+  rheomag::test::print_selection(d, v.noise_ceiling);
   for (const auto& note : d.notes) std::cout << "  note: " << note << "\n";
 
   // The masking happened: at step 1 the friction was screened out (no decade of it helped).

@@ -54,12 +54,7 @@ TEST(DiagnoseMasked, HysteresisThatAloneMadeTheFitWorseIsTriedAgainOnceTheAirIsI
   std::normal_distribution<double> noise(0.0, 0.001);  // 0.1 % of the 1 A range
   for (double& i : v.noisy.columns.at("current")) i += noise(rng);
   const auto d = rheomag::test::run_diagnosis(v.noisy);
-  std::cout << "baseline FIT " << d.baseline_fit_percent << ", final " << d.final_fit_percent
-            << ", ceiling " << v.noise_ceiling << "\n";
-  rheomag::test::print_findings(d);
-  for (const auto& s : d.candidates)
-    std::cout << "  step " << s.step + 1 << " " << s.effect->name() << " dBIC " << s.delta_bic
-              << (s.screened ? " screened" : "") << "\n";
+  rheomag::test::print_selection(d, v.noise_ceiling);
 
   // The masking happened: at step 1 the Duhem was fitted, not screened out, and made BIC worse
   // by more than the margin (10).
