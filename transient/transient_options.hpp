@@ -48,6 +48,10 @@ struct TransientOptions {
   /// Equal steps: when the local error indicator exceeds kStepCheckTrigger, measure the run's
   /// error against a run of half the step (TransientResult::step_error).
   bool check_steps = true;
+  /// > 0: end the run at the first step after which every fluid gap's mean |B| has passed this
+  /// fraction of its change (a response time needs no more: rise times are first crossings, so
+  /// those up to the fraction are the whole run's, bit for bit); 0: simulate the whole duration.
+  double stop_at_gap_fraction = 0.0;
 };
 
 /// Indicator of the local error (per step, relative to lambda's change) above which a run of

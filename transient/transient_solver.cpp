@@ -45,6 +45,15 @@ void check_options(const TransientOptions& o, const std::string& where) {
          "current; expected a different --current or --from");
   if (!(o.tolerance > 0.0) || !std::isfinite(o.tolerance)) fail("tolerance must be > 0");
   if (!(o.max_step >= 0.0) || !(o.first_step >= 0.0)) fail("step limits must be >= 0 s");
+  if (!(o.stop_at_gap_fraction >= 0.0 && o.stop_at_gap_fraction <= 1.0))
+    fail("the gaps' fraction to stop at must be in [0, 1] (0: the whole duration)");
+}
+
+/// Whether `values` has reached `fraction` of its change from `start` to `end` (as rise_time).
+bool has_risen(const std::vector<double>& values, double start, double end, double fraction) {
+  if (end == start || values.empty()) return false;
+  const double target = start + fraction * (end - start);
+  return (end > start ? 1.0 : -1.0) * (values.back() - target) >= 0.0;
 }
 
 /// (s, w) points of the scheme on the step [0, 1].
@@ -251,6 +260,7 @@ TransientResult TransientSolver::run(const TransientOptions& options,
   std::vector<double> t_history;
   double worst_imbalance = 0.0;    // largest |source - field work - losses| of a step [J]
   double worst_dissipation = 0.0;  // largest |field work - dW| of a step [J]
+  std::vector<char> gap_risen(result.gaps.size(), 0);  // for stop_at_gap_fraction
   double t = 0.0;
   while (t < duration * (1.0 - 1e-12)) {
     h = std::min(h, duration - t);
@@ -358,6 +368,17 @@ TransientResult TransientSolver::run(const TransientOptions& options,
              << " %), step " << h << " s, i = " << current << " A, Newton " << report.iterations
              << ", about " << std::setprecision(2) << left << " s left";
       options.progress({"transient", t, duration, elapsed, detail.str()});
+    }
+    if (options.stop_at_gap_fraction > 0.0) {  // each gap's first crossing, once seen, stays
+      for (std::size_t g = 0; g < result.gaps.size(); ++g)
+        gap_risen[g] =
+            gap_risen[g] || has_risen(result.gaps[g].b_avg, result.gaps[g].b_avg.front(),
+                                      result.gaps[g].final_b, options.stop_at_gap_fraction);
+      if (!gap_risen.empty() &&
+          std::all_of(gap_risen.begin(), gap_risen.end(), [](char r) { return r != 0; })) {
+        result.stopped_early = t < duration * (1.0 - 1e-12);
+        break;
+      }
     }
     // Growth below 25 % keeps h, and with it the factorised step matrix (linear materials).
     if (growth > 1.0 && growth < 1.25) growth = 1.0;

@@ -78,6 +78,8 @@ struct TransientResult {
   /// whose estimate exceeds kStepCheckTrigger, the error measured against half steps instead.
   double step_error = 0.0;
   bool step_error_measured = false;  ///< step_error is the half-step measurement
+  /// The run ended before `duration` at TransientOptions::stop_at_gap_fraction.
+  bool stopped_early = false;
 };
 
 /// Receives every accepted state (e.g. a field writer); may be empty.
