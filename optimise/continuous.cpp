@@ -65,6 +65,7 @@ DesignReport round_counts(OptimiseEvaluator& evaluator, const OptimiseSpec& spec
   if (counts.empty()) return design;
   evaluator.exact_winding(true);  // candidates as their written cases have them
   std::optional<DesignReport> chosen;
+  std::vector<std::vector<double>> tried;
   for (int mode = 0; mode < 3; ++mode) {
     std::vector<double> x = design.x;
     for (std::size_t i : counts) {
@@ -73,11 +74,16 @@ DesignReport round_counts(OptimiseEvaluator& evaluator, const OptimiseSpec& spec
                                    : std::ceil(x[i]);
       x[i] = std::clamp(v, std::ceil(spec.variables[i].lower), std::floor(spec.variables[i].upper));
     }
+    // Rounded is floor or ceiling for a single count: each design is solved once.
+    if (std::find(tried.begin(), tried.end(), x) != tried.end()) continue;
+    tried.push_back(x);
     DesignReport candidate = fresh_mesh_report(evaluator, spec, x, "rounding", history);
     if (!chosen || better_design(candidate, *chosen, spec.maximise)) chosen = std::move(candidate);
   }
-  evaluator.remesh_next();
-  evaluator.evaluate(chosen->x);  // the chosen design's field for the .vtu
+  if (tried.back() != chosen->x) {  // the chosen design's field for the .vtu
+    evaluator.remesh_next();
+    evaluator.evaluate(chosen->x);
+  }
   evaluator.exact_winding(false);
   return *chosen;
 }

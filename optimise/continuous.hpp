@@ -33,7 +33,8 @@ ContinuousOptimum optimise_continuous(OptimiseEvaluator& evaluator, const Optimi
 
 /// The design with every template count of `c` (e.g. geometry.turns) and the wire gauge rounded
 /// (the gauge's candidates evaluated with the case's own whole turns): all to the
-/// nearest, all down, all up, each checked on a fresh mesh; the best (feasible first) wins.
+/// nearest, all down, all up, each distinct design checked on a fresh mesh; the best (feasible
+/// first) wins.
 /// Returns `design` unchanged if there is no count. Afterwards the evaluator's last field is the
 /// returned design's.
 DesignReport round_counts(OptimiseEvaluator& evaluator, const OptimiseSpec& spec,
