@@ -52,7 +52,8 @@ nlohmann::json design_json(const rheomag::optimise::DesignReport& d,
           {"variables", variables},
           {"quantities", quantities},
           {"constraints", constraints},
-          {"variables_at_bounds", d.variables_at_bounds}};
+          {"variables_at_bounds", d.variables_at_bounds},
+          {"strict_vertex", d.strict_vertex}};
 }
 
 int run_optimise(const OptimiseCli& o) {

@@ -23,6 +23,18 @@ DesignReport fresh_mesh_report(OptimiseEvaluator& evaluator, const OptimiseSpec&
 }
 }  // namespace
 
+bool is_strict_vertex(const OptimiseSpec& spec, const NlpResult& solved) {
+  if (solved.bound_multipliers.size() != spec.variables.size() || !solved.converged) return false;
+  for (std::size_t i = 0; i < spec.variables.size(); ++i) {
+    const auto& v = spec.variables[i];
+    const double z = solved.bound_multipliers[i], near = 1e-6 * (v.upper - v.lower);
+    const bool pressed = (z >= kVertexMultiplier && solved.x[i] <= v.lower + near) ||
+                         (z <= -kVertexMultiplier && solved.x[i] >= v.upper - near);
+    if (!pressed) return false;
+  }
+  return true;
+}
+
 ContinuousOptimum optimise_continuous(OptimiseEvaluator& evaluator, const OptimiseSpec& spec,
                                       const std::vector<double>& start,
                                       const design::Quantities* start_q, double objective_scale,
@@ -48,6 +60,7 @@ ContinuousOptimum optimise_continuous(OptimiseEvaluator& evaluator, const Optimi
     out.iterations += solved.iterations;
     program.forget();
     out.report = fresh_mesh_report(evaluator, spec, solved.x, "fresh_mesh", history);
+    out.report.strict_vertex = is_strict_vertex(spec, solved);
     if (out.report.feasible || solved.infeasible) break;
     from = solved.x;
   }

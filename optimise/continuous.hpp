@@ -31,6 +31,10 @@ ContinuousOptimum optimise_continuous(OptimiseEvaluator& evaluator, const Optimi
                                       const IpoptSettings& settings,
                                       std::vector<HistoryRow>& history);
 
+/// Whether Ipopt's (converged) solution of `spec`'s scaled program has every variable on the
+/// bound its multiplier presses on by at least kVertexMultiplier (DesignReport::strict_vertex).
+bool is_strict_vertex(const OptimiseSpec& spec, const NlpResult& solved);
+
 /// The design with every template count of `c` (e.g. geometry.turns) and the wire gauge rounded
 /// (the gauge's candidates evaluated with the case's own whole turns): all to the
 /// nearest, all down, all up, each distinct design checked on a fresh mesh; the best (feasible

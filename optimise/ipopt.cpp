@@ -80,10 +80,12 @@ class DenseTnlp : public Ipopt::TNLP {
     for (Index k = 0; k < n * m; ++k) values[k] = jacobian_[k];
     return true;
   }
-  void finalize_solution(Ipopt::SolverReturn, Index n, const Number* x, const Number*,
-                         const Number*, Index m, const Number* g, const Number*, Number f,
+  void finalize_solution(Ipopt::SolverReturn, Index n, const Number* x, const Number* z_lower,
+                         const Number* z_upper, Index m, const Number* g, const Number*, Number f,
                          const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
     result.x.assign(x, x + n);
+    result.bound_multipliers.resize(n);
+    for (Index i = 0; i < n; ++i) result.bound_multipliers[i] = z_lower[i] - z_upper[i];
     result.g.assign(g, g + m);
     result.f = f;
   }

@@ -37,6 +37,9 @@ struct NlpResult {
   bool infeasible = false;  ///< Infeasible_Problem_Detected
   std::string status;       ///< Ipopt's return status as text
   int iterations = 0;
+  /// Bound multipliers at the solution per variable, z_lower - z_upper (> 0: f would fall
+  /// below the lower bound, < 0: above the upper; about 0 off the bounds).
+  std::vector<double> bound_multipliers;
 };
 
 /// Solves the program with Ipopt (hessian_approximation limited-memory). Throws

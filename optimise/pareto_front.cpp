@@ -54,6 +54,13 @@ ParetoFront pareto_front(const OptimiseSpec& spec, const DesignReport& objective
     point.epsilon = first_level + (last_level - first_level) * k / (n - 1);
     if (k == 0) {  // the objective's own optimum satisfies its own level
       point.design = objective_alone;
+    } else if (k == n - 1 && front.second_alone.strict_vertex) {
+      // At the second objective's own level, a strict vertex is the only design in the box:
+      // it is reported for the objective, with its transient check if it had one.
+      const DesignReport& vertex = front.second_alone;
+      point.design = report_design(spec, vertex.x, vertex.quantities);
+      point.design.response_time_transient = vertex.response_time_transient;
+      point.design.strict_vertex = true;
     } else {
       OptimiseSpec level = spec;
       level.pareto.reset();
@@ -63,6 +70,8 @@ ParetoFront pareto_front(const OptimiseSpec& spec, const DesignReport& objective
       limit.where = "optimise.pareto level " + std::to_string(k + 1);
       level.constraints.push_back(limit);
       const int before = solves();
+      // The last level is the second objective's own optimum's: start there, not a level away.
+      if (k == n - 1) start = front.second_alone.x;
       point.design = optimise(level, start, objective_scale);
       point.fe_solves = solves() - before;
       point.design.constraints.pop_back();  // report against the spec's own constraints

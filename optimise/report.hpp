@@ -30,7 +30,15 @@ struct DesignReport {
   /// response_model = "quasi_static": response_time by the two transient runs, where checked
   /// (the optimum and the Pareto levels).
   std::optional<double> response_time_transient;
+  /// A continuous optimum with every variable on a bound that its objective presses on (Ipopt's
+  /// bound multiplier above kVertexMultiplier): a vertex of the box that no nearby design in the
+  /// box matches, so the only design at its own objective's level.
+  bool strict_vertex = false;
 };
+
+/// Smallest bound multiplier (on the scaled program: objective change per unit of the
+/// variable's range over its start value) that counts a bound as pressed on: 0.1 %.
+inline constexpr double kVertexMultiplier = 1e-3;
 
 /// Feasibility tolerance: a constraint may be exceeded by this fraction of its bound.
 inline constexpr double kFeasibilityTolerance = 1e-3;

@@ -351,6 +351,9 @@ std::string format_summary(const OptimiseResult& r) {
         out << "  " << number_text(*p.design.response_time_transient);
       out << "\n";
     }
+    if (r.pareto->points.size() > 1 && r.pareto->points.back().design.strict_vertex)
+      out << "  (last level: the " << q << " optimum itself, every variable pressed on a bound: "
+          << "no other design meets that level)\n";
   }
   out << "\nwritten: " << r.case_file.string() << ", " << r.history_file.string() << ", "
       << r.vtu_file.string();

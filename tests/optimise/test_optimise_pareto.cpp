@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "optimise/continuous.hpp"
 #include "optimise/pareto_front.hpp"
 #include "optimise/problem.hpp"
 #include "optimise/report.hpp"
@@ -30,7 +31,9 @@ struct AnalyticOptimiser {
     settings.max_iterations = spec.max_iterations;
     const auto solved = program.solve(start, settings);
     EXPECT_TRUE(solved.converged) << solved.status;
-    return optimise::report_design(spec, solved.x, model.quantities(solved.x));
+    auto report = optimise::report_design(spec, solved.x, model.quantities(solved.x));
+    report.strict_vertex = optimise::is_strict_vertex(spec, solved);
+    return report;
   }
 };
 
@@ -104,10 +107,49 @@ TEST(OptimisePareto, EpsilonConstraintFrontMatchesTheAnalyticFront) {
     }
   }
   // End points: the objective's own optimum and, at the last level, the turns at their bound.
+  // tau does not depend on L, so the tau optimum is no strict vertex and the last level is
+  // optimised (its L on the envelope: dp within 1e-4 above).
+  EXPECT_FALSE(front.second_alone.strict_vertex);
   EXPECT_DOUBLE_EQ(front.points.front().design.objective, alone.objective);
   EXPECT_NEAR(front.points.back().design.x[1], spec.variables[1].lower, 1e-4 * 50.0);
   const std::string csv = optimise::pareto_csv(spec, front);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 7);  // header + 6 levels
+}
+
+// Front of max dp_on against min length = 2 L + a N. The length optimum is the box's vertex
+// (L, N) = (1 mm, 50): both bounds pressed on (length grows with each), so no other design has
+// its length and it is the last level as found, with no optimisation (0 solves), its dp
+// gain L N exactly. A middle level eps: max gain L N with 2 L + a N <= eps gives L = eps / 4,
+// N = eps / (2 a), dp = gain eps^2 / (8 a) (within 1e-4).
+TEST(OptimisePareto, LastLevelAtAStrictVertexIsTheSecondOptimumItself) {
+  AnalyticOptimiser optimiser;
+  const auto& m = optimiser.model;
+  auto spec = m.spec();
+  spec.pareto = optimise::ParetoSpec{design::Quantity::length, false, 3};
+  const std::vector<double> x0 = {5e-3, 200.0};
+  const auto alone = optimiser(spec, x0, std::abs(m.quantities(x0)[design::Quantity::dp_on]));
+  int solves = 0;
+  const optimise::OptimiseFrom from = [&](const optimise::OptimiseSpec& s,
+                                          const std::vector<double>& start, double scale) {
+    const auto before = optimiser.history.size();
+    auto r = optimiser(s, start, scale);
+    solves += static_cast<int>(optimiser.history.size() - before);
+    return r;
+  };
+  const auto front = optimise::pareto_front(spec, alone, from, [&] { return solves; });
+  ASSERT_EQ(front.points.size(), 3u);
+  EXPECT_TRUE(front.second_alone.strict_vertex);
+  const auto& last = front.points.back();
+  EXPECT_TRUE(last.design.strict_vertex);
+  EXPECT_EQ(last.fe_solves, 0);
+  EXPECT_EQ(last.design.x, front.second_alone.x);
+  const double dp_vertex = m.gain() * 1e-3 * 50.0;
+  EXPECT_NEAR(last.design.objective, dp_vertex, 1e-6 * dp_vertex);  // reported for dp_on
+  EXPECT_TRUE(last.design.feasible);
+  const double eps = front.points[1].epsilon;
+  const double dp_middle = m.gain() * eps * eps / (8.0 * m.a);
+  EXPECT_NEAR(front.points[1].design.objective, dp_middle, 1e-4 * dp_middle);
+  EXPECT_GT(front.points[1].fe_solves, 0);
 }
 
 }  // namespace
