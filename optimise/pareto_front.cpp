@@ -1,5 +1,7 @@
 #include "optimise/pareto_front.hpp"
 
+#include <algorithm>
+
 #include <unistd.h>
 #include <cmath>
 #include <cstdlib>
@@ -70,8 +72,16 @@ ParetoFront pareto_front(const OptimiseSpec& spec, const DesignReport& objective
       limit.where = "optimise.pareto level " + std::to_string(k + 1);
       level.constraints.push_back(limit);
       const int before = solves();
-      // The last level is the second objective's own optimum's: start there, not a level away.
-      if (k == n - 1) start = front.second_alone.x;
+      // Predicted start: along the line from the previous level's optimum to the second
+      // objective's, as far as this level is from the previous towards the last (the last
+      // level starts on that optimum).
+      const double previous = front.points.back().epsilon;
+      const double along =
+          last_level != previous
+              ? std::clamp((point.epsilon - previous) / (last_level - previous), 0.0, 1.0)
+              : 1.0;
+      for (std::size_t i = 0; i < start.size(); ++i)
+        start[i] += along * (front.second_alone.x[i] - start[i]);
       point.design = optimise(level, start, objective_scale);
       point.fe_solves = solves() - before;
       point.design.constraints.pop_back();  // report against the spec's own constraints

@@ -1,7 +1,8 @@
 #pragma once
 // The epsilon-constraint Pareto front of [optimise.pareto]: the objective is optimised while the
 // second objective is constrained at levels between its two single-objective extremes, each
-// level warm-started from the previous optimum. Format and method: docs/optimisation.md.
+// level started on the line from the previous level's optimum to the second objective's. Format and
+// method: docs/optimisation.md.
 
 #include <filesystem>
 #include <functional>
