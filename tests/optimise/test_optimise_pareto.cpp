@@ -37,6 +37,17 @@ struct AnalyticOptimiser {
   }
 };
 
+// The front's optimiser: `optimiser`, its evaluations counted in `solves`.
+optimise::OptimiseFrom counting(AnalyticOptimiser& optimiser, int& solves) {
+  return [&optimiser, &solves](const optimise::OptimiseSpec& s, const std::vector<double>& start,
+                               double scale) {
+    const auto before = optimiser.history.size();
+    auto r = optimiser(s, start, scale);
+    solves += static_cast<int>(optimiser.history.size() - before);
+    return r;
+  };
+}
+
 // Weighted sum f = dp_on / dp_0 - w tau / tau_0 (each term normalised by its value at the start
 // design x0 = (L0, N0), as run_optimisation does). On the envelope L = (L_max - a N) / 2,
 // df/dN = 0 gives N* = (L_max - 2 w L0) / (2 a) (dp_0 = gain L0 N0, tau_0 = b N0): for w = 1,
@@ -80,13 +91,7 @@ TEST(OptimisePareto, EpsilonConstraintFrontMatchesTheAnalyticFront) {
   ASSERT_NEAR(alone.x[1], n_star, 1e-4 * n_star);
 
   int solves = 0;
-  const optimise::OptimiseFrom from = [&](const optimise::OptimiseSpec& s,
-                                          const std::vector<double>& start, double scale) {
-    const auto before = optimiser.history.size();
-    auto r = optimiser(s, start, scale);
-    solves += static_cast<int>(optimiser.history.size() - before);
-    return r;
-  };
+  const optimise::OptimiseFrom from = counting(optimiser, solves);
   const auto front = optimise::pareto_front(spec, alone, from, [&] { return solves; });
   ASSERT_EQ(front.points.size(), 6u);
   const double tau_min = m.b * spec.variables[1].lower;
@@ -129,13 +134,7 @@ TEST(OptimisePareto, LastLevelAtAStrictVertexIsTheSecondOptimumItself) {
   const std::vector<double> x0 = {5e-3, 200.0};
   const auto alone = optimiser(spec, x0, std::abs(m.quantities(x0)[design::Quantity::dp_on]));
   int solves = 0;
-  const optimise::OptimiseFrom from = [&](const optimise::OptimiseSpec& s,
-                                          const std::vector<double>& start, double scale) {
-    const auto before = optimiser.history.size();
-    auto r = optimiser(s, start, scale);
-    solves += static_cast<int>(optimiser.history.size() - before);
-    return r;
-  };
+  const optimise::OptimiseFrom from = counting(optimiser, solves);
   const auto front = optimise::pareto_front(spec, alone, from, [&] { return solves; });
   ASSERT_EQ(front.points.size(), 3u);
   EXPECT_TRUE(front.second_alone.strict_vertex);
