@@ -233,14 +233,21 @@ QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double 
   // The state at `current` (the earlier design's state k) from the earlier state A0 by chord
   // steps with its tangent's factorisation K0, A_j+1 = A_j - K0^-1 (R(A_j) - R0), R0 the residual
   // Newton left at A0 (so this state keeps A0's error and the designs' difference is smooth),
-  // until |R(A_j) - R0| is within Newton's tolerance (j >= 1; measured: 2 for a change of turns,
-  // 3 for a morphed mesh, whose residual at A0 is larger than the load) or the steps have
+  // until |R(A_j) - R0| is within Newton's tolerance (j >= 1; measured: 2 for a change of turns
+  // on the same currents, 3 for a morphed mesh, whose residual at A0 is larger than the load;
+  // j = 0 for a same_fraction state) or the steps have
   // settled (`settled`: then 2 where the residual needed 3); then dA/di_m from A0's
   // by steps s += K0^-1 (F - K(A_j) s). Both errors are second order in the designs' difference
   // (a tangent at A1 moved L_d by 10 % of its change in a saturation knee). Newton from A_4 when
   // the steps did not converge.
   constexpr int kChordSteps = 4;
   const magnetostatics::NewtonOptions& newton = statics.options().newton;
+  // Whether the earlier states at the same fraction of the range have so far been this design's
+  // own (dropped at the first miss): they are, to rounding, when the designs differ only in the
+  // first circuit's turns (its source F scaled by s) and the range in V / R with R in proportion
+  // to the turns, since state k then carries the same ampere-turns, I'_k = I_k / s, and
+  // R'(A_k, I'_k) = K(A_k) - s F I_k / s = R(A_k, I_k). Such a state needs no chord step.
+  bool same_fraction = low == 0.0;
   auto linearised_at = [&](double current, std::size_t k) {
     held[0] = current;
     const magnetostatics::FrozenFactor& factor = *earlier->factors[k];
@@ -249,11 +256,18 @@ QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double 
     Eigen::VectorXd load = statics.fixed_source();
     for (std::size_t c = 0; c < held.size(); ++c) load += held[c] * statics.circuit_source(c);
     const double tolerance = newton.relative_tolerance * statics.nodes_to_free(load).norm();
-    Eigen::VectorXd x =
-        statics.nodes_to_free(k == 0 ? earlier->fields[0] : *from_earlier(current, k - 1));
     magnetostatics::SparseMatrix tangent;
     const Eigen::VectorXd centre = statics.nodes_to_free(earlier->fields[k]);
     bool converged = false;
+    // dA/di_m's start: the earlier state's, scaled by I_k / I'_k when that state is this one.
+    double slope_scale = 1.0;
+    if (same_fraction && k > 0 && current > 0.0) {
+      converged = (statics.residual(earlier->fields[k], held, tangent) - left).norm() <= tolerance;
+      same_fraction = converged;
+      if (converged) slope_scale = earlier->currents[k] / current, ++table.same_ampere_turns;
+    }
+    Eigen::VectorXd x =
+        converged || k == 0 ? centre : statics.nodes_to_free(*from_earlier(current, k - 1));
     double previous_step = 0.0;
     for (int step = 0; step <= kChordSteps && !converged; ++step) {
       const Eigen::VectorXd r = statics.residual(statics.free_to_nodes(x), held, tangent) - left;
@@ -276,7 +290,7 @@ QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double 
     const Eigen::VectorXd a = statics.free_to_nodes(x);
     const Eigen::VectorXd f = statics.nodes_to_free(statics.circuit_source(0));
     const Eigen::VectorXd centre_slope = statics.nodes_to_free(earlier->slopes[k]);
-    Eigen::VectorXd slope = centre_slope;
+    Eigen::VectorXd slope = slope_scale * centre_slope;
     const auto full = tangent.selfadjointView<Eigen::Lower>();
     double previous_slope_step = 0.0;
     for (int step = 0; step < 4; ++step) {

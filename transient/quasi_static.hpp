@@ -41,6 +41,9 @@ struct QuasiStaticTable {
   std::vector<int> gap_regions;  ///< problem regions of the gaps, as in TransientResult::gaps
   int newton_iterations = 0;     ///< of all the static solves
   int linearised = 0;            ///< states found by QuasiStaticReuse::linearise, without Newton
+  /// Of those, the states that were the earlier design's own at the same fraction of the range,
+  /// without a chord step (a change of the turns alone, the range V / R; QuasiStaticReuse).
+  int same_ampere_turns = 0;
 };
 
 /// Error of the table's interpolants at a new midpoint (L_d and D relative to their values,
@@ -90,6 +93,9 @@ struct QuasiStaticReuse {
   /// Newton's tolerance, and dA/di_m of this design, both to second order in the designs'
   /// difference (the table a finite-difference neighbour needs; docs/transient.md, "Linearised
   /// neighbours"). A state whose chord steps do not converge in 4 is solved by Newton from them.
+  /// From 0 A, each earlier state at the same fraction of the range is tried first and taken
+  /// when its residual is within Newton's tolerance (the same ampere-turns after a change of
+  /// the turns alone with the range V / R), until one is not.
   bool linearise = false;
   QuasiStaticStart* keep = nullptr;  ///< when given, filled with this table's states
   /// With `keep`: also keep each state's tangent factorisation, in the order the states are

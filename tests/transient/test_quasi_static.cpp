@@ -242,10 +242,10 @@ TEST(QuasiStaticResponse, FiniteDifferenceNeighboursOnTheCentresGridAreSmooth) {
 
 /// The saturating cylinder's table at `turns` and radius `radius` [m] (the mesh moved with the
 /// radius, its nodes kept: an optimiser's morphed mesh) on 24 cells, 8 starting currents, Newton
-/// to the relative residual `tolerance`.
+/// to the relative residual `tolerance`, from 0 to `high` [A].
 transient::QuasiStaticTable cylinder_table(double turns, double radius,
                                            const transient::QuasiStaticReuse& reuse = {},
-                                           double tolerance = 1e-8) {
+                                           double tolerance = 1e-8, double high = 20.0) {
   test::Cylinder c;
   c.sigma = 5e4;
   c.turns = turns;
@@ -254,7 +254,7 @@ transient::QuasiStaticTable cylinder_table(double turns, double radius,
   options.newton.relative_tolerance = tolerance;
   magnetostatics::MagnetostaticSolver statics(c.problem(test::kSaturatingBh), c.mesh(24), options);
   transient::TransientSolver solver(statics, transient::eddy_coefficients(statics.problem(), {}));
-  return transient::quasi_static_table(solver, 0.0, 20.0, 8, reuse);
+  return transient::quasi_static_table(solver, 0.0, high, 8, reuse);
 }
 
 // Linearised finite-difference neighbours (QuasiStaticReuse::linearise) at the optimiser's
@@ -286,6 +286,7 @@ TEST(QuasiStaticResponse, LinearisedNeighboursMatchNewtonsToSecondOrder) {
     ASSERT_EQ(linearised.points.size(), at_centre.points.size());
     EXPECT_EQ(linearised.linearised, static_cast<int>(at_centre.points.size()));
     EXPECT_EQ(linearised.newton_iterations, 0);
+    EXPECT_EQ(linearised.same_ampere_turns, 0);  // the same currents: other ampere-turns
     double worst = 0.0, worst_newton = 0.0;
     auto check = [&](auto of, const char* what) {
       for (std::size_t k = 0; k < at_centre.points.size(); ++k) {
@@ -337,6 +338,47 @@ TEST(QuasiStaticResponse, LinearisedNeighboursMatchNewtonsToSecondOrder) {
     EXPECT_NEAR(far.points[k].inductance, far_newton.points[k].inductance,
                 1e-6 * far_newton.points[k].inductance);
   }
+}
+
+// A finite-difference neighbour in the turns alone (N' = s N, s = 1.001) whose range is the
+// voltage step's V / R' = 20 A / s (R in proportion to the turns): its states carry the centre's
+// ampere-turns at the same fractions, so QuasiStaticReuse::linearise takes the centre's states
+// themselves, without a chord step. Exact scaling (A(N', i / s) = A(N, i)): lambda' = s lambda to
+// rounding (1e-12), L_d' = s^2 L_d and D' = s^2 D to the slope steps' settling (1e-6 of them,
+// 5e-4 of their 2e-3 change; measured up to 2.1e-7 for D). Reference for the differences: both
+// tables solved by Newton to a 1e-10 relative residual; dt90's change within 1 % of it, as the
+// other linearised neighbours'.
+TEST(QuasiStaticResponse, TurnsNeighbourOnItsVoltageRangeIsTheCentresStatesScaled) {
+  const double turns = 10.0, radius = 0.01, s = 1.001;
+  transient::QuasiStaticStart centre, centre_exact;
+  const auto at_centre =
+      cylinder_table(turns, radius, {.keep = &centre, .keep_factor_bytes = std::size_t{1} << 30});
+  const auto at_centre_exact = cylinder_table(turns, radius, {.keep = &centre_exact}, 1e-10);
+  const auto neighbour = cylinder_table(
+      turns * s, radius, {.start = &centre, .fixed_grid = true, .linearise = true}, 1e-8, 20.0 / s);
+  const auto reference = cylinder_table(
+      turns * s, radius, {.start = &centre_exact, .fixed_grid = true}, 1e-10, 20.0 / s);
+  const auto n = static_cast<int>(at_centre.points.size());
+  ASSERT_EQ(static_cast<int>(neighbour.points.size()), n);
+  EXPECT_EQ(neighbour.linearised, n);
+  EXPECT_EQ(neighbour.same_ampere_turns, n - 1);  // all but 0 A, which is the centre's anyway
+  EXPECT_EQ(neighbour.newton_iterations, 0);
+  for (int k = 1; k < n; ++k) {
+    const transient::QuasiStaticPoint &p = neighbour.points[k], &c = at_centre.points[k];
+    EXPECT_NEAR(p.current * s / c.current, 1.0, 1e-12) << k;
+    EXPECT_NEAR(p.flux_linkage / (s * c.flux_linkage), 1.0, 1e-12) << k;
+    EXPECT_NEAR(p.inductance / (s * s * c.inductance), 1.0, 1e-6) << k;
+    EXPECT_NEAR(p.eddy_load / (s * s * c.eddy_load), 1.0, 1e-6) << k;
+  }
+  // The voltage step's t90 (R = 0.2 Ohm x the turns' ratio) on each table's own range.
+  auto t90 = [](const transient::QuasiStaticTable& table, double ratio) {
+    return *transient::quasi_static_step(table, 0.0, table.points.back().current, 0.2 * ratio).t90;
+  };
+  const double dt = t90(reference, s) - t90(at_centre_exact, 1.0);
+  const double dt_neighbour = t90(neighbour, s) - t90(at_centre, 1.0);
+  std::printf("dt90 of a 0.1 %% change of turns on V / R: %.6g s, from the scaled states %.6g s\n",
+              dt, dt_neighbour);
+  EXPECT_NEAR(dt_neighbour / dt, 1.0, 0.01);
 }
 
 // Reference: the table from 128 equal starting currents (each of their intervals is checked too,
