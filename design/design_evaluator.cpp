@@ -75,7 +75,8 @@ std::shared_ptr<const mesh::Mesh> DesignEvaluator::mesh_for(const cases::Problem
 
 const EvaluatedField& DesignEvaluator::solve(const cases::Case& design,
                                              const std::vector<double>& currents, bool same_problem,
-                                             const ProblemAdjustment& adjust) {
+                                             const ProblemAdjustment& adjust,
+                                             const Eigen::VectorXd* initial_guess) {
   using magnetostatics::MagnetostaticSolver;
   if (same_problem && last_.solver) {
     last_.solver->discard_factorisation();
@@ -101,6 +102,7 @@ const EvaluatedField& DesignEvaluator::solve(const cases::Case& design,
         reference_breakpoints_ = breakpoints;
         have_reference_ = true;
         ++built_;
+        initial_guess = nullptr;  // a new mesh: another numbering
         mesh = reference_mesh_;
       }
     }
@@ -108,7 +110,11 @@ const EvaluatedField& DesignEvaluator::solve(const cases::Case& design,
     last_.solver =
         std::make_shared<MagnetostaticSolver>(std::move(closed), std::move(mesh), options_);
   }
-  last_.solution = last_.solver->solve(currents);
+  if (policy_ == MeshPolicy::cached ||
+      (initial_guess &&
+       static_cast<std::size_t>(initial_guess->size()) != last_.solver->mesh().nodes.size()))
+    initial_guess = nullptr;  // another mesh
+  last_.solution = last_.solver->solve(currents, initial_guess);
   ++fe_solves_;
   last_.results = magnetostatics::compute_results(*last_.solver, last_.solution);
   return last_;

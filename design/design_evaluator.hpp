@@ -48,9 +48,12 @@ class DesignEvaluator {
   /// Solves `design` at `currents` (one per circuit). With `same_problem` (the caller knows
   /// that only the currents differ from the previous design) the previous solver is reused
   /// with its numeric factorisation discarded, so the numbers equal a fresh solver's.
+  /// `initial_guess` (nodal A): Newton's start when the design's mesh is a morph with that many
+  /// nodes (a nearby design's solution on a mesh of the same topology), else A = 0.
   /// InputError for an invalid design, ConvergenceError when Newton fails.
   const EvaluatedField& solve(const cases::Case& design, const std::vector<double>& currents,
-                              bool same_problem = false, const ProblemAdjustment& adjust = {});
+                              bool same_problem = false, const ProblemAdjustment& adjust = {},
+                              const Eigen::VectorXd* initial_guess = nullptr);
 
   /// The field of the last solve().
   const EvaluatedField& last() const { return last_; }

@@ -147,7 +147,13 @@ design::Quantities OptimiseEvaluator::evaluate(const std::vector<double>& x, boo
   // The on-state current: [optimise] current, or the design's own when it is a variable.
   const double on_current = current_varies_ ? c.problem.circuits[0].current : spec_.current;
   currents[0] = on_current;
-  const design::EvaluatedField& field = designs_.solve(c, currents, false, relax);
+  // A finite-difference neighbour's Newton starts from its centre's on-state field (same mesh
+  // topology; the centre itself from A = 0, so its values do not depend on the path).
+  const long long meshes_before = designs_.meshes_built();
+  const design::EvaluatedField& field =
+      designs_.solve(c, currents, false, relax,
+                     neighbour && centre_meshes_ == meshes_before ? &centre_field_ : nullptr);
+  if (!neighbour) centre_field_ = field.solution.a, centre_meshes_ = designs_.meshes_built();
   const magnetostatics::MagnetostaticSolver& solver = *field.solver;
   const magnetostatics::Results& results = field.results;
   if (results.gaps.empty()) throw InputError(base_.source.string() + ": the case has no fluid gap");

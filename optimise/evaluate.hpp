@@ -69,6 +69,8 @@ class OptimiseEvaluator {
   double response_correction_ = 1.0;       ///< see set_response_correction
   transient::QuasiStaticStart reference_;  ///< the last non-neighbour design's quasi-static states
   long long reference_meshes_ = -1;        ///< meshes_built() when reference_ was kept
+  Eigen::VectorXd centre_field_;  ///< nodal A of the last non-neighbour design's on-state solve
+  long long centre_meshes_ = -1;  ///< meshes_built() when centre_field_ was kept
   std::optional<valve::DamperOptions> damper_;  ///< [damper] of a damper case ([optimise] velocity)
   std::optional<valve::BrakeOptions> brake_;    ///< [brake] of a brake case ([optimise] speed)
   std::vector<double> region_density_;  ///< per region of the base case [kg/m^3] (mass only)
