@@ -383,6 +383,7 @@ Solution MagnetostaticSolver::solve_with(const std::vector<double>& currents,
     system.residual(x, solution.residual);  // Newton's last evaluation: no assembly
     // dlambda_c/dI_c = F_c^T K_t^{-1} F_c with K_t the exact tangent at the solution, to 1e-12
     // relative (CG's error of F.x, r.K^-1.r, below 1e-12 F.x, or a residual below 1e-12).
+    if (factorise_incremental_) refactor_next_ = true;
     prepare_jacobian(solution.a);
     for (const Eigen::VectorXd& f : sources_) {
       const Eigen::VectorXd f_reduced = reduced_source(f);

@@ -118,6 +118,11 @@ class MagnetostaticSolver {
   /// solve nearby systems with after this solver has moved on. Null when there is none: no solve
   /// since the tangent was last assembled elsewhere, or no unknowns.
   std::shared_ptr<const FrozenFactor> freeze_tangent_factor();
+  /// With `factorise` the incremental solves' dA/dI take a factorisation of the tangent at the
+  /// solution instead of conjugate gradients preconditioned with an older one: for a caller that
+  /// freezes that factorisation next (freeze_tangent_factor would factorise it anyway), the CG
+  /// iterations are saved. Default false.
+  void factorise_incremental_tangent(bool factorise) { factorise_incremental_ = factorise; }
   /// Drops the numeric factorisation but keeps the symbolic analysis: the next solve gives
   /// bitwise what a newly constructed solver of the same problem and mesh would give.
   void discard_factorisation();
@@ -199,10 +204,11 @@ class MagnetostaticSolver {
   Eigen::VectorXd tangent_nodes_;    // nodal A of the last assembled tangent
   bool tangent_assembled_ = false;   // ... which is still in free_tangent_ or tangent_
   bool linear_ = true;
-  bool factorized_linear_ = false;  // linear problem: the one factorisation stays valid
-  bool has_factor_ = false;         // cholesky_ holds a factorisation of some tangent
-  bool factor_current_ = false;     // ... of the current tangent_
-  bool refactor_next_ = true;       // the last reuse was slow: factorise at the next Jacobian
+  bool factorized_linear_ = false;      // linear problem: the one factorisation stays valid
+  bool has_factor_ = false;             // cholesky_ holds a factorisation of some tangent
+  bool factor_current_ = false;         // ... of the current tangent_
+  bool refactor_next_ = true;           // the last reuse was slow: factorise at the next Jacobian
+  bool factorise_incremental_ = false;  // factorise_incremental_tangent
   int factorizations_ = 0;
   int assemblies_ = 0;
   std::optional<Eigen::VectorXd> zero_field_load_;  // zero_field_load(), once assembled

@@ -182,6 +182,15 @@ QuasiStaticTable quasi_static_table(TransientSolver& solver, double low, double 
   std::vector<Eigen::VectorXd> residuals;
   const bool keep_factors = reuse.keep && reuse.keep_factor_bytes > 0;
   std::size_t factor_bytes = 0;  // held by `factors`
+  // Kept factorisations are of the tangent at each solution: its dA/di_m is solved with that
+  // factorisation rather than by CG before it is made (restored on every exit).
+  struct FactoriseIncremental {
+    magnetostatics::MagnetostaticSolver& statics;
+    FactoriseIncremental(magnetostatics::MagnetostaticSolver& s, bool on) : statics(s) {
+      statics.factorise_incremental_tangent(on);
+    }
+    ~FactoriseIncremental() { statics.factorise_incremental_tangent(false); }
+  } factorise_incremental(statics, keep_factors);
   // Inserts the point at `current` with nodal A `a`, dA/di_m `slope` (free dofs), lambda and
   // L_d at `at`.
   auto insert = [&](double current, const Eigen::VectorXd& a, const Eigen::VectorXd& slope,
