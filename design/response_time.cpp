@@ -51,6 +51,16 @@ ResponseTime response_time(magnetostatics::MagnetostaticSolver& statics, const c
       o.steps = options.steps;
       o.check_steps = false;         // a fixed cost per design; its accuracy is tested (docs)
       o.stop_at_gap_fraction = 0.9;  // t90 is all it reads: the steps after it change nothing
+      if (options.progress)
+        o.progress = [&](const ProgressEvent& e) {
+          ProgressEvent step = e;
+          step.stage = voltage > 0.0 ? "switch-on, % of its span" : "switch-off, % of its span";
+          step.done = e.total > 0.0 ? 100.0 * e.done / e.total : 0.0;
+          step.total = 100.0;
+          step.total_is_bound = true;
+          step.detail.clear();  // the run's own time left would mislead: it stops at t90
+          options.progress(step);
+        };
       const transient::TransientResult r = set_up.solver->run(o);
       ++out.transient_runs;
       double slowest = 0.0;

@@ -3,6 +3,7 @@
 // with the eddy currents in its steel (transient magnetics, docs/transient.md).
 
 #include "case/case_file.hpp"
+#include "core/progress.hpp"
 #include "magnetostatics/solver.hpp"
 #include "transient/quasi_static.hpp"
 
@@ -24,6 +25,10 @@ struct ResponseTimeOptions {
   /// quasi-static: an earlier design's table to start from, and where to keep this one's
   /// (transient::QuasiStaticReuse).
   transient::QuasiStaticReuse reuse;
+  /// Transient runs: one report per accepted step, stage "switch-on, ..." or "switch-off, ...",
+  /// done in per cent of the simulated span (total 100, a bound: the run ends at the slowest
+  /// gap's t90), elapsed since the run started.
+  ProgressCallback progress;
 };
 
 /// The two step responses' t90 [s] and the transient solves they took.

@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "core/progress.hpp"
 #include "optimise/continuous.hpp"
 
 namespace rheomag::optimise {
@@ -35,15 +36,18 @@ struct OptimumState {
 };
 
 /// The two transient runs' response_time of `design`, whose field is `evaluator`'s last.
+/// `progress`: each transient step (design::ResponseTimeOptions::progress).
 double transient_response_time(OptimiseEvaluator& evaluator, const OptimiseSpec& spec,
-                               const DesignReport& design, int* fe_solves = nullptr);
+                               const DesignReport& design, int* fe_solves = nullptr,
+                               const ProgressCallback& progress = {});
 
 /// Checks `state.rounded` (whose field is `evaluator`'s last) by the transient runs; while they
 /// differ from the reduction by more than kResponseCheckTolerance, at most kResponseRounds times,
 /// scales the reduction by their ratio (OptimiseEvaluator::set_response_correction) and
-/// optimises again from the continuous optimum.
+/// optimises again from the continuous optimum. `progress`: each step of the transient runs.
 ResponseCheck check_response_time(OptimiseEvaluator& evaluator, const OptimiseSpec& spec,
                                   OptimumState& state, double objective_scale,
-                                  const IpoptSettings& settings, std::vector<HistoryRow>& history);
+                                  const IpoptSettings& settings, std::vector<HistoryRow>& history,
+                                  const ProgressCallback& progress = {});
 
 }  // namespace rheomag::optimise

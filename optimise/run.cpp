@@ -72,6 +72,18 @@ std::function<void(int)> iteration_progress(const ProgressCallback& progress,
   };
 }
 
+/// Progress of a transient check: `what` and the run's own stage ("switch-on, ..."; its
+/// elapsed time, from which the time left of that run is estimated); empty without a progress
+/// callback.
+ProgressCallback check_progress(const ProgressCallback& progress, const std::string& what) {
+  if (!progress) return {};
+  return [=](const ProgressEvent& e) {
+    ProgressEvent step = e;
+    step.stage = what + " by its transient runs, " + e.stage;
+    progress(step);
+  };
+}
+
 }  // namespace
 
 OptimiseResult run_optimisation(const cases::Case& c, const OptimiseOptions& options) {
@@ -174,7 +186,8 @@ OptimiseResult run_optimisation(const cases::Case& c, const OptimiseOptions& opt
         iteration_progress(options.progress, start_time, "optimising with the checked response",
                            spec.max_iterations, *best_evaluator);
     result.response_check =
-        check_response_time(*best_evaluator, spec, state, objective_scale, settings, history);
+        check_response_time(*best_evaluator, spec, state, objective_scale, settings, history,
+                            check_progress(options.progress, "checking the optimum"));
     settings.on_iteration = {};
     best_continuous = state.continuous;
     result.optimal = result.combinations[result.chosen].optimal = state.rounded;
@@ -236,7 +249,9 @@ OptimiseResult run_optimisation(const cases::Case& c, const OptimiseOptions& opt
                                       double scale) {
       DesignReport r =
           optimise_continuous(e, level, from, nullptr, scale, settings, history).report;
-      if (check) r.response_time_transient = transient_response_time(e, spec, r, &check_solves);
+      if (check)
+        r.response_time_transient = transient_response_time(
+            e, spec, r, &check_solves, check_progress(options.progress, "checking a Pareto level"));
       return r;
     };
     result.pareto = pareto_front(spec, best_continuous, optimise,

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
 
 #include "core/error.hpp"
@@ -138,7 +139,9 @@ TEST(OptimiseResponseTime, QuasiStaticModelIsCheckedByTheTransientRunsAtTheOptim
 
 // With [optimise.pareto] over response_time, each level's optimum by the reduction is checked
 // by the transient runs too (not re-optimised: the optimum's correction carries over). Reference:
-// those runs; tolerance 3 % (the reduction's error between designs, docs/transient.md).
+// those runs; tolerance 3 % (the reduction's error between designs, docs/transient.md). Each
+// check reports its steps: the optimum's and the level's, switch-on and switch-off, in per cent
+// of the span (0-100).
 TEST(OptimiseResponseTime, QuasiStaticParetoLevelsAreCheckedByTheTransientRuns) {
   const auto c = make_case(
       optimise_table("objective = \"dp_on\"\nsense = \"maximise\"\ncurrent = 1.0\n"
@@ -147,7 +150,25 @@ TEST(OptimiseResponseTime, QuasiStaticParetoLevelsAreCheckedByTheTransientRuns) 
       "[optimise.pareto]\nquantity = \"response_time\"\nsense = \"minimise\"\npoints = 2\n"
       "[[optimise.constraint]]\nquantity = \"response_time\"\nmax = 10.0\n");
   const optimise_fixture::TempDir dir("response_pareto");
-  const auto result = optimise_fixture::run(c, dir);
+  optimise::OptimiseOptions options;
+  options.out_dir = dir.path;
+  std::map<std::string, std::vector<double>> checks;  // stage -> done of each step
+  options.progress = [&](const ProgressEvent& e) {
+    if (e.stage.find("by its transient runs") != std::string::npos)
+      checks[e.stage].push_back(e.done);
+  };
+  const auto result = optimise::run_optimisation(c, options);
+  for (const char* what : {"checking the optimum", "checking a Pareto level"})
+    for (const char* run : {"switch-on", "switch-off"}) {
+      const auto steps =
+          checks.find(std::string(what) + " by its transient runs, " + run + ", % of its span");
+      ASSERT_NE(steps, checks.end()) << what << " " << run;
+      EXPECT_GT(steps->second.size(), 1u);
+      for (double done : steps->second) {
+        EXPECT_GT(done, 0.0);
+        EXPECT_LE(done, 100.0 + 1e-9);
+      }
+    }
   ASSERT_TRUE(result.pareto.has_value());
   ASSERT_EQ(result.pareto->points.size(), 2u);
   const auto& level = result.pareto->points[1].design;
