@@ -77,7 +77,7 @@ BhCurve::BhCurve(const std::vector<cases::BhPoint>& table, const std::string& ma
   end_slope_ = slope[n];
   tau_ = width[n - 1];
   for (std::size_t k = 1; k < n; ++k) {
-    cubics_.push_back({b_[k], b_[k + 1], h_[k], h_[k + 1], slope[k], slope[k + 1]});
+    cubics_.push_back(hermite(b_[k], b_[k + 1], h_[k], h_[k + 1], slope[k], slope[k + 1]));
   }
   const int cells = 4 * static_cast<int>(n);
   cell_scale_ = cells / (b_.back() - b_[1]);
@@ -106,22 +106,30 @@ int BhCurve::interval(double b) const {
   return k - 2;
 }
 
+BhCurve::Cubic BhCurve::hermite(double b0, double b1, double h0, double h1, double d0, double d1) {
+  const double w = b1 - b0;
+  return {b0,
+          w,
+          1.0 / w,
+          h0,
+          w * d0,
+          3.0 * (h1 - h0) - w * (2.0 * d0 + d1),
+          2.0 * (h0 - h1) + w * (d0 + d1)};
+}
+
 double BhCurve::cubic_h(const Cubic& c, double b) const {
-  const double w = c.b1 - c.b0, t = (b - c.b0) / w, t2 = t * t, t3 = t2 * t;
-  return (2 * t3 - 3 * t2 + 1) * c.h0 + (t3 - 2 * t2 + t) * w * c.d0 + (-2 * t3 + 3 * t2) * c.h1 +
-         (t3 - t2) * w * c.d1;
+  const double t = (b - c.b0) * c.inv_w;
+  return c.p0 + t * (c.p1 + t * (c.p2 + t * c.p3));
 }
 
 double BhCurve::cubic_dh(const Cubic& c, double b) const {
-  const double w = c.b1 - c.b0, t = (b - c.b0) / w, t2 = t * t;
-  return (6 * t2 - 6 * t) / w * c.h0 + (3 * t2 - 4 * t + 1) * c.d0 + (-6 * t2 + 6 * t) / w * c.h1 +
-         (3 * t2 - 2 * t) * c.d1;
+  const double t = (b - c.b0) * c.inv_w;
+  return (c.p1 + t * (2.0 * c.p2 + t * 3.0 * c.p3)) * c.inv_w;
 }
 
 double BhCurve::cubic_energy(const Cubic& c, double b) const {
-  const double w = c.b1 - c.b0, t = (b - c.b0) / w, t2 = t * t, t3 = t2 * t, t4 = t3 * t;
-  return w * ((0.5 * t4 - t3 + t) * c.h0 + w * (0.25 * t4 - 2.0 * t3 / 3.0 + 0.5 * t2) * c.d0 +
-              (-0.5 * t4 + t3) * c.h1 + w * (0.25 * t4 - t3 / 3.0) * c.d1);
+  const double t = (b - c.b0) * c.inv_w;
+  return c.w * t * (c.p0 + t * (0.5 * c.p1 + t * (c.p2 / 3.0 + t * 0.25 * c.p3)));
 }
 
 double BhCurve::h(double b) const {

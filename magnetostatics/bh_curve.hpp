@@ -45,9 +45,13 @@ class BhCurve {
   double energy_density(double b) const;
 
  private:
+  // The Hermite cubic of one interval in power form: with t = (b - b0) / w,
+  // H = p0 + p1 t + p2 t^2 + p3 t^3 (p0 = H(b0), p1 = w H'(b0)).
   struct Cubic {
-    double b0, b1, h0, h1, d0, d1;  // interval ends, values and slopes
+    double b0, w, inv_w, p0, p1, p2, p3;
   };
+  // The interval [b0, b1]'s cubic through (b0, h0) and (b1, h1) with slopes d0 and d1.
+  static Cubic hermite(double b0, double b1, double h0, double h1, double d0, double d1);
   int interval(double b) const;  // index of the cubic containing b; -1 first interval, n = beyond
   double cubic_h(const Cubic& c, double b) const;
   double cubic_dh(const Cubic& c, double b) const;
