@@ -143,13 +143,16 @@ TransientSolver::TransientSolver(magnetostatics::MagnetostaticSolver& statics,
       if (d >= 0) conducting_[d] = 1;
     }
   }
-  if (dofs.free_count() > 0) {
-    const magnetostatics::SerialOpenMp serial;
-    cholesky_.analyzePattern(assembler.pattern());
-    magnetostatics::throw_if_out_of_memory(cholesky_);
-    if (cholesky_.info() != Eigen::Success)
-      throw ConvergenceError("CHOLMOD symbolic analysis of the time-step matrix failed");
-  }
+}
+
+void TransientSolver::analyse_step_pattern() {
+  if (analysed_ || statics_.dofs().free_count() == 0) return;
+  const magnetostatics::SerialOpenMp serial;
+  cholesky_.analyzePattern(statics_.assembler().pattern());
+  magnetostatics::throw_if_out_of_memory(cholesky_);
+  if (cholesky_.info() != Eigen::Success)
+    throw ConvergenceError("CHOLMOD symbolic analysis of the time-step matrix failed");
+  analysed_ = true;
 }
 
 TransientResult TransientSolver::run(const TransientOptions& options,
@@ -206,6 +209,7 @@ TransientResult TransientSolver::run(const TransientOptions& options,
   };
   record(0.0, before.a, Eigen::VectorXd::Zero(before.a.size()), 0.0);
 
+  analyse_step_pattern();
   StepOperators::Factor factor;
   StepOperators ops{&statics_,    &damping_, &drive_source_, &other_source_,
                     &conducting_, &linear_,  &cholesky_,     &factor};

@@ -87,7 +87,8 @@ using StateCallback = std::function<void(const TransientState&)>;
 
 /// The transient solver on a solved static problem's mesh: reuses its dof map, element
 /// assembly, circuit sources and Newton iteration, and factorises the step matrix
-/// M / h + sum_g w_g s_g K_t(A_g) (+ kappa curl-curl / h) with CHOLMOD (symbolic analysis once).
+/// M / h + sum_g w_g s_g K_t(A_g) (+ kappa curl-curl / h) with CHOLMOD (symbolic analysis once,
+/// at the first run).
 /// A voltage drive adds the circuit unknown; its row is eliminated by a Schur complement on the
 /// single current, so only the symmetric positive definite field block is factorised.
 class TransientSolver {
@@ -116,6 +117,10 @@ class TransientSolver {
   /// lambda's change.
   double half_step_error(const TransientOptions& options, const TransientResult& coarse);
 
+  /// CHOLMOD's symbolic analysis of the step matrix, once, at the first run (a solver that only
+  /// lends its operators, as to quasi_static_table, never factorises a step matrix).
+  void analyse_step_pattern();
+
   class Step;
   friend class Step;
 
@@ -127,6 +132,7 @@ class TransientSolver {
   std::vector<char> conducting_;          // free dof has a mass or micro-eddy row
   LinearPart linear_;                     // linear materials' residual and tangent, assembled once
   Eigen::CholmodSupernodalLLT<magnetostatics::SparseMatrix, Eigen::Lower> cholesky_;
+  bool analysed_ = false;  // cholesky_ holds the step matrix's symbolic analysis
 };
 
 /// Time at which `values` first reaches `start + fraction (end - start)` (linear interpolation
