@@ -110,6 +110,7 @@ class StepSystem : public magnetostatics::NonlinearSystem {
   magnetostatics::SparseMatrix tangent_;  // tangent at one point (storage kept across calls)
   Eigen::VectorXd part_;                  // residual at one point
   Eigen::VectorXd residual_x_;            // where k_ was assembled
+  Eigen::VectorXd residual_r_;            // the residual there (returned again for that x)
   double field_work_ = 0.0;               // sum_g w_g R(A_g) . delta at residual_x_
   bool reuse_ = false;                    // solve with CG preconditioned by the kept factor
   Eigen::VectorXd k_inv_f_;               // K^-1 F (voltage drive)

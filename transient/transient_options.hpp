@@ -52,6 +52,10 @@ struct TransientOptions {
   /// fraction of its change (a response time needs no more: rise times are first crossings, so
   /// those up to the fraction are the whole run's, bit for bit); 0: simulate the whole duration.
   double stop_at_gap_fraction = 0.0;
+  /// Start each step's Newton from the last state when its residual is smaller than that of the
+  /// extrapolation through the last states (false: always the extrapolation; docs/transient.md,
+  /// "Where a step's Newton starts"). The answer is the same to Newton's tolerance.
+  bool choose_start = true;
 };
 
 /// Indicator of the local error (per step, relative to lambda's change) above which a run of
