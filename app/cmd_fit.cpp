@@ -21,6 +21,7 @@ using namespace rheomag::identify;
 struct FitOptions {
   FitRequest request;
   std::vector<std::string> holds;  ///< --hold NAME=VALUE
+  bool keep_inertance = false;     ///< --keep-inertance
   bool json = false;
   bool quiet = false;
 };
@@ -29,6 +30,7 @@ void run_fit_command(const FitOptions& o) {
   FitRequest request = o.request;
   request.load_recording = rheomag::app::load_recording;
   request.held = rheomag::app::parse_holds(o.holds);
+  request.keep_inertance = o.keep_inertance;
   if (!o.quiet) request.progress = rheomag::app::progress_lines("fit", std::cerr);
   const FitRun run = run_fit(request);
   if (o.json)
@@ -83,6 +85,7 @@ const bool fit_registered = rheomag::app::register_command([](CLI::App& root) {
                       .description(""))
       ->type_name("simulation|prediction");
   rheomag::app::add_hold_option(cmd, o->holds);
+  rheomag::app::add_keep_inertance_flag(cmd, o->keep_inertance);
   cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr (grey-box fits report them)");
   cmd->add_flag("--json", o->json,
                 "Print one JSON object: the fitted model (format, kind, model, rig, drive, output, "

@@ -38,6 +38,7 @@ struct FamilyOptions {
   std::string report;
   std::string viscosity_nuisance;  ///< "LO:HI" or empty
   std::vector<std::string> holds;  ///< --hold NAME=VALUE
+  bool keep_inertance = false;     ///< --keep-inertance
 };
 
 /// The --viscosity-nuisance bounds "LO:HI" (0 < LO <= 1 <= HI <= 100).
@@ -79,6 +80,7 @@ void run_fit_family(const FamilyOptions& o) {
   for (const auto& f : o.predict) prediction.push_back(rheomag::app::load_recording(f));
   FamilyFitOptions options;
   options.greybox.held = rheomag::app::parse_holds(o.holds);
+  if (o.keep_inertance) options.greybox.min_inertance_gain = 0.0;
   options.decimation = o.decimation;
   options.greybox.starts = o.starts;
   options.greybox.max_substep = o.max_substep;
@@ -143,6 +145,7 @@ const bool fit_family_registered = rheomag::app::register_command([](CLI::App& r
                 "each {time_percent, energy_percent, rms, mean}}), "
                 "held_out (the same, with --cross-validate), mode");
   rheomag::app::add_hold_option(cmd, o->holds);
+  rheomag::app::add_keep_inertance_flag(cmd, o->keep_inertance);
   cmd->add_flag("--cross-validate", o->cross_validate,
                 "Also refit once without each training recording and predict it (leave one "
                 "recording out): the FIT to expect on a test the fit has not seen. Costs a fit of "

@@ -61,6 +61,15 @@ inline CLI::Option* add_hold_option(CLI::App* cmd, std::vector<std::string>& hol
       ->allow_extra_args(false);
 }
 
+/// Adds the `--keep-inertance` flag of the grey-box fits (`fit`, `fit-family`).
+inline CLI::Option* add_keep_inertance_flag(CLI::App* cmd, bool& keep) {
+  return cmd->add_flag(
+      "--keep-inertance", keep,
+      "Damper model: fit the inertance even where it removes under 10 % of the residual "
+      "energy (by default it is then held at 0 and reported so: slow tests cannot show a "
+      "moving mass, and one fitted to them spoils predictions at higher frequencies)");
+}
+
 /// The --hold settings as (name, value) pairs; InputError "--hold: expected NAME=VALUE ..." for
 /// one without '=', an empty name or a value that is not a finite number.
 std::vector<std::pair<std::string, double>> parse_holds(const std::vector<std::string>& holds);

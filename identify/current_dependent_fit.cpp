@@ -163,7 +163,15 @@ std::vector<double> fit_with_viscosity_factors(const std::vector<lumped::Recordi
     refit.start.clear();
     for (const auto& p : fit.params) refit.start.push_back(p.value);
     refit.starts = 1;
+    // The rounds keep the first fit's decisions: what it held of its own accord stays held.
+    refit.min_inertance_gain = 0.0;
+    for (const auto& p : fit.params)
+      if (p.fixed && !p.held_because.empty()) refit.held.emplace_back(p.name, p.value);
+    const GreyboxFit before = fit;
     fit = fit_greybox_family(training, fit.model, refit, options.decimation);
+    for (std::size_t k = 0; k < fit.params.size(); ++k)
+      fit.params[k].held_because = before.params[k].held_because;
+    fit.inertance_gain = before.inertance_gain;
   }
   return factors;
 }

@@ -103,6 +103,13 @@ class FitsProgress {
   std::chrono::steady_clock::time_point start_;
 };
 
+/// The parameter `name` of `fit` if the fit held it of its own accord (held_because), else null.
+const FittedParameter* held_by_the_fit(const GreyboxFit& fit, const std::string& name) {
+  for (const FittedParameter& p : fit.params)
+    if (p.name == name && p.fixed && !p.held_because.empty()) return &p;
+  return nullptr;
+}
+
 /// The parameter values of `fit`, in the model's order.
 std::vector<double> values_of(const GreyboxFit& fit) {
   std::vector<double> values;
@@ -152,9 +159,10 @@ std::vector<FamilyMember> cross_validate_family(const std::vector<lumped::Record
   if (warm) {
     refit.starts = 1;
     refit.max_iterations = options.refit_iterations;
+    refit.min_inertance_gain = 0.0;  // it keeps the inertance decision of the half it starts from
   }
-  const double fit_bound = std::max(1, single.starts) * static_cast<double>(single.max_iterations);
-  const double refit_bound = std::max(1, refit.starts) * static_cast<double>(refit.max_iterations);
+  const double fit_bound = greybox_iteration_bound(model, single);
+  const double refit_bound = greybox_iteration_bound(model, refit);
   // Refits 0..n-1, then the two halves (warm refits only).
   std::vector<double> bounds(n, warm ? refit_bound : fit_bound);
   if (warm) bounds.insert(bounds.end(), 2, fit_bound);
@@ -190,6 +198,8 @@ std::vector<FamilyMember> cross_validate_family(const std::vector<lumped::Record
     const std::optional<GreyboxFit>& other = half_fit[static_cast<std::size_t>(1 - half[k])];
     if (other) {
       g.start = values_of(*other);
+      if (const auto* inertance = held_by_the_fit(*other, "inertance"))
+        g.held.emplace_back(inertance->name, inertance->value);
     } else {
       g = single;  // no fit of the other half: the cold refit
     }

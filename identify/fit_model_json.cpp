@@ -49,6 +49,7 @@ void put_parameters(json& j, const std::vector<FittedParameter>& params) {
                   {"fixed", p.fixed}};
     if (p.standard_error_between_recordings && std::isfinite(*p.standard_error_between_recordings))
       entry["standard_error_between_recordings"] = *p.standard_error_between_recordings;
+    if (!p.held_because.empty()) entry["held_because"] = p.held_because;
     j["parameters"].push_back(entry);
     j["params"][p.name] = p.value;
     j["standard_errors"][p.name] = se;
@@ -281,6 +282,11 @@ json fit_model_json(const GreyboxFit& fit, const lumped::RecordingMeta& meta) {
                   {"position_scale", fit.setup.settings.position_scale},
                   {"output_scale", fit.setup.settings.output_scale}}}};
   put_parameters(j, fit.params);
+  if (fit.inertance_gain) {
+    const int k = lumped::pheno_param_index(fit.setup.kind, "inertance");
+    j["inertance_check"] = {{"gain_percent", 100.0 * *fit.inertance_gain},
+                            {"held", fit.params.at(static_cast<std::size_t>(k)).fixed}};
+  }
   return j;
 }
 

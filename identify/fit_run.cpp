@@ -141,6 +141,7 @@ FitReport fit_grey_box_model(const FitRequest& o, const Recording& rec, const Sa
   options.train = train;
   options.progress = o.progress;
   options.held = o.held;
+  if (o.keep_inertance) options.min_inertance_gain = 0.0;
   const GreyboxFit fit = fit_greybox(rec, o.model, options);
   FitReport report = grey_box_report(
       fit, rec, train, val, [&](const Recording& other) { return simulate_greybox(other, fit); });

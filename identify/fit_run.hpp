@@ -32,6 +32,9 @@ struct FitRequest {
   /// Grey-box fits: parameters held at a value (GreyboxOptions::held); InputError for another
   /// model kind.
   std::vector<std::pair<std::string, double>> held;
+  /// Damper model: fit the inertance even where it removes under 10 % of the residual energy
+  /// (GreyboxOptions::min_inertance_gain = 0).
+  bool keep_inertance = false;
   /// Reads a recording (the CLI's reader also reports its warnings).
   std::function<lumped::Recording(const std::string&)> load_recording;
 };

@@ -19,6 +19,10 @@
 
 namespace rheomag::identify {
 
+/// Share of the residual energy a damper's fitted inertance must remove to be kept (see
+/// GreyboxOptions::min_inertance_gain).
+inline constexpr double kMinInertanceGain = 0.1;
+
 /// Options of a grey-box fit.
 struct GreyboxOptions {
   std::optional<lumped::SampleRange> train;  ///< samples to fit on; whole recording if empty
@@ -41,6 +45,12 @@ struct GreyboxOptions {
   /// Family fits: each recording's factor on the viscosity-scaled parameters
   /// (scales_with_viscosity), held during the fit; empty: 1 for every recording.
   std::vector<double> viscous_factors;
+  /// Damper model: the inertance is held at 0 when, fitted, it removes less than this share of
+  /// the residual energy the fit leaves with it held (a moving mass the training drives do not
+  /// show; the diagnosis' 10 % rule for an effect); 0: always fitted. Not checked when held.
+  double min_inertance_gain = kMinInertanceGain;
+  /// Levenberg-Marquardt iterations of that check's refit (inertance at 0, from the fit).
+  int inertance_check_iterations = 20;
   /// Reports the fit's Levenberg-Marquardt iterations (summed over the starts, out of the bound
   /// starts x max_iterations); may be called from several threads at once.
   ProgressCallback progress;
@@ -57,6 +67,9 @@ struct FittedParameter {
   std::optional<double> standard_error_between_recordings;
   bool fixed = false;     ///< held constant (e.g. field terms without a field input)
   bool at_bound = false;  ///< ended on a bound
+  /// Why the fit held it where the user did not (e.g. an inertance too small to be seen); empty
+  /// otherwise.
+  std::string held_because{};
 };
 
 /// A standard error above this multiple of |value| calls a parameter poorly identified: the data
@@ -83,6 +96,10 @@ struct GreyboxFit {
   int starts_run = 0;
   int best_start = 0;
   bool converged = false;  ///< Ceres reported convergence for the best start
+  double cost = 0.0;       ///< the best start's final least-squares cost (1/2 sum residual^2)
+  /// Damper model: the share of the residual energy its fitted inertance removed, when checked
+  /// (GreyboxOptions::min_inertance_gain); below the bound the inertance is held at 0.
+  std::optional<double> inertance_gain;
   /// Family fits of two or more recordings: the parameters' cluster-robust covariance between
   /// recordings (N x N in the model's parameter order, SI units), zero for held and unidentifiable
   /// parameters; empty otherwise.
@@ -107,6 +124,10 @@ GreyboxFit fit_greybox(const lumped::Recording& rec, const std::string& model,
 /// level (the cost is sum (1 - FIT_r)^2 / 2). `options.train` is ignored; fit.simulated is empty.
 GreyboxFit fit_greybox_family(const std::vector<lumped::Recording>& recs, const std::string& model,
                               const GreyboxOptions& options, int decimation);
+
+/// Levenberg-Marquardt iterations a fit of `model` with `options` runs at most (its starts and the
+/// damper's inertance check), the bound its progress counts against.
+int greybox_iteration_bound(const std::string& model, const GreyboxOptions& options);
 
 /// Free-run output of a fitted model on another recording of the same device (stiff integrator).
 std::vector<double> simulate_greybox(const lumped::Recording& rec, const GreyboxFit& fit);

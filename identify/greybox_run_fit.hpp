@@ -209,6 +209,7 @@ void run_fit(const FitData& data, const lumped::GreyboxSetup& setup, const Param
   }
   fit.best_start = best.start;
   fit.converged = best.converged;
+  fit.cost = best.cost;
   // Standard errors over the fitted slots only (a pinned slot is not a parameter of the fit).
   Eigen::MatrixXd jfit(m, static_cast<Eigen::Index>(fitted_slots.size()));
   for (std::size_t c = 0; c < fitted_slots.size(); ++c)

@@ -41,9 +41,10 @@ std::vector<std::pair<std::string, double>> holds(const std::map<std::string, do
 
 py::object fit(const std::string& recording, const std::string& model, const std::string& train,
                const std::string& validate, const std::string& mode, const py::object& progress,
-               const std::map<std::string, double>& hold) {
+               const std::map<std::string, double>& hold, bool keep_inertance) {
   identify::FitRequest request;
   request.held = holds(hold);
+  request.keep_inertance = keep_inertance;
   request.recording = recording;
   request.model = model;
   request.train = train;
@@ -66,7 +67,7 @@ py::object fit(const std::string& recording, const std::string& model, const std
 py::object fit_family(const std::vector<std::string>& recordings, const std::string& model,
                       const std::vector<std::string>& predict, int decimation, int starts,
                       double max_substep, bool cross_validate, const py::object& progress,
-                      const std::map<std::string, double>& hold) {
+                      const std::map<std::string, double>& hold, bool keep_inertance) {
   std::vector<lumped::Recording> training, prediction;
   for (const std::string& f : recordings) training.push_back(load_recording(f));
   for (const std::string& f : predict) prediction.push_back(load_recording(f));
@@ -75,6 +76,7 @@ py::object fit_family(const std::vector<std::string>& recordings, const std::str
   options.decimation = decimation;
   options.greybox.starts = starts;
   options.greybox.held = holds(hold);
+  if (keep_inertance) options.greybox.min_inertance_gain = 0.0;
   options.greybox.max_substep = max_substep;
   options.cross_validate = cross_validate;
   options.greybox.progress = progress_to_python(progress);
@@ -145,16 +147,17 @@ void bind_identify(py::module_& m) {
 
   m.def("fit", &fit, py::arg("recording"), py::arg("model"), py::arg("train") = "",
         py::arg("validate") = "", py::arg("mode") = "simulation", py::arg("progress") = py::none(),
-        py::arg("hold") = std::map<std::string, double>{},
+        py::arg("hold") = std::map<std::string, double>{}, py::arg("keep_inertance") = false,
         "Fits `model` to the recording CSV (as `rheomag fit REC --model M --json`); the dict of "
         "that JSON. progress(event: dict) is called during grey-box fits; hold {name: SI value} "
-        "holds grey-box parameters (as --hold).");
+        "holds grey-box parameters (as --hold); keep_inertance as --keep-inertance.");
   m.def("fit_family", &fit_family, py::arg("recordings"), py::arg("model"),
         py::arg("predict") = std::vector<std::string>{}, py::arg("decimation") = 4,
         py::arg("starts") = 2, py::arg("max_substep") = 2e-3, py::arg("cross_validate") = false,
         py::arg("progress") = py::none(), py::arg("hold") = std::map<std::string, double>{},
+        py::arg("keep_inertance") = false,
         "One grey-box fit over several recordings (as `rheomag fit-family ... --json`); hold "
-        "{name: SI value} holds parameters (as --hold).");
+        "{name: SI value} holds parameters (as --hold); keep_inertance as --keep-inertance.");
   m.def("simulate", &simulate, py::arg("spec"), py::arg("input") = "",
         py::arg("signals") = std::vector<std::string>{}, py::arg("duration") = 10.0,
         py::arg("rate") = 1000.0, py::arg("out") = "",

@@ -10,7 +10,8 @@
 //   +-5 ms), not from the velocity column the diagnosis differentiates;
 // - a stiffness (a gas spring, F += k (x - mean x)) sized the same way, at a tenth of the force
 //   rms over the displacement's rms;
-// - the effect is named and its size within 30 % of the injected (the issue's target);
+// - the effect is named and its size within 30 % of the injected (the issue's target); a small
+//   mass (20 kg) too, beyond what the unmodified recording carries;
 // - differentially, the found size minus what the unmodified recording already carries of the
 //   same candidate (its fit at the first step, accepted or not, now in the report) within 10 %:
 //   the remaining error of the raw size is that held-out test's own mismatch with the model,
@@ -190,6 +191,17 @@ void check_held_out(const std::string& test) {
     }
   EXPECT_NEAR(m_found / mass, 1.0, 0.3);
   EXPECT_NEAR((m_found - m_carried) / mass, 1.0, 0.1);
+  // A small mass, 20 kg: the size a tenth of the force is at 3-5 Hz (issue 33). Sized within
+  // 30 % beyond what the recording carries. While the family kept an inertance its training
+  // tests do not show (9.6 kg without the 0.25 A test), every mass on that test was found 8 kg
+  // low: 20 kg as 11.9 (docs/validation.md, "A mass the output delay takes").
+  constexpr double kSmallMass = 20.0;  // [kg]
+  Recording lighter = original;
+  for (std::size_t k = 0; k < a.size(); ++k)
+    lighter.columns["force"][k] += sign * kSmallMass * a[k];
+  const double m_small = found(diagnose_with(lighter, model), "fluid_inertia") * area2;
+  std::cout << "mass: injected " << kSmallMass << " kg, found " << m_small << " kg\n";
+  EXPECT_NEAR((m_small - m_carried) / kSmallMass, 1.0, 0.3);
 
   const double coulomb = 0.1 * force_rms;  // [N]
   const Diagnosis d_friction = diagnose_with(with_friction(original, coulomb), model);

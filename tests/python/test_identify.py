@@ -107,3 +107,19 @@ def test_fit_input_error_has_the_cli_message(recording):
     with pytest.raises(ValueError) as e:
         rheomag.fit(recording, "no-such-model")
     assert err == "rheomag: error: " + str(e.value) + "\n"
+
+
+UTFSM = os.path.join(SOURCE, "..", "shared", "data", "utfsm", "25mm0x5Hz0A.csv")
+
+
+@pytest.mark.skipif(not os.path.exists(UTFSM), reason="shared data absent")
+def test_keep_inertance_equals_cli():
+    # A slow real sine: by default the damper's inertance is held at 0 (it removes under 10 % of
+    # the residual energy); keep_inertance fits it, as --keep-inertance does.
+    held = rheomag.fit(UTFSM, "damper")
+    assert held["inertance_check"]["held"]
+    kept = rheomag.fit(UTFSM, "damper", keep_inertance=True)
+    cli = cli_json("fit", UTFSM, "--model", "damper", "--keep-inertance", "--quiet")
+    assert without_timing(kept) == without_timing(cli)
+    assert "inertance_check" not in kept
+    assert kept["params"]["inertance"] > 0.0
