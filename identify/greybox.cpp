@@ -369,7 +369,11 @@ void hold_unseen_inertance(const FitData& data, ParamGuess guess, const GreyboxO
   guess.fixed[k] = true;
   GreyboxFit held = fit;
   held.starts_run = 0;
-  run_model_fit(data, guess, check, held);
+  try {
+    run_model_fit(data, guess, check, held);
+  } catch (const ConvergenceError&) {
+    return;  // no finite simulation without it: the fit keeps its inertance, unchecked
+  }
   const double gain = held.cost > 0.0 ? 1.0 - fit.cost / held.cost : 0.0;
   fit.inertance_gain = gain;
   if (!(gain < options.min_inertance_gain)) return;
