@@ -62,9 +62,9 @@ inline bool has_exponential_step(PhenoKind kind) {
 template <class T>
 [[gnu::flatten]] void exponential_step(PhenoKind kind, const T* p, const PhenoDrive& start,
                                        const PhenoDrive& middle, const PhenoSettings& s, double h,
-                                       BoucWenFieldGains<T>& gains, T* x) {
+                                       FieldFilterGains<T>& gains, T* x) {
   if (kind == PhenoKind::damper)
-    damper_step(p, start, middle, s, h, x);
+    damper_step(p, start, middle, s, h, gains, x);
   else
     bouc_wen_step(p, start, middle, s, h, gains, x);
 }
@@ -82,7 +82,7 @@ bool simulate_rk4(PhenoKind kind, const T* p, const DriveSeries& d, const PhenoS
   pheno_initial_state(kind, p, d.at(begin), s, x.data());
   out[0] = pheno_output(kind, p, d.at(begin), s, x.data());
   double rate_previous = 0.0;
-  BoucWenFieldGains<T> gains;  // Bouc-Wen's field filter, kept from step to step
+  FieldFilterGains<T> gains;  // the field filter's, kept from step to step
   for (std::size_t i = begin; i + 1 < end; ++i) {
     const double dt = d.t[i + 1] - d.t[i];
     if (has_exponential_step(kind)) {  // stiff-stable exponential steps, no rate limit

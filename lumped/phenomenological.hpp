@@ -154,22 +154,36 @@ T damper_effective_field(const T* p, const T& u) {
   return tanh(k * u) / k;
 }
 
-/// Damper model: rate of the valve force f through the fluid/accumulator compliance at the field
-/// b the valve sees (damper_effective_field). The valve passes the motion g(F) of a
+/// Damper model: the valve map's coefficients at the field b the valve sees: its yield force, its
+/// consistency in motion units and the inverse of its flow index. A step evaluates the valve at
+/// several forces for each field, so these are computed once per field.
+template <class T>
+struct DamperValveLaw {
+  T yield;               ///< F_y(b)
+  T consistency_motion;  ///< c(b) m_ref
+  T inverse_index;       ///< 1 / n
+};
+
+/// Damper model: the valve map's coefficients at field b (DamperValveLaw).
+template <class T>
+DamperValveLaw<T> damper_valve_law(const T* p, const PhenoSettings& s, const T& b) {
+  return {p[kDmYield0] + p[kDmYield1] * b + p[kDmYield2] * b * b,
+          (p[kDmVisc0] + p[kDmVisc1] * b) * s.motion_scale, 1.0 / p[kDmIndex]};
+}
+
+/// Damper model: rate of the valve force f through the fluid/accumulator compliance, for the valve
+/// law at the field the valve sees (damper_valve_law). The valve passes the motion g(F) of a
 /// Herschel-Bulkley map with a pre-yield creep branch (inverse of
 /// F = sign(m) (F_y(b) + c(b) m_ref (|m| / m_ref)^n), plus F / pre_visc); the compliance's
 /// stiffness grows with the force (gas and entrained air stiffen with pressure).
 template <class T>
 T damper_force_rate_at(const T* p, const PhenoDrive& d, const PhenoSettings& s, const T& f,
-                       const T& b) {
-  using std::pow;
+                       const DamperValveLaw<T>& valve) {
   const double w = 1e-3 * s.output_scale;
-  const T yield = p[kDmYield0] + p[kDmYield1] * b + p[kDmYield2] * b * b;
-  const T consistency = p[kDmVisc0] + p[kDmVisc1] * b;
   const T abs_f = smooth_abs(f, w);
-  const T excess = smooth_ramp(abs_f - yield, w);
-  const T post =
-      s.motion_scale * pow(excess / (consistency * s.motion_scale) + 1e-12, 1.0 / p[kDmIndex]);
+  const T excess = smooth_ramp(abs_f - valve.yield, w);
+  const T post = s.motion_scale *
+                 positive_power(excess / valve.consistency_motion + 1e-12, valve.inverse_index);
   const T valve_motion = f / p[kDmPreVisc] + f / (abs_f + w) * post;
   return (p[kDmStiff] + p[kDmStiffening] * abs_f) * (d.motion - valve_motion);
 }
@@ -177,7 +191,8 @@ T damper_force_rate_at(const T* p, const PhenoDrive& d, const PhenoSettings& s, 
 /// Damper model: rate of the valve force x[0] for state x (field state x[2]).
 template <class T>
 T damper_force_rate(const T* p, const PhenoDrive& d, const PhenoSettings& s, const T* x) {
-  return damper_force_rate_at(p, d, s, x[0], damper_effective_field(p, x[2]));
+  return damper_force_rate_at(p, d, s, x[0],
+                              damper_valve_law(p, s, damper_effective_field(p, x[2])));
 }
 
 /// Bouc-Wen: rate of the internal displacement y for state x = (y, z, u_filtered).
@@ -225,57 +240,69 @@ T phi1(const T& x) {
 
 }  // namespace pheno_detail
 
+/// The gains of a field filter u' = -r (u - v) over steps of length h, solved exactly: the half
+/// and full step gains h phi1(h r) r. They depend on r and h only, so one simulation (one
+/// parameter vector) keeps them and recomputes them only when its step length changes.
+template <class T>
+struct FieldFilterGains {
+  double step = 0.0;  ///< [s] the h of `half` and `full` (0: not computed yet)
+  T half{}, full{};
+  /// Makes these the gains of step h for the rate rate() (the same at every call).
+  template <class Rate>
+  void update(double h, const Rate& rate) {
+    if (h == step) return;
+    const T r = rate();
+    half = 0.5 * h * pheno_detail::phi1(T(0.5 * h) * r) * r;
+    full = h * pheno_detail::phi1(T(h) * r) * r;
+    step = h;
+  }
+};
+
 /// One step of length h of the damper model from drive `a` (start) through `m` (midpoint):
 /// exponential midpoint rule (second order, stable for any h): each state's rate is linearised
 /// about the half-step predictor, and the linear equation is solved exactly over the step. The
 /// valve force's fast mode (compliance stiffness / slope of the valve map) and the seal's
-/// pre-sliding are stiff for an explicit method; this step is not limited by them.
+/// pre-sliding are stiff for an explicit method; this step is not limited by them. `gains` are the
+/// field filter's of this simulation.
 template <class T>
 void damper_step(const T* p, const PhenoDrive& a, const PhenoDrive& m, const PhenoSettings& s,
-                 double h, T* x) {
+                 double h, FieldFilterGains<T>& gains, T* x) {
   using namespace pheno_detail;
   const double delta = 1e-4 * s.output_scale;
   // Field and seal: linear in their own state, solved exactly with the midpoint drive.
   const double abs_m = std::sqrt(m.motion * m.motion + s.eps * s.eps) - s.eps;
-  const T rate_u = 1.0 / p[kDmTau];
+  gains.update(h, [&] { return T(1.0 / p[kDmTau]); });
   const T u0 = x[2];
-  const T u_half = u0 + 0.5 * h * phi1(T(0.5 * h) * rate_u) * rate_u * (m.field - u0);
-  x[2] = u0 + h * phi1(T(h) * rate_u) * rate_u * (m.field - u0);
+  const T u_half = u0 + gains.half * (m.field - u0);
+  x[2] = u0 + gains.full * (m.field - u0);
   const T rate_z = abs_m / p[kDmSealSlip];
   x[1] = x[1] + h * phi1(T(h) * rate_z) * (m.motion / p[kDmSealSlip] - rate_z * x[1]);
   // Valve force: predictor half step from the start, then the step linearised at the midpoint.
-  // The field the valve sees is computed once for each of the two field states.
-  const auto rate = [&](const PhenoDrive& d, const T& f, const T& b) {
-    return damper_force_rate_at(p, d, s, f, b);
+  // The field the valve sees, and the valve law at it, are computed once for each of the two
+  // field states.
+  const auto rate = [&](const PhenoDrive& d, const T& f, const DamperValveLaw<T>& valve) {
+    return damper_force_rate_at(p, d, s, f, valve);
   };
-  const auto slope = [&](const PhenoDrive& d, const T& f, const T& b) {
-    const T lambda = (rate(d, f - delta, b) - rate(d, f + delta, b)) / (2.0 * delta);
+  const auto slope = [&](const PhenoDrive& d, const T& f, const DamperValveLaw<T>& valve) {
+    const T lambda = (rate(d, f - delta, valve) - rate(d, f + delta, valve)) / (2.0 * delta);
     return value_of(lambda) > 0.0 ? lambda : T(0.0);
   };
-  const T b0 = damper_effective_field(p, u0), b_half = damper_effective_field(p, u_half);
+  const DamperValveLaw<T> valve0 = damper_valve_law(p, s, damper_effective_field(p, u0)),
+                          valve_half = damper_valve_law(p, s, damper_effective_field(p, u_half));
   const T f0 = x[0];
-  const T lambda0 = slope(a, f0, b0);
-  const T f_half = f0 + 0.5 * h * phi1(T(0.5 * h) * lambda0) * rate(a, f0, b0);
-  const T lambda_m = slope(m, f_half, b_half);
-  x[0] = f0 + h * phi1(T(h) * lambda_m) * (rate(m, f_half, b_half) + lambda_m * (f_half - f0));
+  const T lambda0 = slope(a, f0, valve0);
+  const T f_half = f0 + 0.5 * h * phi1(T(0.5 * h) * lambda0) * rate(a, f0, valve0);
+  const T lambda_m = slope(m, f_half, valve_half);
+  x[0] = f0 + h * phi1(T(h) * lambda_m) * (rate(m, f_half, valve_half) + lambda_m * (f_half - f0));
 }
 
-/// The field filter of Bouc-Wen steps of length h, u' = -eta (u - v) solved exactly: its half
-/// and full step gains h phi1(h eta) eta. They depend on eta and h only, so one simulation (one
-/// parameter vector) keeps them and recomputes them only when its step length changes.
+/// The same step computing its field filter gains first.
 template <class T>
-struct BoucWenFieldGains {
-  double step = 0.0;  ///< [s] the h of `half` and `full` (0: not computed yet)
-  T half{}, full{};
-  /// Makes these the gains of parameters p (the same p at every call) and step h.
-  void update(const T* p, double h) {
-    if (h == step) return;
-    const T& eta = p[pheno_detail::kWEta];
-    half = 0.5 * h * pheno_detail::phi1(T(0.5 * h) * eta) * eta;
-    full = h * pheno_detail::phi1(T(h) * eta) * eta;
-    step = h;
-  }
-};
+void damper_step(const T* p, const PhenoDrive& a, const PhenoDrive& m, const PhenoSettings& s,
+                 double h, T* x) {
+  FieldFilterGains<T> gains;
+  damper_step(p, a, m, s, h, gains, x);
+}
 
 /// One step of length h of the modified Bouc-Wen model from drive `a` (start) through `m`
 /// (midpoint): the exponential midpoint rule of damper_step (second order, stable for any h). The
@@ -285,9 +312,9 @@ struct BoucWenFieldGains {
 /// field filter's of this simulation.
 template <class T>
 void bouc_wen_step(const T* p, const PhenoDrive& a, const PhenoDrive& m, const PhenoSettings& s,
-                   double h, BoucWenFieldGains<T>& gains, T* x) {
+                   double h, FieldFilterGains<T>& gains, T* x) {
   using namespace pheno_detail;
-  gains.update(p, h);
+  gains.update(h, [&] { return p[kWEta]; });
   constexpr std::size_t kParams = kWOffset + 1;
   std::array<double, kParams> pv{};
   for (std::size_t k = 0; k < kParams; ++k) pv[k] = value_of(p[k]);
@@ -319,7 +346,7 @@ void bouc_wen_step(const T* p, const PhenoDrive& a, const PhenoDrive& m, const P
 template <class T>
 void bouc_wen_step(const T* p, const PhenoDrive& a, const PhenoDrive& m, const PhenoSettings& s,
                    double h, T* x) {
-  BoucWenFieldGains<T> gains;
+  FieldFilterGains<T> gains;
   bouc_wen_step(p, a, m, s, h, gains, x);
 }
 

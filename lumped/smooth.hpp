@@ -18,6 +18,21 @@ double value_of(const J& x) {
   return x.a;
 }
 
+/// x^g for x > 0: std::pow for doubles.
+inline double positive_power(double x, double g) {
+  return std::pow(x, g);
+}
+/// x^g for x > 0 on Ceres Jets: the value of std::pow, and its derivative g x^g / x dx +
+/// x^g log(x) dg from that one power (Ceres' pow computes a second, x^(g - 1); the fits' time went
+/// to these powers).
+template <class J>
+J positive_power(const J& x, const J& g) {
+  J result;
+  result.a = std::pow(x.a, g.a);
+  result.v = (result.a * g.a / x.a) * x.v + (result.a * std::log(x.a)) * g.v;
+  return result;
+}
+
 /// sign(x) regularised: tanh(x / eps).
 template <class T>
 T smooth_sign(const T& x, double eps) {

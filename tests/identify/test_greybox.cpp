@@ -213,7 +213,7 @@ TEST(Greybox, SpareThreadsSplitAFamilysRecordings) {
 }
 
 // Bouc-Wen's field filter gains are kept across the steps of a simulation and recomputed when
-// the step length changes: steps of alternating length with one kept BoucWenFieldGains give
+// the step length changes: steps of alternating length with one kept FieldFilterGains give
 // bitwise the state of steps that compute their gains afresh.
 TEST(Greybox, BoucWenKeptFieldGainsAreExact) {
   const std::vector<double>& p = kSpencerBoucWen;
@@ -223,7 +223,7 @@ TEST(Greybox, BoucWenKeptFieldGainsAreExact) {
   std::array<double, 3> kept, fresh;
   pheno_initial_state(PhenoKind::bouc_wen, p.data(), drive(0.0), s, kept.data());
   fresh = kept;
-  BoucWenFieldGains<double> gains;
+  FieldFilterGains<double> gains;
   double t = 0.0;
   for (int j = 0; j < 200; ++j) {
     const double h = j % 3 == 0 ? 1e-3 : 5e-4;

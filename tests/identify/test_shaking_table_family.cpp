@@ -73,11 +73,13 @@ TEST(ShakingTableFamily, HalfTheTestsAtFourLevelsPredictTheOtherHalf) {
   }
   EXPECT_GE(median(fits), 88.0);
   // This table's inertance is seen (the inertance check, docs/damper-model.md): fitted, it removes
-  // 47 % of the residual energy left with it held at 0 (measured 2026-12-05: 96 kg; held at 0
+  // 52 % of the residual energy left with it held at 0 (measured 2026-12-05: 96 kg; held at 0
   // the predicted median falls from 89.6 to 83.7 %), so it is kept.
   ASSERT_TRUE(r.fit.inertance_gain.has_value());
   EXPECT_GE(*r.fit.inertance_gain, 0.1);
   for (const FittedParameter& p : r.fit.params) {
-    if (p.name == "inertance") EXPECT_FALSE(p.fixed);
+    if (p.name == "inertance") {
+      EXPECT_FALSE(p.fixed);
+    }
   }
 }
