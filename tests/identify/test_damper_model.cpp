@@ -26,6 +26,21 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+/// A 10 mm / 2 Hz sine stroke at the given field, for the step tests.
+PhenoDrive stroke_10mm_2hz(double t, double field) {
+  return PhenoDrive{0.01 * std::sin(4 * kPi * t), 0.01 * 4 * kPi * std::cos(4 * kPi * t), field,
+                    0.0};
+}
+
+/// The settings of the step tests: motions in 5 cm/s, forces in kN.
+PhenoSettings step_settings() {
+  PhenoSettings s;
+  s.eps = 1e-6;
+  s.motion_scale = 0.05;
+  s.output_scale = 1000.0;
+  return s;
+}
+
 /// Damper parameters in the order of pheno_params(damper); `set` overrides by name.
 std::vector<double> damper_params(const std::vector<std::pair<std::string, double>>& set) {
   // Every parameter not named here is 0.
@@ -232,17 +247,11 @@ TEST(DamperModel, FieldLagsTheCurrentByItsTimeConstant) {
 // with a step 20 times the fast mode's time constant (where explicit RK4 would diverge).
 TEST(DamperModel, ExponentialStepIsSecondOrderAndStiffStable) {
   const std::vector<double> p = damper_params({{"flow_index", 0.4}, {"stiffening", 200.0}});
-  PhenoSettings s;
-  s.eps = 1e-6;
-  s.motion_scale = 0.05;
-  s.output_scale = 1000.0;
+  const PhenoSettings s = step_settings();
   const auto run = [&](int steps) {
     std::array<double, 3> x = {0.0, 0.0, 1.0};
     const double h = 0.5 / steps;
-    const auto drive = [&](double t) {
-      return PhenoDrive{0.01 * std::sin(4 * kPi * t), 0.01 * 4 * kPi * std::cos(4 * kPi * t), 1.0,
-                        0.0};
-    };
+    const auto drive = [](double t) { return stroke_10mm_2hz(t, 1.0); };
     for (int j = 0; j < steps; ++j)
       damper_step(p.data(), drive(j * h), drive((j + 0.5) * h), s, h, x.data());
     return x[0];
@@ -260,14 +269,8 @@ TEST(DamperModel, ExponentialStepIsSecondOrderAndStiffStable) {
 // state of steps that compute their gains afresh (the gains are the same arithmetic, done once).
 TEST(DamperModel, KeptFieldGainsAreExact) {
   const std::vector<double> p = damper_params({{"flow_index", 0.4}, {"field_time_constant", 0.02}});
-  PhenoSettings s;
-  s.eps = 1e-6;
-  s.motion_scale = 0.05;
-  s.output_scale = 1000.0;
-  const auto drive = [](double t) {
-    return PhenoDrive{0.01 * std::sin(4 * kPi * t), 0.01 * 4 * kPi * std::cos(4 * kPi * t),
-                      t < 0.1 ? 0.0 : 1.0, 0.0};
-  };
+  const PhenoSettings s = step_settings();
+  const auto drive = [](double t) { return stroke_10mm_2hz(t, t < 0.1 ? 0.0 : 1.0); };
   std::array<double, 3> kept = {0.0, 0.0, 0.0}, fresh = kept;
   FieldFilterGains<double> gains;
   double t = 0.0;
