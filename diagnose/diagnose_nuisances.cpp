@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "core/error.hpp"
 #include "diagnose/candidate.hpp"
 #include "diagnose/diagnose_text.hpp"
 
@@ -31,6 +32,21 @@ std::vector<bool> held_in_candidates(const DiagnosisModel& model,
     if (!at_bound) held[j] = false;
   }
   return held;
+}
+
+void keep_better_with_free_delay(const DiagnosisModel& model,
+                                 const std::vector<const Candidate*>& effects,
+                                 const std::vector<double>& nominal, const FitSettings& held,
+                                 const std::vector<double>& starts, int threads, ModelFit& fit) {
+  auto settings = held;
+  settings.fixed[model.delay_index()] = false;
+  try {
+    const auto start = grid_start(model, effects, nominal, nullptr, threads, true, starts);
+    auto free = fit_model(model, effects, start, settings);
+    if (free.sse < fit.sse) fit = std::move(free);
+  } catch (const ConvergenceError&) {
+    // The held fit stands.
+  }
 }
 
 void recalibrate_nuisances(const DiagnosisModel& model, ModelFit& fit, const FitSettings& base) {

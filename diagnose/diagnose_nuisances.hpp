@@ -25,6 +25,17 @@ std::vector<bool> held_in_candidates(const DiagnosisModel& model,
                                      const std::vector<const Candidate*>& effects,
                                      const std::vector<double>& values);
 
+/// Fits the candidate `effects` once more from `nominal` with the output delay free (`fit` was
+/// fitted with it held at the bound the baseline put it at) and keeps that fit in `fit` when its
+/// error is lower. A fit started at a bound projects every step onto it and can stall in a worse
+/// optimum, so the delay is held there first; but the candidate may explain what pushed the delay
+/// to its bound (on a sine, a mass's force and a delay's are nearly one waveform), and then only
+/// the free fit can give the size back. Throws only what the held fit would have.
+void keep_better_with_free_delay(const DiagnosisModel& model,
+                                 const std::vector<const Candidate*>& effects,
+                                 const std::vector<double>& nominal, const FitSettings& held,
+                                 const std::vector<double>& starts, int threads, ModelFit& fit);
+
 /// Re-calibrates the nuisances of `fit` that are not at a bound with everything else held (after
 /// an accepted effect the pre-yield smoothing and delay it was compared with may no longer be
 /// the best, and the next candidate would be credited with their gain).

@@ -182,6 +182,7 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evi
         // the decade grid: the error can be multimodal in the candidate's size.
         const auto starts =
             options.ringing_start ? c->measured_starts(model, current) : std::vector<double>{};
+        const auto nominal = s;
         s = grid_start(model, effects, s, &grid_sse, options.threads, scan_delay, starts);
         // Screening: a candidate that lowers the error at no decade of its parameter (the
         // others held at the current fit) is scored there and not fitted.
@@ -199,6 +200,9 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evi
         auto candidate_settings = settings;
         candidate_settings.fixed = held_in_candidates(model, effects, current.values);
         auto f = fit_model(model, effects, s, candidate_settings);
+        if (!scan_delay)
+          keep_better_with_free_delay(model, effects, nominal, candidate_settings, starts,
+                                      options.threads, f);
         const double db = bic_now - bic(f.sse, n, f.values.size());
         report(c, "dBIC " + num(db) + " in " + num(Clock::since(started)) + " s");
         d.candidates.push_back(fitted_score(model, c, step, y, f, db));

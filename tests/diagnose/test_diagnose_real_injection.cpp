@@ -194,12 +194,15 @@ void check_held_out(const std::string& test) {
   // A small mass, 20 kg: the size a tenth of the force is at 3-5 Hz (issue 33). Sized within
   // 30 % beyond what the recording carries. While the family kept an inertance its training
   // tests do not show (9.6 kg without the 0.25 A test), every mass on that test was found 8 kg
-  // low: 20 kg as 11.9 (docs/validation.md, "A mass the output delay takes").
+  // low: 20 kg as 11.9 (docs/validation.md, "A mass the output delay takes"). At 1 Hz it is 1-2 %
+  // of the force, so it need not be named: its size is the first step's fit, named or not. At
+  // 0.5 A the delay runs to its bound with it; fitted with the delay held there, 20 kg came out
+  // as 7.2 kg beyond the carried 3.1 ("The delay is not a channel skew here").
   constexpr double kSmallMass = 20.0;  // [kg]
   Recording lighter = original;
   for (std::size_t k = 0; k < a.size(); ++k)
     lighter.columns["force"][k] += sign * kSmallMass * a[k];
-  const double m_small = found(diagnose_with(lighter, model), "fluid_inertia") * area2;
+  const double m_small = carried(diagnose_with(lighter, model), "fluid_inertia") * area2;
   std::cout << "mass: injected " << kSmallMass << " kg, found " << m_small << " kg\n";
   EXPECT_NEAR((m_small - m_carried) / kSmallMass, 1.0, 0.3);
 
@@ -218,6 +221,10 @@ void check_held_out(const std::string& test) {
 
 TEST(DiagnoseRealInjection, HeldOutTenMillimetreTestAtQuarterAmpere) {
   check_held_out("10mm1Hz0x25A");
+}
+
+TEST(DiagnoseRealInjection, HeldOutTenMillimetreTestAtHalfAmpere) {
+  check_held_out("10mm1Hz0x5A");
 }
 
 TEST(DiagnoseRealInjection, HeldOutTenMillimetreTestAtThreeQuarterAmpere) {
