@@ -58,12 +58,20 @@ Recording held_out(const std::string& test) {
 }
 
 /// A damper family fitted on the 10 mm / 1 Hz tests other than `test` and the 25 mm / 0.5 Hz
-/// tests at 0.25 and 0.75 A, as the fitted-model JSON a user passes to --baseline.
+/// tests at 0.25 and 0.75 A, as the fitted-model JSON a user passes to --baseline; with the
+/// 10 mm / 0 A test held out, the 25 mm / 0.5 Hz / 0 A test too, so that the family does not
+/// extrapolate to a current below its tests'. Without it the field-dependent rod friction is
+/// extrapolated to 0 A, and the unmodified 10 mm / 0 A test shows an 83 N friction the family
+/// lacks (docs/validation.md).
 ModelBaseline family_without(const std::string& test) {
-  std::vector<Recording> training;
+  std::vector<std::string> names;
   for (const char* other : {"10mm1Hz0A", "10mm1Hz0x25A", "10mm1Hz0x5A", "10mm1Hz0x75A", "10mm1Hz1A",
                             "25mm0x5Hz0x25A", "25mm0x5Hz0x75A"})
-    if (other != test) training.push_back(rheomag::lumped::read_recording(kDir + other + ".csv"));
+    if (other != test) names.push_back(other);
+  if (test == "10mm1Hz0A") names.push_back("25mm0x5Hz0A");
+  std::vector<Recording> training;
+  for (const auto& name : names)
+    training.push_back(rheomag::lumped::read_recording(kDir + name + ".csv"));
   rheomag::identify::FamilyFitOptions options;
   options.greybox.starts = 2;  // the CLI's default
   const auto fit = rheomag::identify::fit_current_dependent(training, "damper", {}, options);
@@ -158,8 +166,9 @@ void check_spring(const Recording& original, const ModelBaseline& model, const s
 }
 
 /// The protocol on one held-out test: nothing named on it as recorded; a moving mass, a seal
-/// friction and a spring, each a tenth of its force rms, named and sized.
-void check_held_out(const std::string& test) {
+/// friction (unless `friction_sized` is false) and a spring, each a tenth of its force rms, named
+/// and sized.
+void check_held_out(const std::string& test, bool friction_sized = true) {
   if (!std::filesystem::exists(kDir + test + ".csv")) GTEST_SKIP() << "shared data absent";
   const ModelBaseline model = family_without(test);
   const Recording original = held_out(test);
@@ -213,10 +222,20 @@ void check_held_out(const std::string& test) {
   const double f_carried = carried(plain, "friction");
   std::cout << "friction: injected " << coulomb << " N, found " << f_found << " N, carried before "
             << f_carried << " N\n";
-  EXPECT_GT(f_found, 0.0) << "the friction is not named";
-  EXPECT_NEAR(f_found / coulomb, 1.0, 0.3);
+  if (friction_sized) {
+    EXPECT_GT(f_found, 0.0) << "the friction is not named";
+    EXPECT_NEAR(f_found / coulomb, 1.0, 0.3);
+  }
 
   check_spring(original, model, test);
+}
+
+// At 0 A the friction is not sized (open, issue 33): the recording's output scale, calibrated
+// for its level, takes it. The 0 A force of this fluid (flow index 0.27) is nearly a square wave
+// in the velocity, like a Coulomb force: 14.5 N of friction moves the calibrated scale from 0.961
+// to 1.052 and leaves 2.3 N to the candidate, not named (docs/validation.md).
+TEST(DiagnoseRealInjection, HeldOutTenMillimetreTestWithoutField) {
+  check_held_out("10mm1Hz0A", false);
 }
 
 TEST(DiagnoseRealInjection, HeldOutTenMillimetreTestAtQuarterAmpere) {
