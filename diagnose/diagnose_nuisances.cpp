@@ -34,7 +34,7 @@ std::vector<bool> held_in_candidates(const DiagnosisModel& model,
   return held;
 }
 
-void keep_better_with_free_delay(const DiagnosisModel& model,
+bool keep_better_with_free_delay(const DiagnosisModel& model,
                                  const std::vector<const Candidate*>& effects,
                                  const std::vector<double>& nominal, const FitSettings& held,
                                  const std::vector<double>& starts, int threads, ModelFit& fit) {
@@ -43,9 +43,11 @@ void keep_better_with_free_delay(const DiagnosisModel& model,
   try {
     const auto start = grid_start(model, effects, nominal, nullptr, threads, true, starts);
     auto free = fit_model(model, effects, start, settings);
-    if (free.sse < fit.sse) fit = std::move(free);
+    if (!(free.sse < fit.sse)) return false;
+    fit = std::move(free);
+    return true;
   } catch (const ConvergenceError&) {
-    // The held fit stands.
+    return false;  // the held fit stands
   }
 }
 

@@ -30,8 +30,9 @@ std::vector<bool> held_in_candidates(const DiagnosisModel& model,
 /// error is lower. A fit started at a bound projects every step onto it and can stall in a worse
 /// optimum, so the delay is held there first; but the candidate may explain what pushed the delay
 /// to its bound (on a sine, a mass's force and a delay's are nearly one waveform), and then only
-/// the free fit can give the size back. Throws only what the held fit would have.
-void keep_better_with_free_delay(const DiagnosisModel& model,
+/// the free fit can give the size back. Returns whether the free fit was kept; a free fit that
+/// cannot be simulated leaves `fit` as it was.
+bool keep_better_with_free_delay(const DiagnosisModel& model,
                                  const std::vector<const Candidate*>& effects,
                                  const std::vector<double>& nominal, const FitSettings& held,
                                  const std::vector<double>& starts, int threads, ModelFit& fit);

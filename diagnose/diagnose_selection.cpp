@@ -133,6 +133,8 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evi
       const Candidate* effect;
       ModelFit fit;
       double delta_bic;
+      bool delay_freed =
+          false;  ///< fitted with the output delay the baseline put at its bound free
     };
     std::vector<Tried> tried;
     // The current model with its best output delay (one simulation): each candidate is fitted
@@ -165,7 +167,7 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evi
                                  [&](const auto& t) { return t.effect->name() == twin_name; });
         if (twin != tried.end()) {
           d.candidates.push_back(fitted_score(model, c, step, y, twin->fit, twin->delta_bic));
-          tried.push_back({c, twin->fit, twin->delta_bic});
+          tried.push_back({c, twin->fit, twin->delta_bic, twin->delay_freed});
           tried.back().fit.effects.back() = c;
           continue;
         }
@@ -200,13 +202,13 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evi
         auto candidate_settings = settings;
         candidate_settings.fixed = held_in_candidates(model, effects, current.values);
         auto f = fit_model(model, effects, s, candidate_settings);
-        if (!scan_delay)
-          keep_better_with_free_delay(model, effects, nominal, candidate_settings, starts,
-                                      options.threads, f);
+        const bool delay_freed =
+            !scan_delay && keep_better_with_free_delay(model, effects, nominal, candidate_settings,
+                                                       starts, options.threads, f);
         const double db = bic_now - bic(f.sse, n, f.values.size());
         report(c, "dBIC " + num(db) + " in " + num(Clock::since(started)) + " s");
         d.candidates.push_back(fitted_score(model, c, step, y, f, db));
-        tried.push_back({c, std::move(f), db});
+        tried.push_back({c, std::move(f), db, delay_freed});
       } catch (const ConvergenceError&) {
         d.notes.push_back("candidate " + c->name() + " could not be simulated at step " +
                           std::to_string(step + 1));
@@ -305,6 +307,11 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evi
           f.separating_measurement += (f.separating_measurement.empty() ? "" : "; ") + how;
       }
     d.findings.push_back(std::move(f));
+    if (best.delay_freed)
+      d.notes.push_back(best.effect->name() +
+                        " was fitted with the output delay free: the baseline had put the delay "
+                        "at its bound, and held there the fit was worse (the effect may be what "
+                        "pushed it there)");
     current = best.fit;
     held_current = held_new;
   }
