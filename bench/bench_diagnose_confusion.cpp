@@ -680,13 +680,19 @@ int main(int argc, char** argv) {
     }
   }
   std::vector<Draw> jobs;
+  // The seed of each draw's recording (noise, sampling): from the draw's place in the whole
+  // run, so that --only and --index re-run a draw of the whole run exactly.
+  std::vector<unsigned> run_seeds;
   // Interleave the truths so that a run cut short still covers every class.
   for (int i = 0; i < draws; ++i)
     for (std::size_t c = 0; c < kTruths.size(); ++c)
-      if ((only.empty() || only == kTruths[c]) && (index < 0 || index == i))
+      if ((only.empty() || only == kTruths[c]) && (index < 0 || index == i)) {
         jobs.push_back(make_draw(kTruths[c], i,
                                  seed + 1000u * static_cast<unsigned>(c) + static_cast<unsigned>(i),
                                  nuisances));
+        const auto place = static_cast<unsigned>(i) * kTruths.size() + c;
+        run_seeds.push_back(seed + 7u * static_cast<unsigned>(place) + 1u);
+      }
   std::vector<Outcome> outcomes(jobs.size());
   std::atomic<std::size_t> next{0};
   std::mutex print;
@@ -698,7 +704,7 @@ int main(int argc, char** argv) {
   }
   auto worker = [&]() {
     for (std::size_t j = next++; j < jobs.size(); j = next++) {
-      outcomes[j] = run(jobs[j], seed + 7u * static_cast<unsigned>(j) + 1u, visible, options);
+      outcomes[j] = run(jobs[j], run_seeds[j], visible, options);
       const auto& o = outcomes[j];
       std::lock_guard<std::mutex> lock(print);
       std::cout << o.truth << " #" << jobs[j].index << " -> " << o.named
