@@ -74,6 +74,11 @@ class Candidate {
   /// True when it can be composed with a fitted-model baseline (compose_with_model).
   virtual bool composes_with_fitted_model() const { return false; }
 
+  /// True when on `model` it adds to the output a term linear in its size (its only parameter),
+  /// so that the size can also be fitted with its sign free: a recording with less of it than
+  /// the baseline comes out negative (CandidateScore::signed_params).
+  virtual bool linear_in_size(const DiagnosisModel& /*model*/) const { return false; }
+
   /// Adds it to a fitted-model baseline as a block on the model's inputs or output, its values
   /// read from `values`. The default throws InputError (see composes_with_fitted_model()).
   virtual void compose_with_model(FittedModelBlocks& blocks, ParamReader& values,

@@ -25,6 +25,10 @@ std::string separating_measurement(const Candidate& a, const Candidate& b);
 /// or the final joint fit of every accepted effect with the nuisances free again.
 inline constexpr const char* kCalibrationStage = "baseline calibration";
 inline constexpr const char* kFinalStage = "final fit";
+/// What a signed size is measured against, in the report's words.
+inline constexpr const char* kSignedSizeStage =
+    "first step, sign free: less than the baseline has is negative; another recording's finding "
+    "minus it is the change between the two";
 
 /// "selection step 2" (`step` counted from 0).
 std::string selection_stage(int step);

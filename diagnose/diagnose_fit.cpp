@@ -142,6 +142,12 @@ ModelFit fit_model(const DiagnosisModel& model, const std::vector<const Candidat
   fit.layout = model.layout(effects);
   const std::size_t p = fit.layout.size();
   if (start.size() != p) throw InputError("diagnose: internal parameter count mismatch");
+  if (settings.signed_last_size && !effects.empty()) {
+    ParamDef& size = fit.layout[p - effects.back()->params(model).size()];
+    size.log_scale = false;
+    size.typical = size.nominal;
+    size.lower = -size.upper;
+  }
   std::vector<double> z(p), lo(p), hi(p);
   for (std::size_t j = 0; j < p; ++j) {
     const auto& d = fit.layout[j];

@@ -33,6 +33,9 @@ struct FitSettings {
   /// costly once a parameter sits at a bound, but it keeps the short fits on half the data of
   /// the held-out check from jumping to another optimum).
   bool projected_line_search = false;
+  /// Fit the last effect's size (its first parameter) on a linear scale within +-its upper
+  /// bound: its sign free (Candidate::linear_in_size).
+  bool signed_last_size = false;
 };
 
 /// Fits `effects` on top of the baseline, starting from `start` (SI values in the order of

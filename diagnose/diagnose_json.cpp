@@ -130,6 +130,16 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
         row["units"][c.param_names[j]] = c.param_units[j];
       }
     }
+    // Its size with the sign free (first step, linear candidates): what to subtract from
+    // another recording's finding, also when this one's fit was screened or held at 0.
+    if (!c.signed_params.empty()) {
+      json p = json::object(), units = json::object();
+      for (std::size_t j = 0; j < c.signed_params.size() && j < c.param_names.size(); ++j)
+        p[c.param_names[j]] = c.signed_params[j], units[c.param_names[j]] = c.param_units[j];
+      for (const auto& q : c.signed_derived) p[q.name] = q.value, units[q.name] = q.unit;
+      row["signed_params"] = std::move(p);
+      row["signed_units"] = std::move(units);
+    }
     out["candidates"].push_back(std::move(row));
   }
   if (d.selection.size() > 0)

@@ -100,6 +100,20 @@ std::string svg_plot(const std::string& title, const std::string& ylabel,
   return o.str();
 }
 
+/// A candidate's size with the sign free and what derives from it, e.g. "inertance = -2.04e+07
+/// Pa s^2/m^3 (moving_mass = -20.4 kg)"; "" when it has none.
+std::string signed_size_text(const CandidateScore& c) {
+  std::string text;
+  for (std::size_t j = 0; j < c.signed_params.size() && j < c.param_names.size(); ++j)
+    text += (j == 0 ? "" : ", ") + c.param_names[j] + " = " +
+            value_text(c.signed_params[j], c.param_units[j]);
+  for (std::size_t j = 0; j < c.signed_derived.size(); ++j)
+    text += (j == 0 ? " (" : ", ") + c.signed_derived[j].name + " = " +
+            value_text(c.signed_derived[j].value, c.signed_derived[j].unit) +
+            (j + 1 == c.signed_derived.size() ? ")" : "");
+  return text;
+}
+
 }  // namespace
 
 std::string diagnosis_text(const Diagnosis& d) {
@@ -129,6 +143,13 @@ std::string diagnosis_text(const Diagnosis& d) {
     if (!f.ambiguous_with.empty())
       o << "    " << ambiguity_text(f, d) << "\n    to separate them: " << f.separating_measurement
         << "\n";
+  }
+  bool signed_header = false;
+  for (const auto& c : d.candidates) {
+    if (c.signed_params.empty()) continue;
+    if (!signed_header) o << "signed sizes against the baseline (" << kSignedSizeStage << "):\n";
+    signed_header = true;
+    o << "  " << c.effect->name() << ": " << signed_size_text(c) << "\n";
   }
   o << "final FIT " << percent_text(d.final_fit_percent) << " (" << kFinalStage << ")\n";
   o << "  nuisance (" << kFinalStage << "): " << nuisance_text(d.final_nuisance) << "\n";
@@ -285,13 +306,16 @@ std::string diagnosis_html(const Diagnosis& d) {
        "candidate on top of the model so far; screening comes first: a candidate whose "
        "parameter helps at no decade is scored there and not fitted. A candidate tied with the "
        "one accepted at a step is usually screened out at the next: the accepted one already "
-       "explains what it would.</p>\n<table><tr><th>stage</th><th>effect</th><th>FIT "
-       "(selection)</th><th>&Delta;BIC</th><th>outcome</th></tr>\n";
+       "explains what it would. The signed size is a candidate's size against the baseline with "
+       "its sign free ("
+    << kSignedSizeStage
+    << ").</p>\n<table><tr><th>stage</th><th>effect</th><th>FIT "
+       "(selection)</th><th>&Delta;BIC</th><th>outcome</th><th>signed size</th></tr>\n";
   for (const auto& c : d.candidates)
     o << "<tr><td>" << selection_stage(c.step) << "</td><td>" << c.effect->name() << "</td><td>"
       << (c.screened ? std::string("&ndash;") : percent_text(c.fit_percent)) << "</td><td>"
       << html_number(c.delta_bic, 4) << "</td><td>" << html_escape(candidate_outcome(c, d))
-      << "</td></tr>\n";
+      << "</td><td>" << html_escape(signed_size_text(c)) << "</td></tr>\n";
   o << "</table>\n";
   if (!d.notes.empty()) {
     o << "<h2>Notes</h2><ul>";

@@ -63,6 +63,13 @@ struct CandidateScore {
   std::vector<std::string> param_names;
   std::vector<std::string> param_units;  ///< SI unit of each parameter
   std::vector<double> params;            ///< SI
+  /// First step, a candidate linear in its size (Candidate::linear_in_size): its size against
+  /// the baseline with the sign free (SI; negative: the recording has less of it than the
+  /// baseline), and what derives from it. A finding on another recording minus this is the
+  /// change between the two, also where this recording's own fit was screened out or held at
+  /// its lower bound. Empty otherwise.
+  std::vector<double> signed_params;
+  std::vector<DerivedParam> signed_derived;
 };
 
 /// One accepted piece of missing physics.

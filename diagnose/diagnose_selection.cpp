@@ -15,6 +15,7 @@
 #include "diagnose/diagnose_heldout.hpp"
 #include "diagnose/diagnose_nuisances.hpp"
 #include "diagnose/diagnose_rejection.hpp"
+#include "diagnose/diagnose_signed_size.hpp"
 #include "lumped/metrics.hpp"
 
 namespace rheomag::diagnose {
@@ -195,6 +196,7 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evi
           screened.step = step;
           screened.delta_bic = db;
           screened.screened = true;
+          if (first_step) add_signed_size(model, current, settings, screened);
           d.candidates.push_back(std::move(screened));
           report(c, "screened out (no decade of its parameter helps)");
           continue;
@@ -208,6 +210,7 @@ ModelFit forward_select(const DiagnosisModel& model, ModelFit current, const Evi
         const double db = bic_now - bic(f.sse, n, f.values.size());
         report(c, "dBIC " + num(db) + " in " + num(Clock::since(started)) + " s");
         d.candidates.push_back(fitted_score(model, c, step, y, f, db));
+        if (first_step) add_signed_size(model, current, settings, d.candidates.back());
         tried.push_back({c, std::move(f), db, delay_freed});
       } catch (const ConvergenceError&) {
         d.notes.push_back("candidate " + c->name() + " could not be simulated at step " +

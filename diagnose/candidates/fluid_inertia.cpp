@@ -61,6 +61,10 @@ class FluidInertia final : public Candidate {
 
   bool composes_with_fitted_model() const override { return true; }
 
+  bool linear_in_size(const DiagnosisModel& model) const override {
+    return model.fitted_baseline();  // a term added to the fitted model's output
+  }
+
   void compose_with_model(FittedModelBlocks& blocks, ParamReader& values,
                           const DiagnosisModel& model) const override {
     // L dQ/dt on the pressure; on a damper's force, A L dQ/dt (Q = A v).

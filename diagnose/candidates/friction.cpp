@@ -34,6 +34,10 @@ class Friction final : public Candidate {
 
   bool composes_with_fitted_model() const override { return true; }
 
+  bool linear_in_size(const DiagnosisModel& model) const override {
+    return model.fitted_baseline();  // a term added to the fitted model's output
+  }
+
   void compose_with_model(FittedModelBlocks& blocks, ParamReader& values,
                           const DiagnosisModel& model) const override {
     const double force = blocks.sign * values.next();
