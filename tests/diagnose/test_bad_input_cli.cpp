@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "tests/cli_run.hpp"
 
 namespace fs = std::filesystem;
@@ -272,4 +274,39 @@ TEST_F(BadInputCli, FittedModelBaselineIsUsedAndAnotherRigKindIsExit2) {
                        "recording (other.toml) is from a bypass_cylinder rig"),
             std::string::npos)
       << r.err;
+}
+
+// On a fitted-model baseline the candidates linear in their size carry it with the sign free
+// (docs/diagnosis.md, "Signed sizes"): in the JSON at the first step (signed_params with
+// signed_units; the moving mass beside the inertance, in kg), and in the text report. Here
+// friction and fluid_inertia (gas_spring needs a displacement column).
+TEST_F(BadInputCli, FittedModelBaselineReportsSignedSizes) {
+  recording("rec", damper_sidecar("1.0e-3"), sine_force);
+  const CliRun fit = run_in(dir, "fit rec.csv --model bingham --json");
+  ASSERT_EQ(fit.code, 0) << fit.err;
+  write("model.json", fit.out);
+  const CliRun js = run_in(dir, "diagnose rec.csv --baseline model.json --json --quiet");
+  ASSERT_EQ(js.code, 0) << js.err;
+  const auto j = nlohmann::json::parse(js.out);
+  std::vector<std::string> with_sign;
+  for (const auto& c : j.at("candidates")) {
+    if (!c.contains("signed_params")) continue;
+    with_sign.push_back(c.at("name").get<std::string>());
+    EXPECT_EQ(c.at("step").get<int>(), 1);
+    for (const auto& [name, value] : c.at("signed_params").items()) {
+      EXPECT_TRUE(std::isfinite(value.get<double>())) << name;
+      EXPECT_TRUE(c.at("signed_units").contains(name)) << name;
+    }
+    if (with_sign.back() == "fluid_inertia") {
+      EXPECT_EQ(c.at("signed_units").at("moving_mass"), "kg");
+      EXPECT_NEAR(c.at("signed_params").at("moving_mass").get<double>(),
+                  c.at("signed_params").at("inertance").get<double>() * 1e-6, 1e-12);
+    }
+  }
+  std::sort(with_sign.begin(), with_sign.end());
+  EXPECT_EQ(with_sign, (std::vector<std::string>{"fluid_inertia", "friction"}));
+  const CliRun text = run_in(dir, "diagnose rec.csv --baseline model.json --quiet");
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("signed sizes against the baseline ("), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("\n  friction: coulomb_force = "), std::string::npos) << text.out;
 }

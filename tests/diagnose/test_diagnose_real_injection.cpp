@@ -15,7 +15,11 @@
 // - differentially, the found size minus what the unmodified recording already carries of the
 //   same candidate (its fit at the first step, accepted or not, now in the report) within 10 %:
 //   the remaining error of the raw size is that held-out test's own mismatch with the model,
-//   not a bias of the diagnosis (docs/validation.md, "Diagnosis parameters on real recordings").
+//   not a bias of the diagnosis (docs/validation.md, "Diagnosis parameters on real recordings");
+// - the same with what the unmodified recording carries with the sign free (its signed size:
+//   where it has less of an effect than the model, its positive fit is screened out and carries
+//   0), named or, below the naming bar, as the injected recording's signed size, within 10 %:
+//   measured -3.9 ... +1.9 % here (docs/validation.md, "Differenced with signed sizes").
 // The same protocol on dyke1996's white-noise recording of another damper (Spencer et al. 1997, a
 // random displacement and a random on/off command): one recording, so the model is fitted on its
 // first 8 s (samples 0:24000) and the remaining 16.7 s are diagnosed. Its command moves, so a
@@ -136,6 +140,22 @@ void print(const std::string& what, const Diagnosis& d) {
   for (const auto& n : d.notes) std::cout << "  note: " << n << "\n";
 }
 
+/// What `d` carries of `name` against its baseline with the sign free, at its first step
+/// (CandidateScore::signed_params); a failure when it has none.
+double signed_size(const Diagnosis& d, const std::string& name) {
+  for (const auto& c : d.candidates)
+    if (c.effect->name() == name && c.step == 0 && !c.signed_params.empty())
+      return c.signed_params.front();
+  ADD_FAILURE() << name << " has no signed size";
+  return 0.0;
+}
+
+/// The size of `name` in `d`: as named, else its signed first-step size (below the naming bar).
+double named_or_signed(const Diagnosis& d, const std::string& name) {
+  const double named = found(d, name);
+  return named > 0.0 ? named : signed_size(d, name);
+}
+
 /// `rec` with a seal friction F_c tanh(v / 1 mm/s) added to its measured force (the model's sign).
 Recording with_friction(const Recording& rec, double coulomb) {
   Recording rubbing = rec;
@@ -146,13 +166,16 @@ Recording with_friction(const Recording& rec, double coulomb) {
   return rubbing;
 }
 
-/// A spring of a tenth of `original`'s force rms over its displacement rms, k (x - mean x), added
-/// to its force, diagnosed against `model`: named as gas_spring within 30 %.
-void check_spring(const Recording& original, const ModelBaseline& model, const std::string& label) {
+/// A spring of `share` of `original`'s force rms over its displacement rms, k (x - mean x),
+/// added to its force, diagnosed against `model`: beyond the signed stiffness of the unmodified
+/// recording's diagnosis `plain` (when given), within 10 %; at a tenth, also named as gas_spring
+/// within 30 %.
+void check_spring(const Recording& original, const Diagnosis* plain, const ModelBaseline& model,
+                  const std::string& label, double share = 0.1) {
   const auto& x = original.column("displacement");
   const double x_mean = std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(x.size());
   const double stiffness =
-      0.1 * rms_about_mean(original.column("force")) / rms_about_mean(x);  // [N/m]
+      share * rms_about_mean(original.column("force")) / rms_about_mean(x);  // [N/m]
   const double sign = model_sign(original);
   Recording sprung = original;
   for (std::size_t k = 0; k < x.size(); ++k)
@@ -161,6 +184,13 @@ void check_spring(const Recording& original, const ModelBaseline& model, const s
   print(label + " with " + std::to_string(stiffness) + " N/m", d_spring);
   const double k_found = found(d_spring, "gas_spring");
   std::cout << "stiffness: injected " << stiffness << " N/m, found " << k_found << " N/m\n";
+  if (plain) {
+    const double k_change =
+        named_or_signed(d_spring, "gas_spring") - signed_size(*plain, "gas_spring");
+    std::cout << "stiffness: signed change " << k_change << " N/m\n";
+    EXPECT_NEAR(k_change / stiffness, 1.0, 0.1);
+  }
+  if (share < 0.1) return;
   EXPECT_GT(k_found, 0.0) << "the stiffness is not named";
   EXPECT_NEAR(k_found / stiffness, 1.0, 0.3);
 }
@@ -200,6 +230,8 @@ void check_held_out(const std::string& test, bool friction_sized = true) {
     }
   EXPECT_NEAR(m_found / mass, 1.0, 0.3);
   EXPECT_NEAR((m_found - m_carried) / mass, 1.0, 0.1);
+  const double m_signed = signed_size(plain, "fluid_inertia") * area2;  // carried, sign free
+  EXPECT_NEAR((m_found - m_signed) / mass, 1.0, 0.1);
   // A small mass, 20 kg: the size a tenth of the force is at 3-5 Hz (issue 33). Sized within
   // 30 % beyond what the recording carries. While the family kept an inertance its training
   // tests do not show (9.6 kg without the 0.25 A test), every mass on that test was found 8 kg
@@ -212,22 +244,28 @@ void check_held_out(const std::string& test, bool friction_sized = true) {
   for (std::size_t k = 0; k < a.size(); ++k)
     lighter.columns["force"][k] += sign * kSmallMass * a[k];
   const double m_small = carried(diagnose_with(lighter, model), "fluid_inertia") * area2;
-  std::cout << "mass: injected " << kSmallMass << " kg, found " << m_small << " kg\n";
+  std::cout << "mass: injected " << kSmallMass << " kg, found " << m_small
+            << " kg, carried with the sign free " << m_signed << " kg\n";
   EXPECT_NEAR((m_small - m_carried) / kSmallMass, 1.0, 0.3);
+  EXPECT_NEAR((m_small - m_signed) / kSmallMass, 1.0, 0.1);
 
   const double coulomb = 0.1 * force_rms;  // [N]
   const Diagnosis d_friction = diagnose_with(with_friction(original, coulomb), model);
   print(test + " with " + std::to_string(coulomb) + " N of friction", d_friction);
   const double f_found = found(d_friction, "friction");
   const double f_carried = carried(plain, "friction");
+  // Beyond what the unmodified recording carries with the sign free, named or not: sized at
+  // 0 A too, where the calibrated output scale takes the named fit's share.
+  const double f_change = named_or_signed(d_friction, "friction") - signed_size(plain, "friction");
   std::cout << "friction: injected " << coulomb << " N, found " << f_found << " N, carried before "
-            << f_carried << " N\n";
+            << f_carried << " N, signed change " << f_change << " N\n";
+  EXPECT_NEAR(f_change / coulomb, 1.0, 0.1);
   if (friction_sized) {
     EXPECT_GT(f_found, 0.0) << "the friction is not named";
     EXPECT_NEAR(f_found / coulomb, 1.0, 0.3);
   }
 
-  check_spring(original, model, test);
+  check_spring(original, &plain, model, test);
 }
 
 // At 0 A the friction is not sized (open, issue 33): the recording's output scale, calibrated
@@ -285,6 +323,29 @@ TEST(DiagnoseRealInjection, AMassThatPushedTheDelayToItsBoundIsFittedWithTheDela
 
 TEST(DiagnoseRealInjection, HeldOutTenMillimetreTestAtThreeQuarterAmpere) {
   check_held_out("10mm1Hz0x75A");
+}
+
+// Effects below the naming bar, sized with their sign free (docs/diagnosis.md, "Signed sizes").
+// On the held-out 1 A test, a seal friction and a spring of 3 % of the force rms: the friction is
+// not named (the calibrated output scale takes most of a Coulomb force in phase with the yield
+// force) and the spring is named 30 % low, because against this family the unmodified recording
+// already has less of both (-22 N, -1 900 N/m with the sign free). Reference: the injected sizes,
+// beyond the unmodified recording's signed sizes, within 10 % (the protocol's differential
+// tolerance); measured -1.0 % and +4.4 % (the named sizes minus the carried ones: missed, -30 %).
+TEST(DiagnoseRealInjection, EffectsBelowTheNamingBarAreSizedWithTheirSignFree) {
+  const std::string test = "10mm1Hz1A";
+  if (!std::filesystem::exists(kDir + test + ".csv")) GTEST_SKIP() << "shared data absent";
+  const ModelBaseline model = family_without(test);
+  const Recording original = held_out(test);
+  const Diagnosis plain = diagnose_with(original, model);
+  print(test + " as recorded", plain);
+  const double coulomb = 0.03 * rms_about_mean(original.column("force"));  // [N]
+  const Diagnosis d = diagnose_with(with_friction(original, coulomb), model);
+  print(test + " with " + std::to_string(coulomb) + " N of friction", d);
+  const double change = named_or_signed(d, "friction") - signed_size(plain, "friction");
+  std::cout << "friction: injected " << coulomb << " N, signed change " << change << " N\n";
+  EXPECT_NEAR(change / coulomb, 1.0, 0.1);
+  check_spring(original, &plain, model, test, 0.03);
 }
 
 const std::string kDyke = std::string(RHEOMAG_SHARED_DIR) + "/data/dyke1996/ranran_50.csv";
@@ -350,7 +411,7 @@ TEST(DiagnoseRealInjection, WhiteNoiseRecordingWithFrictionOrASpring) {
   std::cout << "friction: injected " << coulomb << " N, found " << f_found << " N\n";
   EXPECT_NEAR(f_found / coulomb, 1.0, 0.3);
 
-  check_spring(original, split.model, "dyke1996");
+  check_spring(original, nullptr, split.model, "dyke1996");
 }
 
 }  // namespace
