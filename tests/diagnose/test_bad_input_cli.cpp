@@ -52,6 +52,9 @@ class BadInputCli : public ::testing::Test {
   void write(const std::string& name, const std::string& text) const {
     std::ofstream(dir / name) << text;
   }
+  /// rec.csv (a damper recording with a piston area) and model.json, the Bingham model that
+  /// `fit --json` writes of it: the baseline of `diagnose --baseline` (defined below).
+  void fitted_model() const;
   /// The bundled annular valve case with line `from` replaced by `to`.
   void annular_case(const std::string& name, const std::string& from, const std::string& to) {
     std::ifstream in(std::string(RHEOMAG_SOURCE_DIR) + "/cases/annular_valve.toml");
@@ -83,6 +86,13 @@ double sine_force(int k) {
 }
 double constant_force(int) {
   return 5.0;
+}
+
+void BadInputCli::fitted_model() const {
+  recording("rec", damper_sidecar("1.0e-3"), sine_force);
+  const CliRun fit = run_in(dir, "fit rec.csv --model bingham --json");
+  ASSERT_EQ(fit.code, 0) << fit.err;
+  write("model.json", fit.out);
 }
 
 }  // namespace
@@ -256,10 +266,7 @@ TEST_F(BadInputCli, VtkOnFullDiskIsExit2KeepsTheOldFileAndNoVtkLogging) {
 // baseline (its output and parameters listed in baseline.includes); a model of another rig kind
 // is exit 2 naming the model file, its key and both rig kinds.
 TEST_F(BadInputCli, FittedModelBaselineIsUsedAndAnotherRigKindIsExit2) {
-  recording("rec", damper_sidecar("1.0e-3"), sine_force);
-  const CliRun fit = run_in(dir, "fit rec.csv --model bingham --json");
-  ASSERT_EQ(fit.code, 0) << fit.err;
-  write("model.json", fit.out);
+  fitted_model();
   const CliRun ok = run_in(dir, "diagnose rec.csv --baseline model.json --json --quiet");
   EXPECT_EQ(ok.code, 0) << ok.err;
   EXPECT_NE(ok.out.find("\"fitted_model\""), std::string::npos) << ok.out;
@@ -281,10 +288,7 @@ TEST_F(BadInputCli, FittedModelBaselineIsUsedAndAnotherRigKindIsExit2) {
 // signed_units; the moving mass beside the inertance, in kg), and in the text report. Here
 // friction and fluid_inertia (gas_spring needs a displacement column).
 TEST_F(BadInputCli, FittedModelBaselineReportsSignedSizes) {
-  recording("rec", damper_sidecar("1.0e-3"), sine_force);
-  const CliRun fit = run_in(dir, "fit rec.csv --model bingham --json");
-  ASSERT_EQ(fit.code, 0) << fit.err;
-  write("model.json", fit.out);
+  fitted_model();
   const CliRun js = run_in(dir, "diagnose rec.csv --baseline model.json --json --quiet");
   ASSERT_EQ(js.code, 0) << js.err;
   const auto j = nlohmann::json::parse(js.out);
