@@ -22,8 +22,10 @@ std::size_t leading_rest(const std::vector<double>& t, const std::vector<double>
   const std::size_t n = std::min(t.size(), motion.size());
   if (n == 0) return 0;
   const std::size_t rest = motion_start(motion);
-  if (rest < kMinRestSamples || rest >= n || t[rest] - t.front() < kMinRestSeconds) return 0;
-  return rest;
+  if (rest >= kMinRestSamples && rest < n && t[rest] - t.front() >= kMinRestSeconds) return rest;
+  std::size_t still = 1;
+  while (still < n && motion[still] == motion.front()) ++still;
+  return still >= kMinStillSamples && still <= rest ? still : 0;
 }
 
 }  // namespace rheomag::lumped
