@@ -52,16 +52,30 @@ TEST(LeadingRest, NoiseAtRestIsStillRest) {
   EXPECT_EQ(leading_rest(m.t, m.v), 151u);
 }
 
-// A motion from the first samples, a rest shorter than 0.2 s (10 samples at 100 Hz is 0.1 s) and
-// a motion that is zero throughout have no rest to tare on.
+// A motion from the first samples, a noisy rest shorter than 0.2 s (10 samples at 100 Hz is 0.1 s)
+// and a motion that is zero throughout have no rest to tare on.
 TEST(LeadingRest, NoneWhenTooShortOrNoMotion) {
   const Motion moving = resting_then_sine(0, 0.0);
   EXPECT_EQ(motion_start(moving.v), 1u);
   EXPECT_EQ(leading_rest(moving.t, moving.v), 0u);
-  const Motion brief = resting_then_sine(10, 0.0);
+  const Motion brief = resting_then_sine(10, 0.005);
   EXPECT_EQ(leading_rest(brief.t, brief.v), 0u);
   const std::vector<double> t = {0.0, 0.1, 0.2, 0.3}, still(4, 0.0);
   EXPECT_EQ(motion_start(still), 0u);
   EXPECT_EQ(leading_rest(t, still), 0u);
   EXPECT_EQ(leading_rest({}, {}), 0u);
+}
+
+// A rest shorter than 0.2 s counts where the motion is exactly still (a velocity derived from a
+// displacement that does not move is exactly 0; 0x87V test 8 of the UTFPR shaking table holds
+// still for 6 samples, 0.06 s): from kMinStillSamples equal leading samples on. Exact: 10 zeros
+// and the sine's first sample (sin 0 = 0) are 11 still samples; 4 zeros and sin 0 are 5, the
+// least that counts; 3 and sin 0 are 4, which do not.
+TEST(LeadingRest, AShortRestExactlyStillCounts) {
+  const Motion brief = resting_then_sine(10, 0.0);
+  EXPECT_EQ(leading_rest(brief.t, brief.v), 11u);
+  const Motion least = resting_then_sine(static_cast<int>(kMinStillSamples) - 1, 0.0);
+  EXPECT_EQ(leading_rest(least.t, least.v), kMinStillSamples);
+  const Motion too_brief = resting_then_sine(static_cast<int>(kMinStillSamples) - 2, 0.0);
+  EXPECT_EQ(leading_rest(too_brief.t, too_brief.v), 0u);
 }
