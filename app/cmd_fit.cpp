@@ -89,10 +89,12 @@ const bool fit_registered = rheomag::app::register_command([](CLI::App& root) {
   cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr (grey-box fits report them)");
   cmd->add_flag("--json", o->json,
                 "Print one JSON object: the fitted model (format, kind, model, rig, drive, output, "
-                "setup, parameters with units, static_map of valve-chain; readable back as a "
+                "setup, parameters with units, static_map of valve-chain, operating_range: the "
+                "training part's field levels, peak speed and stroke; readable back as a "
                 "model file, docs/fit-model-json.md), params, train and validation "
                 "({fit_percent, rmse_percent, re, repeatability_percent, tared_at_rest_s: the "
-                "leading rest the model's output is tared over, null if none}), mode");
+                "leading rest the model's output is tared over, null if none; validation also "
+                "beyond_training: what of its drive lies beyond the training part's}), mode");
   cmd->add_option("--plot", o->request.plot,
                   "Write a PNG figure (measured vs model, residual) with gnuplot")
       ->check(rheomag::app::output_file());

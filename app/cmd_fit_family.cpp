@@ -142,7 +142,10 @@ const bool fit_family_registered = rheomag::app::register_command([](CLI::App& r
                 "level_offset, level_window_s, level_window_start_s, viscosity_factor, "
                 "viscosity_temperature_offset_k, regimes: the residual's share in the reversals "
                 "and in the settled strokes of each direction, {transition, positive, negative} "
-                "each {time_percent, energy_percent, rms, mean}}), "
+                "each {time_percent, energy_percent, rms, mean}, beyond_training: what of a "
+                "predicted recording's drive lies beyond the training recordings' "
+                "(operating_range: their field levels, peak speeds and strokes), each {quantity, "
+                "column, unit, value, trained_low, trained_high, text}}), "
                 "held_out (the same, with --cross-validate), mode");
   rheomag::app::add_hold_option(cmd, o->holds);
   rheomag::app::add_keep_inertance_flag(cmd, o->keep_inertance);

@@ -19,10 +19,14 @@ struct SimulateOptions {
 void run_simulate(const SimulateOptions& o) {
   rheomag::identify::SimulateRequest request = o.request;
   request.load_recording = rheomag::app::load_recording;
-  const rheomag::lumped::Recording rec = rheomag::identify::run_simulate(request);
+  std::vector<rheomag::identify::RangeExcess> beyond;
+  const rheomag::lumped::Recording rec = rheomag::identify::run_simulate(request, &beyond);
   rheomag::lumped::write_recording(rec, o.out);
+  for (const auto& e : beyond)
+    std::cerr << "note: " << o.request.input << " beyond the drive " << o.request.spec
+              << " was fitted on: " << e.text() << "\n";
   if (o.json)
-    rheomag::app::print_json(rheomag::identify::simulate_written_json(rec, o.out));
+    rheomag::app::print_json(rheomag::identify::simulate_written_json(rec, o.out, beyond));
   else
     std::cout << "wrote " << o.out << " and " << rheomag::lumped::sidecar_path_for(o.out) << " ("
               << rec.t.size() << " samples, output " << rec.meta.output << ")\n";
@@ -40,7 +44,10 @@ bool simulate_registered = rheomag::app::register_command([](CLI::App& root) {
       "  --signal displacement=sine:amplitude=0.025,frequency=0.75 \\\n"
       "  --signal current=steps:levels=0/0.5/1,period=2 --duration 6 --rate 1000 --out sim.csv\n"
       "A fitted model (fit / fit-family --json > model.json) runs on a recording's drive:\n"
-      "  rheomag simulate model.json --input today.csv --out predicted.csv");
+      "  rheomag simulate model.json --input today.csv --out predicted.csv\n"
+      "Where today's drive lies beyond the one the model was fitted on (its field levels, peak\n"
+      "speeds, strokes: the model's operating_range), a note on stderr says so (JSON\n"
+      "beyond_training): there the model extrapolates.");
   cmd->add_option("spec", opts->request.spec,
                   "model spec (TOML), or a fitted model (JSON written by fit / fit-family --json: "
                   "run on --input's drive, its output replaced by the model's)")

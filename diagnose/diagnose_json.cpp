@@ -43,7 +43,8 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
   out["baseline"] = {{"fit_percent", d.baseline_fit_percent},
                      {"params", params_of(d.baseline, 0, n_static)},
                      {"includes", json::array()},
-                     {"nuisance", nuisance_json(d.nuisance)}};
+                     {"nuisance", nuisance_json(d.nuisance)},
+                     {"beyond_training", identify::range_excess_json(d.beyond_training)}};
   for (const auto& item : d.includes)
     out["baseline"]["includes"].push_back(
         {{"name", item.name},

@@ -264,6 +264,13 @@ Diagnosis diagnose(const lumped::Recording& recording, const DiagnoseOptions& op
   if (factor > 1)
     d.notes.push_back("recording thinned to " + lumped::thinning_note(recording.t.size(), factor));
   if (model.fitted_baseline()) d.notes.push_back(fitted_model_note());
+  if (fitted)  // beyond its training drive the baseline extrapolates: its mismatch is suspect
+    d.beyond_training = identify::beyond_fitted_range(fitted->model, recording);
+  for (const identify::RangeExcess& e : d.beyond_training)
+    d.notes.push_back("the recording's drive is beyond the baseline model's training drive (" +
+                      e.text() +
+                      "): a mismatch there may be the model's extrapolation, not missing "
+                      "physics");
   if (model.constant_field())
     d.notes.push_back("the recording has no coil input: the field is taken as constant");
   if (d.findings.empty() && !d.baseline_stats.white)

@@ -14,6 +14,7 @@
 #include "diagnose/diagnose_fit.hpp"
 #include "diagnose/diagnose_locate.hpp"
 #include "diagnose/diagnose_model.hpp"
+#include "identify/operating_range.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording.hpp"
 
@@ -141,6 +142,9 @@ struct Diagnosis {
   std::vector<MismatchWindow> final_mismatch;
   Nuisance final_nuisance;  ///< the nuisances as re-fitted with the findings
   Unexplained unexplained;
+  /// A fitted-model baseline: what of the recording's drive lies beyond the drive it was fitted
+  /// on (identify/operating_range.hpp); empty otherwise.
+  std::vector<identify::RangeExcess> beyond_training;
   std::vector<std::string> notes;
 };
 

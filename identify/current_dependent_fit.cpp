@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "identify/family_cross_validation.hpp"
+#include "identify/fit_model_json.hpp"
 #include "identify/repeatability.hpp"
 #include "lumped/output_smoothing.hpp"
 
@@ -211,7 +212,13 @@ FamilyFit fit_current_dependent(const std::vector<lumped::Recording>& training,
         evaluate_family_member(training[r], with_viscosity_factor(out.fit, factors[r])));
     out.training.back().viscosity_factor = factors[r];
   }
-  for (const lumped::Recording& r : prediction) evaluate(r, out.predicted);
+  const DriveColumns cols = drive_columns(out.fit);
+  for (const lumped::Recording& r : training)
+    out.trained = span(out.trained, operating_range(r, cols));
+  for (const lumped::Recording& r : prediction) {
+    evaluate(r, out.predicted);
+    out.predicted.back().beyond = beyond_range(out.trained, operating_range(r, cols));
+  }
   if (options.cross_validate) out.held_out = cross_validate_family(training, model, options);
   return out;
 }

@@ -10,6 +10,7 @@
 
 #include "identify/greybox.hpp"
 #include "identify/level_calibration.hpp"
+#include "identify/operating_range.hpp"
 #include "identify/prediction_band.hpp"
 #include "identify/residual_regimes.hpp"
 #include "identify/viscosity_nuisance.hpp"
@@ -61,6 +62,9 @@ struct FamilyMember {
   /// strokes in each direction; residual_regimes); empty where the motion is constant.
   std::optional<ResidualRegimes> regimes;
   std::vector<double> simulated;  ///< free-run model output at the recording's samples
+  /// Predicted recordings: what of the recording's drive lies beyond the training recordings'
+  /// (FamilyFit::trained); empty when within it.
+  std::vector<RangeExcess> beyond;
 };
 
 /// Result of fit_current_dependent.
@@ -71,6 +75,8 @@ struct FamilyFit {
   /// Each training recording predicted by the family fitted without it, in training order
   /// (leave-one-recording-out, FamilyFitOptions::cross_validate); empty otherwise.
   std::vector<FamilyMember> held_out;
+  /// The drive the training recordings span (written into the fitted model's JSON).
+  OperatingRange trained;
 };
 
 /// The recordings joined end to end, each decimated by `decimation` and shifted in time to

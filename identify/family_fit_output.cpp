@@ -56,7 +56,8 @@ nlohmann::json member_json(const FamilyMember& m) {
       {"viscosity_temperature_offset_k",
        m.viscosity_factor ? nlohmann::json(viscosity_temperature_offset(*m.viscosity_factor))
                           : nlohmann::json()},
-      {"regimes", regimes_json(m)}};
+      {"regimes", regimes_json(m)},
+      {"beyond_training", range_excess_json(m.beyond)}};
 }
 
 void print_members(std::ostream& out, const char* title, const std::vector<FamilyMember>& members) {
@@ -191,7 +192,13 @@ void write_family_fit_text(const FamilyFit& r, std::size_t recordings, int decim
                        remark.empty() ? "" : (" (" + remark + ")").c_str());
   }
   print_members(out, "training recordings:", r.training);
-  if (!r.predicted.empty()) print_members(out, "predicted recordings:", r.predicted);
+  if (!r.predicted.empty()) {
+    print_members(out, "predicted recordings:", r.predicted);
+    for (const FamilyMember& m : r.predicted)
+      for (const RangeExcess& e : m.beyond)
+        out << "  beyond the training recordings' drive: " << m.csv_path << ": " << e.text()
+            << "\n";
+  }
   if (!r.held_out.empty()) {
     print_members(out,
                   "held out (each training recording predicted by the family fitted without it):",
@@ -221,6 +228,7 @@ void write_family_fit_text(const FamilyFit& r, std::size_t recordings, int decim
 nlohmann::json family_fit_json(const FamilyFit& r, const lumped::RecordingMeta& meta,
                                int decimation, bool cross_validate) {
   nlohmann::json j = fit_model_json(r.fit, meta);
+  j["operating_range"] = operating_range_json(r.trained);
   j["train"] = nlohmann::json::array();
   for (const auto& m : r.training) j["train"].push_back(member_json(m));
   j["prediction"] = nlohmann::json::array();

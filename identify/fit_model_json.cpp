@@ -72,6 +72,9 @@ class Field {
     if (it == value_->end()) throw InputError(file_ + ": key '" + path + "' is missing");
     return Field(*it, file_, path);
   }
+  void require_object() const {
+    if (!value_->is_object()) fail("expected an object, got " + type());
+  }
   bool has(const std::string& key) const {
     return value_->is_object() && value_->contains(key) && !(*value_)[key].is_null();
   }
@@ -268,6 +271,20 @@ ValveChainFit read_valve_chain(const Field& root) {
   return fit;
 }
 
+/// The optional "operating_range" object: each quantity present has its column, low <= high.
+OperatingRange read_operating_range(const Field& range) {
+  const auto extent = [&range](const char* key) -> std::optional<DriveExtent> {
+    if (!range.has(key)) return std::nullopt;
+    const Field e = range.at(key);
+    DriveExtent x{e.at("column").text(), e.at("low").number(), e.at("high").number()};
+    if (x.high < x.low)
+      e.at("high").fail("expected a value at least 'low' (" + std::to_string(x.low) + ")");
+    return x;
+  };
+  range.require_object();
+  return {extent("field"), extent("speed"), extent("stroke")};
+}
+
 }  // namespace
 
 json fit_model_json(const GreyboxFit& fit, const lumped::RecordingMeta& meta) {
@@ -365,6 +382,8 @@ FitModel parse_fit_model_json(std::string_view text, const std::string& file) {
     }
     m.greybox = read_greybox(root, m.model);
   }
+  if (root.has("operating_range"))
+    m.operating_range = read_operating_range(root.at("operating_range"));
   return m;
 }
 

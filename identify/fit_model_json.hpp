@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "identify/greybox.hpp"
+#include "identify/operating_range.hpp"
 #include "identify/valve_chain_fit.hpp"
 #include "lumped/recording.hpp"
 
@@ -28,6 +29,8 @@ struct FitModel {
   std::string output;                        ///< the fitted recording's output column
   std::optional<GreyboxFit> greybox;         ///< setup and parameters (no simulated output)
   std::optional<ValveChainFit> valve_chain;  ///< setup with its static map, parameters
+  /// The drive the model was fitted on (key "operating_range"; absent in files written before it).
+  std::optional<OperatingRange> operating_range;
 };
 
 /// The JSON of a grey-box fit (fit or fit-family) of a recording with sidecar `meta`.
@@ -48,6 +51,16 @@ FitModel parse_fit_model_json(std::string_view text, const std::string& file);
 
 /// Reads the fitted-model JSON file `path` (see parse_fit_model_json).
 FitModel read_fit_model_json(const std::filesystem::path& path);
+
+/// The drive columns of a fitted model (field, motion, position; empty where it has none).
+DriveColumns drive_columns(const GreyboxFit& fit);
+
+/// The drive columns of a fitted valve-chain model (field and flow or motion, no position).
+DriveColumns drive_columns(const ValveChainFit& fit);
+
+/// What of `rec`'s drive lies beyond the range `model` was fitted on (beyond_range); empty when
+/// within it or when the model carries no range.
+std::vector<RangeExcess> beyond_fitted_range(const FitModel& model, const lumped::Recording& rec);
 
 /// The model's free-run output on `rec` (same drive and output columns as the fitted recording;
 /// InputError naming the file otherwise).

@@ -13,4 +13,19 @@ std::vector<double> simulate_fit_model(const lumped::Recording& rec, const FitMo
   return simulate_greybox(rec, *model.greybox);
 }
 
+DriveColumns drive_columns(const GreyboxFit& fit) {
+  return {fit.setup.field_column, fit.setup.motion_column, fit.setup.position_column};
+}
+
+DriveColumns drive_columns(const ValveChainFit& fit) {
+  return {fit.setup.field_column, fit.setup.motion_column, ""};
+}
+
+std::vector<RangeExcess> beyond_fitted_range(const FitModel& model, const lumped::Recording& rec) {
+  if (!model.operating_range) return {};
+  const DriveColumns cols =
+      model.valve_chain ? drive_columns(*model.valve_chain) : drive_columns(*model.greybox);
+  return beyond_range(*model.operating_range, operating_range(rec, cols));
+}
+
 }  // namespace rheomag::identify

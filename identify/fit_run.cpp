@@ -134,6 +134,19 @@ void reject_prediction_mode(const FitRequest& o) {
                      "' is a state-space model run in free simulation only");
 }
 
+/// Writes the training part's drive into the fitted model and notes what of the validation
+/// part's drive lies beyond it.
+void put_operating_range(FitReport& report, const DriveColumns& cols, const Recording& rec,
+                         const SampleRange& train, const Validation& val) {
+  const OperatingRange trained = operating_range(rec, cols, train.begin, train.end);
+  report.fitted["operating_range"] = operating_range_json(trained);
+  if (val.other)
+    report.validation_beyond = beyond_range(trained, operating_range(*val.other, cols));
+  else if (val.range)
+    report.validation_beyond =
+        beyond_range(trained, operating_range(rec, cols, val.range->begin, val.range->end));
+}
+
 FitReport fit_grey_box_model(const FitRequest& o, const Recording& rec, const SampleRange& train,
                              const Validation& val) {
   reject_prediction_mode(o);
@@ -146,6 +159,7 @@ FitReport fit_grey_box_model(const FitRequest& o, const Recording& rec, const Sa
   FitReport report = grey_box_report(
       fit, rec, train, val, [&](const Recording& other) { return simulate_greybox(other, fit); });
   report.fitted = fit_model_json(fit, rec.meta);
+  put_operating_range(report, drive_columns(fit), rec, train, val);
   report.tared_at_rest_s = fit.tared_rest_seconds;
   if (val.other) {  // simulate_greybox tares a validation recording at its own rest
     const lumped::GreyboxSetup setup = lumped::greybox_setup_for(*val.other, fit.setup.kind);
@@ -165,6 +179,7 @@ FitReport fit_valve_chain_model(const FitRequest& o, const Recording& rec, const
     return simulate_valve_chain(other, fit);
   });
   report.fitted = fit_model_json(fit, rec.meta);
+  put_operating_range(report, drive_columns(fit), rec, train, val);
   return report;
 }
 
@@ -312,6 +327,8 @@ nlohmann::json fit_run_json(const FitRun& run) {
   if (report.validation) {
     add_repeatability(j["validation"], run.validation_repeatability);
     if (val.other) j["validation"]["tared_at_rest_s"] = tare(report.validation_tared_at_rest_s);
+    if (report.fitted.contains("operating_range"))
+      j["validation"]["beyond_training"] = range_excess_json(report.validation_beyond);
   }
   if (val.range) j["validation_range"] = {val.range->begin, val.range->end};
   if (val.other) j["validation_file"] = o.validate;
@@ -357,6 +374,8 @@ void write_fit_run_text(const FitRun& run, std::ostream& out) {
     line("validation " + (val.range ? range_text(*val.range) : o.validate), *r.validation,
          r.validation_stability);
     if (val.other) tared(r.validation_tared_at_rest_s);
+    for (const RangeExcess& e : r.validation_beyond)
+      out << "  beyond the training part's drive: " << e.text() << "\n";
     repeatability(run.validation_repeatability);
   }
   out << format_text("parameters:\n");

@@ -14,6 +14,7 @@
 #include "core/progress.hpp"
 #include "identify/black_box_model.hpp"
 #include "identify/greybox.hpp"
+#include "identify/operating_range.hpp"
 #include "identify/stability.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording.hpp"
@@ -61,6 +62,9 @@ struct FitReport {
   /// [s] grey-box: the leading rest over which the model's output is tared to the training /
   /// validation recording's level (GreyboxFit::tared_rest_seconds); 0 where it is not tared
   double tared_at_rest_s = 0.0, validation_tared_at_rest_s = 0.0;
+  /// grey-box and valve-chain: what of the validation part's drive lies beyond the training
+  /// part's (identify/operating_range.hpp)
+  std::vector<RangeExcess> validation_beyond;
 };
 
 /// A finished fit: the request, the data it used and the report.

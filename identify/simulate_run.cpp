@@ -19,7 +19,8 @@ namespace {
 
 /// A fitted model run on a recording's drive columns: the recording with its output replaced
 /// by the model's.
-lumped::Recording simulate_fitted_model(const SimulateRequest& r) {
+lumped::Recording simulate_fitted_model(const SimulateRequest& r,
+                                        std::vector<RangeExcess>* beyond) {
   if (r.input.empty() || !r.signals.empty())
     throw InputError(r.spec +
                      ": a fitted model runs on a recording's drive columns: give --input "
@@ -28,6 +29,7 @@ lumped::Recording simulate_fitted_model(const SimulateRequest& r) {
   lumped::Recording rec =
       r.load_recording ? r.load_recording(r.input) : lumped::read_recording(r.input);
   rec.columns[rec.meta.output] = simulate_fit_model(rec, model);
+  if (beyond) *beyond = beyond_fitted_range(model, rec);
   rec.meta.description =
       "simulated by the fitted " + model.model + " model " + r.spec + " on the drive of " + r.input;
   return rec;
@@ -48,8 +50,9 @@ bool is_fitted_model_file(const std::string& path) {
   return false;
 }
 
-lumped::Recording run_simulate(const SimulateRequest& r) {
-  if (is_fitted_model_file(r.spec)) return simulate_fitted_model(r);
+lumped::Recording run_simulate(const SimulateRequest& r, std::vector<RangeExcess>* beyond) {
+  if (beyond) beyond->clear();
+  if (is_fitted_model_file(r.spec)) return simulate_fitted_model(r, beyond);
   const coupling::SimulationSpec spec = coupling::read_simulation_spec(r.spec);
   lumped::Recording drive;
   if (!r.input.empty()) {
@@ -63,12 +66,14 @@ lumped::Recording run_simulate(const SimulateRequest& r) {
   return coupling::simulate_spec(spec, drive);
 }
 
-nlohmann::json simulate_written_json(const lumped::Recording& rec, const std::string& out) {
+nlohmann::json simulate_written_json(const lumped::Recording& rec, const std::string& out,
+                                     const std::vector<RangeExcess>& beyond) {
   return {{"out", out},
           {"sidecar", lumped::sidecar_path_for(out)},
           {"samples", rec.t.size()},
           {"output", rec.meta.output},
-          {"drive", rec.meta.drive}};
+          {"drive", rec.meta.drive},
+          {"beyond_training", range_excess_json(beyond)}};
 }
 
 }  // namespace rheomag::identify

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "identify/operating_range.hpp"
 #include "lumped/recording.hpp"
 
 namespace rheomag::identify {
@@ -30,10 +31,14 @@ struct SimulateRequest {
 bool is_fitted_model_file(const std::string& path);
 
 /// The simulated recording. InputError for a bad spec, model or drive, or conflicting options.
-lumped::Recording run_simulate(const SimulateRequest& request);
+/// For a fitted model that carries its training drive, `beyond` (if given) receives what of the
+/// input's drive lies beyond it (the model extrapolates there); it is left empty otherwise.
+lumped::Recording run_simulate(const SimulateRequest& request,
+                               std::vector<RangeExcess>* beyond = nullptr);
 
 /// The JSON of `rheomag simulate --json` once `rec` was written to `out`: out, sidecar,
-/// samples, output, drive.
-nlohmann::json simulate_written_json(const lumped::Recording& rec, const std::string& out);
+/// samples, output, drive, and beyond_training (range_excess_json of `beyond`).
+nlohmann::json simulate_written_json(const lumped::Recording& rec, const std::string& out,
+                                     const std::vector<RangeExcess>& beyond = {});
 
 }  // namespace rheomag::identify

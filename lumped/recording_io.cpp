@@ -40,15 +40,7 @@ std::string sidecar_path_for(const std::string& csv_path) {
   return p.string();
 }
 
-namespace {
-
-bool is_known_column(const std::string& name) {
-  const auto& k = known_columns();
-  return std::find(k.begin(), k.end(), name) != k.end();
-}
-
-/// The SI unit of each known column, as the recording format writes it.
-std::string si_unit_of(const std::string& column) {
+std::string column_si_unit(const std::string& column) {
   if (column == "t") return "s";
   if (column == "current" || column == "current_cmd") return "A";
   if (column == "voltage" || column == "command") return "V";
@@ -61,10 +53,17 @@ std::string si_unit_of(const std::string& column) {
   return "degC";  // temperature
 }
 
+namespace {
+
+bool is_known_column(const std::string& name) {
+  const auto& k = known_columns();
+  return std::find(k.begin(), k.end(), name) != k.end();
+}
+
 /// True if `unit` as a header writes it names the SI unit of `column` (m^3/s also as m3/s or m³/s,
 /// degC also as °C or C).
 bool is_si_unit_of(const std::string& unit, const std::string& column) {
-  const std::string si = si_unit_of(column);
+  const std::string si = column_si_unit(column);
   if (unit == si) return true;
   if (si == "m^3/s") return unit == "m3/s" || unit == "m\u00b3/s";
   if (si == "degC") return unit == "\u00b0C" || unit == "C";
@@ -102,7 +101,7 @@ std::string column_hint(const std::string& header) {
   if (is_known_column(column))
     return "; did you mean '" + column +
            "'? (columns are named in lower case, in SI units: " + column + " in " +
-           si_unit_of(column) + ")";
+           column_si_unit(column) + ")";
   const std::string near = closest_key(name, known_columns());
   return near.empty() ? "" : "; did you mean '" + near + "'?";
 }
@@ -156,7 +155,7 @@ std::string column_named(const std::string& header, const std::string& file, std
   if (!is_si_unit_of(unit, name))
     fail_at(file, line,
             "column '" + header + "': the recording format's '" + name + "' is in " +
-                si_unit_of(name) + "; convert the column to " + si_unit_of(name) +
+                column_si_unit(name) + "; convert the column to " + column_si_unit(name) +
                 " (the format is SI throughout)");
   return name;
 }

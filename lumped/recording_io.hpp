@@ -12,6 +12,9 @@ namespace rheomag::lumped {
 /// The column names the format defines (t first); any other CSV column is ignored with a warning.
 const std::vector<std::string>& known_columns();
 
+/// The SI unit of the known column `column` as the recording format writes it ("A", "m/s", ...).
+std::string column_si_unit(const std::string& column);
+
 /// Path of the sidecar of a CSV file: same folder and stem, extension .toml.
 std::string sidecar_path_for(const std::string& csv_path);
 

@@ -118,9 +118,19 @@ lumped::Recording simulate(const std::string& spec, const std::string& input,
                            const std::vector<std::string>& signals, double duration, double rate,
                            const std::string& out) {
   identify::SimulateRequest request{spec, input, signals, duration, rate, {}};
-  py::gil_scoped_release release;
-  lumped::Recording rec = identify::run_simulate(request);
-  if (!out.empty()) lumped::write_recording(rec, out);
+  std::vector<identify::RangeExcess> beyond;
+  lumped::Recording rec;
+  {
+    py::gil_scoped_release release;
+    rec = identify::run_simulate(request, &beyond);
+    if (!out.empty()) lumped::write_recording(rec, out);
+  }
+  // A drive beyond the model's training drive is a UserWarning: the result stands, but it is the
+  // model's extrapolation.
+  for (const identify::RangeExcess& e : beyond) {
+    const std::string text = input + " beyond the drive " + spec + " was fitted on: " + e.text();
+    if (PyErr_WarnEx(PyExc_UserWarning, text.c_str(), 1) != 0) throw py::error_already_set();
+  }
   return rec;
 }
 
