@@ -314,3 +314,36 @@ TEST_F(BadInputCli, FittedModelBaselineReportsSignedSizes) {
   EXPECT_NE(text.out.find("signed sizes against the baseline ("), std::string::npos) << text.out;
   EXPECT_NE(text.out.find("\n  friction: coulomb_force = "), std::string::npos) << text.out;
 }
+
+// A recording driven beyond what the baseline model was fitted on (here twice its peak speed) is
+// diagnosed, and the diagnosis says so: baseline.beyond_training names the quantity and a note
+// says a mismatch there may be the model's extrapolation; on the fitted recording itself,
+// nothing.
+TEST_F(BadInputCli, FittedModelBaselineNamesADriveBeyondItsTraining) {
+  fitted_model();
+  {
+    std::ofstream csv(dir / "fast.csv");
+    csv << "t,velocity,force\n";
+    for (int k = 0; k < 400; ++k)
+      csv << k * 0.005 << ',' << 0.1 * std::sin(0.1 * k) << ',' << sine_force(k) << '\n';
+  }
+  write("fast.toml", damper_sidecar("1.0e-3"));
+  const CliRun fast = run_in(dir, "diagnose fast.csv --baseline model.json --json --quiet");
+  ASSERT_EQ(fast.code, 0) << fast.err;
+  const auto j = nlohmann::json::parse(fast.out);
+  const auto& beyond = j.at("baseline").at("beyond_training");
+  ASSERT_EQ(beyond.size(), 1u) << beyond;
+  EXPECT_EQ(beyond[0].at("quantity"), "speed");
+  EXPECT_EQ(beyond[0].at("unit"), "m/s");
+  EXPECT_NEAR(beyond[0].at("value").get<double>(), 0.1, 1e-3);
+  EXPECT_NEAR(beyond[0].at("trained_high").get<double>(), 0.05, 1e-3);
+  const std::string note =
+      "the recording's drive is beyond the baseline model's training drive (speed: velocity peak "
+      "0.1 m/s, above the trained peaks 0.05 m/s): a mismatch there may be the model's "
+      "extrapolation, not missing physics";
+  EXPECT_NE(std::find(j.at("notes").begin(), j.at("notes").end(), note), j.at("notes").end())
+      << j.at("notes");
+  const CliRun same = run_in(dir, "diagnose rec.csv --baseline model.json --json --quiet");
+  ASSERT_EQ(same.code, 0) << same.err;
+  EXPECT_TRUE(nlohmann::json::parse(same.out).at("baseline").at("beyond_training").empty());
+}

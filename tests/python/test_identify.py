@@ -5,7 +5,9 @@ then fitted. Reference: the CLI of the same build; both run the same library fun
 same data, so results must be equal to the last digit (no tolerance).
 """
 
+import json
 import os
+import warnings
 
 import numpy as np
 import pytest
@@ -99,6 +101,28 @@ def test_diagnose_equals_cli(two_currents):
     cli = cli_json("diagnose", two_currents[1], "--quiet")
     assert without_timing(py) == without_timing(cli)
     assert events  # each stage is reported
+
+
+def test_simulate_beyond_the_fitted_drive_warns_as_the_cli_notes(two_currents, tmp_path):
+    # A model fitted at 0 A only, run on the 1 A recording: its field lies beyond the fitted
+    # drive. Python warns (UserWarning) with the text of the CLI's stderr note; within the drive
+    # (the 0 A recording itself) neither says anything.
+    model = tmp_path / "at0.json"
+    model.write_text(json.dumps(cli_json("fit", two_currents[0], "--model", "bingham", "--quiet")))
+    code, _, err = run_cli("simulate", str(model), "--input", two_currents[1], "--out",
+                           str(tmp_path / "cli.csv"))
+    assert code == 0, err
+    notes = [line for line in err.splitlines() if line.startswith("note: ")]
+    assert len(notes) == 1 and "field: current up to 1 A, above the trained 0 A" in notes[0]
+    with pytest.warns(UserWarning) as caught:
+        rheomag.simulate(str(model), input=two_currents[1])
+    assert [str(w.message) for w in caught] == [notes[0][len("note: "):]]
+    code, _, err = run_cli("simulate", str(model), "--input", two_currents[0], "--out",
+                           str(tmp_path / "same.csv"))
+    assert code == 0 and "note: " not in err
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        rheomag.simulate(str(model), input=two_currents[0])
 
 
 def test_fit_input_error_has_the_cli_message(recording):
