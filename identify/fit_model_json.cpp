@@ -183,6 +183,8 @@ GreyboxFit read_greybox(const Field& root, const std::string& model) {
   fit.setup.settings.motion_scale = s.at("motion_scale").number(Domain::positive());
   fit.setup.settings.position_scale = s.at("position_scale").number(Domain::positive());
   fit.setup.settings.output_scale = s.at("output_scale").number(Domain::non_negative());
+  // The highest fitted field level (damper; absent in files written before it: no limit).
+  if (s.has("field_high")) fit.setup.settings.field_high = s.at("field_high").number();
   const Field list = root.at("parameters");
   fit.params = read_parameters(list);
   const std::vector<lumped::PhenoParam>& expected = lumped::pheno_params(fit.setup.kind);
@@ -298,6 +300,8 @@ json fit_model_json(const GreyboxFit& fit, const lumped::RecordingMeta& meta) {
                   {"motion_scale", fit.setup.settings.motion_scale},
                   {"position_scale", fit.setup.settings.position_scale},
                   {"output_scale", fit.setup.settings.output_scale}}}};
+  if (std::isfinite(fit.setup.settings.field_high))
+    j["setup"]["settings"]["field_high"] = fit.setup.settings.field_high;
   put_parameters(j, fit.params);
   if (fit.inertance_gain) {
     const int k = lumped::pheno_param_index(fit.setup.kind, "inertance");

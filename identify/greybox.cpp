@@ -475,6 +475,21 @@ void centre_unidentified_offset(const FitData& data, GreyboxFit& fit, double max
   fit.params[static_cast<std::size_t>(k)].value += shift / weight / fit.setup.orientation;
 }
 
+/// Damper model: raises the highest fitted field level (PhenoSettings::field_high) to the field
+/// column's largest value over samples [begin, end) of `rec`, so that the model, run later on a
+/// field above it, continues its yield along its tangent. Other models: nothing.
+void widen_fitted_field(GreyboxFit& fit, const lumped::Recording& rec, std::size_t begin,
+                        std::size_t end) {
+  if (fit.setup.kind != lumped::PhenoKind::damper || fit.setup.field_column.empty()) return;
+  const std::vector<double>& u = rec.column(fit.setup.field_column);
+  end = std::min(end, u.size());
+  if (begin >= end) return;
+  const double hi = *std::max_element(u.begin() + static_cast<std::ptrdiff_t>(begin),
+                                      u.begin() + static_cast<std::ptrdiff_t>(end));
+  double& high = fit.setup.settings.field_high;
+  high = std::isfinite(high) ? std::max(high, hi) : hi;
+}
+
 }  // namespace
 
 std::string parameter_remark(const FittedParameter& p) {
@@ -543,6 +558,7 @@ GreyboxFit fit_greybox(const lumped::Recording& rec, const std::string& model,
   data.y_scales.push_back(y_scale);
   fit_data(data, options, rec.csv_path, fit);
   centre_unidentified_offset(data, fit, options.max_substep);
+  widen_fitted_field(fit, rec, range.begin, range.end);
   fit.simulated = lumped::simulate_for_report(d, fit.setup, param_values(fit), options.max_substep);
   fit.train = lumped::compute_metrics(d.y, fit.simulated, range);
   fit.residual_sigma = rms_residual(d.y, fit.simulated, range);
@@ -590,6 +606,7 @@ GreyboxFit fit_greybox_family(const std::vector<lumped::Recording>& recs, const 
   data.viscous_factors = options.viscous_factors;
   fit_data(data, options, recs.front().csv_path, fit);
   centre_unidentified_offset(data, fit, options.max_substep);
+  for (const lumped::Recording& rec : recs) widen_fitted_field(fit, rec, 0, rec.t.size());
   fit.train_range = lumped::SampleRange{0, 0};
   return fit;
 }

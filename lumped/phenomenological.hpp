@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,11 @@ struct PhenoSettings {
   double motion_scale = 1.0;    ///< [M] LuGre: viscous term uses (motion / motion_scale)^alpha
   double position_scale = 1.0;  ///< [X] tanh model: width of its smooth sign(position)
   double output_scale = 1.0;    ///< [Y] damper model: width of its smooth |force| is 1e-3 of it
+  /// [U] damper model: the highest field the model was fitted on (its field column's largest
+  /// value over the training samples). Above it the yield force continues along its tangent: a
+  /// quadratic's curvature is identified between the levels only. Infinite (no limit) during a
+  /// fit and in files written before it.
+  double field_high = std::numeric_limits<double>::infinity();
 };
 
 /// Parses "bingham" | "lugre" | "bouc-wen" | "maxwell" | "dahl" | "bi-viscous" | "tanh" |
@@ -164,11 +170,27 @@ struct DamperValveLaw {
   T inverse_index;       ///< 1 / n
 };
 
-/// Damper model: the valve map's coefficients at field b (DamperValveLaw).
+/// Damper model: the yield force F_y(b) = y0 + y1 b + y2 b^2 at the field b the valve sees for
+/// the field state u; for u above the fitted levels (PhenoSettings::field_high) F_y continues
+/// along its tangent there, F_y(b_h) + F_y'(b_h) (b - b_h). Above its levels a fitted quadratic
+/// bends either way (ever faster growth, or a yield that falls as the field grows); the tangent
+/// is the first-order guess. Below the lowest level the quadratic stays: an MR fluid's yield
+/// grows as about b^2 from zero field, which is the curvature a quadratic keeps there.
 template <class T>
-DamperValveLaw<T> damper_valve_law(const T* p, const PhenoSettings& s, const T& b) {
-  return {p[kDmYield0] + p[kDmYield1] * b + p[kDmYield2] * b * b,
-          (p[kDmVisc0] + p[kDmVisc1] * b) * s.motion_scale, 1.0 / p[kDmIndex]};
+T damper_yield(const T* p, const PhenoSettings& s, const T& u, const T& b) {
+  if (!(value_of(u) > s.field_high)) return p[kDmYield0] + p[kDmYield1] * b + p[kDmYield2] * b * b;
+  const T bh = damper_effective_field(p, T(s.field_high));
+  return p[kDmYield0] + p[kDmYield1] * bh + p[kDmYield2] * bh * bh +
+         (p[kDmYield1] + 2.0 * p[kDmYield2] * bh) * (b - bh);
+}
+
+/// Damper model: the valve map's coefficients at the field state u (DamperValveLaw; the valve
+/// sees b = damper_effective_field(u)).
+template <class T>
+DamperValveLaw<T> damper_valve_law(const T* p, const PhenoSettings& s, const T& u) {
+  const T b = damper_effective_field(p, u);
+  return {damper_yield(p, s, u, b), (p[kDmVisc0] + p[kDmVisc1] * b) * s.motion_scale,
+          1.0 / p[kDmIndex]};
 }
 
 /// Damper model: rate of the valve force f through the fluid/accumulator compliance, for the valve
@@ -191,8 +213,7 @@ T damper_force_rate_at(const T* p, const PhenoDrive& d, const PhenoSettings& s, 
 /// Damper model: rate of the valve force x[0] for state x (field state x[2]).
 template <class T>
 T damper_force_rate(const T* p, const PhenoDrive& d, const PhenoSettings& s, const T* x) {
-  return damper_force_rate_at(p, d, s, x[0],
-                              damper_valve_law(p, s, damper_effective_field(p, x[2])));
+  return damper_force_rate_at(p, d, s, x[0], damper_valve_law(p, s, x[2]));
 }
 
 /// Bouc-Wen: rate of the internal displacement y for state x = (y, z, u_filtered).
@@ -287,8 +308,8 @@ void damper_step(const T* p, const PhenoDrive& a, const PhenoDrive& m, const Phe
     const T lambda = (rate(d, f - delta, valve) - rate(d, f + delta, valve)) / (2.0 * delta);
     return value_of(lambda) > 0.0 ? lambda : T(0.0);
   };
-  const DamperValveLaw<T> valve0 = damper_valve_law(p, s, damper_effective_field(p, u0)),
-                          valve_half = damper_valve_law(p, s, damper_effective_field(p, u_half));
+  const DamperValveLaw<T> valve0 = damper_valve_law(p, s, u0),
+                          valve_half = damper_valve_law(p, s, u_half);
   const T f0 = x[0];
   const T lambda0 = slope(a, f0, valve0);
   const T f_half = f0 + 0.5 * h * phi1(T(0.5 * h) * lambda0) * rate(a, f0, valve0);
