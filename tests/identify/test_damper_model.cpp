@@ -137,6 +137,75 @@ TEST(DamperModel, SaturatingFieldFollowsTanhOfTheCurrent) {
   }
 }
 
+// Above the highest field level a damper model was fitted on (PhenoSettings::field_high) its
+// yield continues along its tangent there: at steady flow F = F_y(b_h) + F_y'(b_h) (b - b_h) +
+// c(b) v with b = tanh(k I) / k, b_h the level's; at and below the level F_y is the quadratic
+// (below the lowest level too: a yield grows as about b^2 from zero field). Convex (y2 > 0) and
+// concave (y2 < 0) quadratics, with and without saturation. Tolerance 1 N + 0.2 %: the smooth
+// |F| and ramp (1 N wide, 1e-3 of the output scale) hold the steady force up to 1 N above the
+// map, 0.3 % of the smallest force here; the tangent and the quadratic differ by 6-24 N at 1 A.
+TEST(DamperModel, YieldContinuesAlongItsTangentAboveTheFittedLevels) {
+  const double v = 0.05, high = 0.6;
+  for (double k : {0.0, 1.2}) {
+    for (double y2 : {150.0, -150.0}) {
+      for (double current : {0.1, 0.45, 1.0}) {
+        Recording rec = recording(
+            2000, 1e-3, [&](double t) { return v * t; }, [&](double) { return v; },
+            [&](double) { return current; });
+        const std::vector<double> p = damper_params({{"yield_per_field2", y2},
+                                                     {"consistency_per_field", 800.0},
+                                                     {"field_saturation", k * k}});
+        GreyboxSetup setup = damper_setup(rec);
+        setup.settings.field_high = high;
+        const std::vector<double> y = simulate_pheno(rec, setup, p);
+        const auto field = [k](double i) { return k > 0.0 ? std::tanh(k * i) / k : i; };
+        const double b = field(current);
+        const double edge = current > high ? field(high) : b;
+        const double yield =
+            200.0 + 300.0 * edge + y2 * edge * edge + (300.0 + 2.0 * y2 * edge) * (b - edge);
+        const double expected = yield + (2000.0 + 800.0 * b) * v;
+        EXPECT_NEAR(y.back(), expected, 1.0 + 2e-3 * expected)
+            << "k = " << k << ", y2 = " << y2 << ", I = " << current;
+      }
+    }
+  }
+}
+
+// The tangent joins the quadratic with its value and slope at the level (no step in the force,
+// nor in its slope, as a current crosses it). One-sided slopes over 1e-6 A either side agree
+// within 0.01 N/A: the quadratic's own slope changes by |F_y''| 1e-6 ~ 1e-3 N/A over that step, a
+// wrong tangent would differ by the slope itself (~100 N/A); the values 1e-12 A apart within
+// 1e-9 N.
+TEST(DamperModel, TangentJoinsTheQuadraticSmoothly) {
+  PhenoSettings s;
+  s.field_high = 0.8;
+  std::vector<double> p = damper_params({{"yield_per_field2", -400.0}, {"field_saturation", 1.5}});
+  const auto yield = [&](double u) {
+    return pheno_detail::damper_yield(p.data(), s, u,
+                                      pheno_detail::damper_effective_field(p.data(), u));
+  };
+  const double edge = s.field_high, e = 1e-6;
+  const double left = (yield(edge) - yield(edge - e)) / e,
+               right = (yield(edge + e) - yield(edge)) / e;
+  EXPECT_GT(std::abs(left), 10.0);
+  EXPECT_NEAR(left, right, 0.01);
+  EXPECT_NEAR(yield(edge + 1e-12), yield(edge - 1e-12), 1e-9);
+}
+
+// A model run at or below the highest level it was fitted on is the model without it, bit for
+// bit: the level changes nothing on the training recordings (a sine stroke with the current
+// stepping between 0.2 and 0.7 A, the level at 0.7 A).
+TEST(DamperModel, FittedLevelsLeaveTheModelInsideThemUnchanged) {
+  Recording rec = recording(3000, 1e-3, sine_x(0.01, 2.0), sine_v(0.01, 2.0),
+                            [](double t) { return t < 1.5 ? 0.2 : 0.7; });
+  const std::vector<double> p =
+      damper_params({{"yield_per_field2", 500.0}, {"field_saturation", 0.8}});
+  GreyboxSetup setup = damper_setup(rec);
+  const std::vector<double> free = simulate_pheno(rec, setup, p);
+  setup.settings.field_high = 0.7;
+  EXPECT_EQ(simulate_pheno(rec, setup, p), free);
+}
+
 // The effective field's series branch (k^2 I^2 < 1e-8) joins tanh(k I) / k to round-off, and its
 // derivative in the parameter k^2 (a Jet) is the closed form
 // (I sech^2(k I) / k - tanh(k I) / k^2) / (2 k), -I^3 / 3 at k = 0 (so a fit started at no
