@@ -95,6 +95,7 @@ void BM_CrossValidate25mm(benchmark::State& state) {
 BENCHMARK(BM_CrossValidate25mm)
     ->Arg(0)
     ->Arg(10)
+    ->Arg(30)
     ->Unit(benchmark::kSecond)
     ->Iterations(1)
     ->MeasureProcessCPUTime()

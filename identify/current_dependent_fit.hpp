@@ -25,10 +25,11 @@ struct FamilyFitOptions {
   int decimation = 4;      ///< keep every n-th sample of each recording in the joint fit
   /// Also refit once without each training recording and predict it (leave-one-recording-out).
   bool cross_validate = false;
-  /// Levenberg-Marquardt iterations of each cross-validation refit, which starts (one start) from
-  /// the fit of the half of the recordings without the held-out one; 0: every refit from the
-  /// nominal start with the greybox options' starts and iterations (the cold refits of before).
-  int refit_iterations = 10;
+  /// Levenberg-Marquardt iterations at most of each cross-validation refit, which starts (one
+  /// start) from the fit of the half of the recordings without the held-out one (30: enough for
+  /// the refits to converge, docs/performance.md); 0: every refit from the nominal start with the
+  /// greybox options' starts and iterations (the cold refits of before).
+  int refit_iterations = 30;
   /// Let each training recording's viscosity factor float within these bounds (a fitted
   /// nuisance for an unrecorded fluid temperature, identify/viscosity_nuisance.hpp); empty: off.
   std::optional<ViscosityNuisance> viscosity_nuisance;
