@@ -86,7 +86,10 @@ std::string member_section(const FamilyMember& m, const lumped::Recording& rec,
     << html_number(m.field) << unit_of(fit.setup.field_column) << ": FIT "
     << html_number(m.metrics.fit_percent, 3) << " %, RMSE "
     << html_number(m.metrics.rmse_percent, 3) << " %, RE " << html_number(m.metrics.re, 3)
-    << "</p>\n<div>";
+    << "</p>\n";
+  for (const RangeExcess& e : m.beyond)
+    o << "<p>Beyond the training recordings' drive: " << html_escape(e.text()) << "</p>\n";
+  o << "<div>";
   const std::string ylabel = fit.setup.output_column + unit_of(fit.setup.output_column);
   if (!fit.setup.position_column.empty())
     o << svg_loop("output vs position",
