@@ -228,6 +228,38 @@ TEST(FitFamilyCli, ReportsProgressOnStderrUnlessQuiet) {
   fs::remove_all(dir);
 }
 
+// A family at 0 and 0.5 A predicting 1 A: the prediction lies above the fitted levels, and the
+// JSON (beyond_training, with the fitted model's operating_range), the text and the report say
+// so in the same words; the training recordings, inside the levels, say nothing.
+TEST(FitFamilyCli, APredictionAboveTheFittedLevelsIsNamedEverywhere) {
+  const fs::path dir = fresh_dir("beyond");
+  const std::string a = write_recording_at(dir, "a.csv", 0.0);
+  const std::string b = write_recording_at(dir, "b.csv", 0.5);
+  const std::string c = write_recording_at(dir, "c.csv", 1.0);
+  const std::string args = a + " " + b + " --model bingham --predict " + c;
+  const CliRun r = run_fit_family(args + " --json --report " + (dir / "out").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["operating_range"]["field"]["low"].get<double>(), 0.0);
+  EXPECT_EQ(j["operating_range"]["field"]["high"].get<double>(), 0.5);
+  EXPECT_TRUE(j["train"][0]["beyond_training"].empty());
+  ASSERT_EQ(j["prediction"][0]["beyond_training"].size(), 1u);
+  const std::string text = j["prediction"][0]["beyond_training"][0]["text"].get<std::string>();
+  EXPECT_EQ(text,
+            "field: current up to 1 A, above the trained 0 ... 0.5 A (the model's field "
+            "dependence is extrapolated)");
+  const CliRun plain = run_fit_family(args);
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  EXPECT_NE(plain.out.find("  beyond the training recordings' drive: " + c + ": " + text),
+            std::string::npos)
+      << plain.out;
+  std::ifstream in(dir / "out" / "report.html");
+  const std::string html((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(html.find("<p>Beyond the training recordings' drive: " + text + "</p>"),
+            std::string::npos);
+  fs::remove_all(dir);
+}
+
 // A Bingham family at 0 and 1 A predicts 0.5 A exactly (noise-free, same structure): FIT > 99 %
 // on every recording; the JSON has standard errors; the report has a loop per recording and
 // renders in headless Chromium (screenshot not blank).
