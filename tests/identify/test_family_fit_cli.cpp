@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "core/html_text.hpp"
 #include "identify/fit_model_json.hpp"
 #include "identify/greybox.hpp"
 #include "lumped/metrics.hpp"
@@ -255,8 +256,9 @@ TEST(FitFamilyCli, APredictionAboveTheFittedLevelsIsNamedEverywhere) {
       << plain.out;
   std::ifstream in(dir / "out" / "report.html");
   const std::string html((std::istreambuf_iterator<char>(in)), {});
-  EXPECT_NE(html.find("<p>Beyond the training recordings' drive: " + text + "</p>"),
-            std::string::npos);
+  EXPECT_NE(
+      html.find("<p>Beyond the training recordings' drive: " + rheomag::html_escape(text) + "</p>"),
+      std::string::npos);
   fs::remove_all(dir);
 }
 
