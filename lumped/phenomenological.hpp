@@ -210,6 +210,44 @@ T damper_force_rate_at(const T* p, const PhenoDrive& d, const PhenoSettings& s, 
   return (p[kDmStiff] + p[kDmStiffening] * abs_f) * (d.motion - valve_motion);
 }
 
+/// Damper model: the valve force's rate (damper_force_rate_at) and its decay rate -d(rate)/df at
+/// the same force, from one evaluation of the valve map.
+template <class T>
+struct DamperForceRate {
+  T rate;   ///< df/dt
+  T decay;  ///< -d(df/dt)/df
+};
+
+/// Damper model: damper_force_rate_at and its derivative in f, the decay rate that linearises the
+/// exponential step. The derivative is taken in closed form through the same smoothed map (the
+/// smoothed |f| and ramp, and the power's g x^g / x), so the map's power is taken once.
+template <class T>
+DamperForceRate<T> damper_force_rate_and_decay_at(const T* p, const PhenoDrive& d,
+                                                  const PhenoSettings& s, const T& f,
+                                                  const DamperValveLaw<T>& valve) {
+  using std::sqrt;
+  const double w = 1e-3 * s.output_scale;
+  const T root_f = sqrt(f * f + w * w);  // smooth_abs(f, w) + w
+  const T abs_f = root_f - w;
+  const T dabs_f = f / root_f;
+  const T over = abs_f - valve.yield;
+  const T root_over = sqrt(over * over + w * w);
+  const T excess = 0.5 * (over + root_over);  // smooth_ramp(over, w)
+  const T dexcess = 0.5 * (1.0 + over / root_over) * dabs_f;
+  const T base = excess / valve.consistency_motion + 1e-12;
+  const T power = positive_power(base, valve.inverse_index);
+  const T post = s.motion_scale * power;
+  const T dpost = s.motion_scale * valve.inverse_index * power / base * dexcess /
+                  valve.consistency_motion;
+  const T share = f / (abs_f + w);  // f / (|f| + w): its derivative is w^2 / (|f| + w)^3
+  const T dshare = (w * w) / (root_f * root_f * root_f);
+  const T valve_motion = f / p[kDmPreVisc] + share * post;
+  const T dvalve_motion = 1.0 / p[kDmPreVisc] + dshare * post + share * dpost;
+  const T stiffness = p[kDmStiff] + p[kDmStiffening] * abs_f;
+  const T gap = d.motion - valve_motion;
+  return {stiffness * gap, stiffness * dvalve_motion - p[kDmStiffening] * dabs_f * gap};
+}
+
 /// Damper model: rate of the valve force x[0] for state x (field state x[2]).
 template <class T>
 T damper_force_rate(const T* p, const PhenoDrive& d, const PhenoSettings& s, const T* x) {
@@ -289,7 +327,6 @@ template <class T>
 void damper_step(const T* p, const PhenoDrive& a, const PhenoDrive& m, const PhenoSettings& s,
                  double h, FieldFilterGains<T>& gains, T* x) {
   using namespace pheno_detail;
-  const double delta = 1e-4 * s.output_scale;
   // Field and seal: linear in their own state, solved exactly with the midpoint drive.
   const double abs_m = std::sqrt(m.motion * m.motion + s.eps * s.eps) - s.eps;
   gains.update(h, [&] { return T(1.0 / p[kDmTau]); });
@@ -301,20 +338,18 @@ void damper_step(const T* p, const PhenoDrive& a, const PhenoDrive& m, const Phe
   // Valve force: predictor half step from the start, then the step linearised at the midpoint.
   // The field the valve sees, and the valve law at it, are computed once for each of the two
   // field states.
-  const auto rate = [&](const PhenoDrive& d, const T& f, const DamperValveLaw<T>& valve) {
-    return damper_force_rate_at(p, d, s, f, valve);
-  };
-  const auto slope = [&](const PhenoDrive& d, const T& f, const DamperValveLaw<T>& valve) {
-    const T lambda = (rate(d, f - delta, valve) - rate(d, f + delta, valve)) / (2.0 * delta);
-    return value_of(lambda) > 0.0 ? lambda : T(0.0);
+  const auto at = [&](const PhenoDrive& d, const T& f, const DamperValveLaw<T>& valve) {
+    DamperForceRate<T> r = damper_force_rate_and_decay_at(p, d, s, f, valve);
+    if (!(value_of(r.decay) > 0.0)) r.decay = T(0.0);  // a growing mode is not linearised
+    return r;
   };
   const DamperValveLaw<T> valve0 = damper_valve_law(p, s, u0),
                           valve_half = damper_valve_law(p, s, u_half);
   const T f0 = x[0];
-  const T lambda0 = slope(a, f0, valve0);
-  const T f_half = f0 + 0.5 * h * phi1(T(0.5 * h) * lambda0) * rate(a, f0, valve0);
-  const T lambda_m = slope(m, f_half, valve_half);
-  x[0] = f0 + h * phi1(T(h) * lambda_m) * (rate(m, f_half, valve_half) + lambda_m * (f_half - f0));
+  const DamperForceRate<T> r0 = at(a, f0, valve0);
+  const T f_half = f0 + 0.5 * h * phi1(T(0.5 * h) * r0.decay) * r0.rate;
+  const DamperForceRate<T> rm = at(m, f_half, valve_half);
+  x[0] = f0 + h * phi1(T(h) * rm.decay) * (rm.rate + rm.decay * (f_half - f0));
 }
 
 /// The same step computing its field filter gains first.

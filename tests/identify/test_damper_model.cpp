@@ -333,6 +333,44 @@ TEST(DamperModel, ExponentialStepIsSecondOrderAndStiffStable) {
   EXPECT_LT(std::abs(run(50) - reference), 0.2 * std::abs(reference));
 }
 
+// The exponential step linearises the valve force's rate about each state with its decay rate
+// -d(rate)/df, taken in closed form (damper_force_rate_and_decay_at). Reference: a central
+// difference of damper_force_rate_at over +-1e-3 N (the smoothed |F| and ramp are 1 N wide, so
+// its truncation error is about 1e-6 of the slope); tolerance 1e-4 relative. Forces span the
+// pre-yield branch, the yield's smoothed corner, the flow branch and both signs, at flow indices
+// below, at and above 1 and with and without the compliance's stiffening. The rate itself is
+// damper_force_rate_at's.
+TEST(DamperModel, DecayRateIsTheRatesDerivativeInTheForce) {
+  using namespace pheno_detail;
+  const PhenoSettings s = step_settings();
+  int checked = 0;
+  for (const double index : {0.4, 1.0, 2.5})
+    for (const double stiffening : {0.0, 200.0}) {
+      const std::vector<double> p = damper_params(
+          {{"flow_index", index}, {"stiffening", stiffening}, {"pre_yield_viscous", 5e5}});
+      for (const double field : {0.0, 1.0}) {
+        const DamperValveLaw<double> valve = damper_valve_law(p.data(), s, field);
+        for (const double f : {-3000.0, -valve.yield - 0.5, -100.0, 0.0, 0.3, 150.0,
+                               valve.yield - 1.0, valve.yield, valve.yield + 2.0, 900.0, 4000.0})
+          for (const double motion : {-0.2, 0.0, 0.05}) {
+            const PhenoDrive d{0.0, motion, field, 0.0};
+            const DamperForceRate<double> r =
+                damper_force_rate_and_decay_at(p.data(), d, s, f, valve);
+            const double delta = 1e-3;
+            const double reference = (damper_force_rate_at(p.data(), d, s, f - delta, valve) -
+                                      damper_force_rate_at(p.data(), d, s, f + delta, valve)) /
+                                     (2.0 * delta);
+            EXPECT_DOUBLE_EQ(r.rate, damper_force_rate_at(p.data(), d, s, f, valve));
+            EXPECT_NEAR(r.decay, reference, 1e-4 * std::abs(reference) + 1e-6)
+                << "n " << index << " stiffening " << stiffening << " field " << field << " f " << f
+                << " motion " << motion;
+            ++checked;
+          }
+      }
+    }
+  EXPECT_EQ(checked, 3 * 2 * 2 * 11 * 3);
+}
+
 // A simulation keeps the damper's field filter gains across its steps and recomputes them when the
 // step length changes: steps of alternating length with one kept FieldFilterGains give bitwise the
 // state of steps that compute their gains afresh (the gains are the same arithmetic, done once).
