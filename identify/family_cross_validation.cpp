@@ -1,5 +1,6 @@
 // Leave-one-recording-out refits of a family, each predicting the recording it left out, started
-// from a fit of the other half of the recordings and run side by side.
+// from a fit of the other half of the recordings and run side by side, each as soon as its
+// half is fitted.
 
 #include "identify/family_cross_validation.hpp"
 
@@ -12,6 +13,7 @@
 
 #include "core/error.hpp"
 #include "identify/multistart_fit.hpp"
+#include "identify/task_queue.hpp"
 
 namespace rheomag::identify {
 
@@ -175,25 +177,23 @@ std::vector<FamilyMember> cross_validate_family(const std::vector<lumped::Record
   const std::vector<std::vector<lumped::Recording>> parts =
       cross_validation_halves(training, model);
   std::array<std::optional<GreyboxFit>, 2> half_fit;
-  if (warm)
-    for_each_start(2, threads, [&](std::size_t h) {
-      try {
-        check_family(parts[h], {}, model);
-      } catch (const InputError&) {
-        progress.for_fit(n + h, 0.0, "");  // not fitted: nothing to count
-        return;
-      }
-      GreyboxOptions g = single;
-      g.progress =
-          progress.for_fit(n + h, fit_bound,
-                           "cross-validation, fitting half " + std::to_string(h + 1) + " of 2 (" +
-                               std::to_string(parts[h].size()) + " recordings)");
-      half_fit[h] = fit_greybox_family(parts[h], model, g, options.decimation);
-    });
+  const auto fit_half = [&](std::size_t h) {
+    try {
+      check_family(parts[h], {}, model);
+    } catch (const InputError&) {
+      progress.for_fit(n + h, 0.0, "");  // not fitted: nothing to count
+      return;
+    }
+    GreyboxOptions g = single;
+    g.progress = progress.for_fit(n + h, fit_bound,
+                                  "cross-validation, fitting half " + std::to_string(h + 1) +
+                                      " of 2 (" + std::to_string(parts[h].size()) + " recordings)");
+    half_fit[h] = fit_greybox_family(parts[h], model, g, options.decimation);
+  };
 
   // Each test refitted on all the others, started from the fit of the half it is not in.
   std::vector<FamilyMember> held_out(n);
-  for_each_start(n, threads, [&](std::size_t k) {
+  const auto refit_without = [&](std::size_t k) {
     GreyboxOptions g = refit;
     const std::optional<GreyboxFit>& other = half_fit[static_cast<std::size_t>(1 - half[k])];
     if (other) {
@@ -209,6 +209,21 @@ std::vector<FamilyMember> cross_validate_family(const std::vector<lumped::Record
                              std::to_string(n) + " (without " + training[k].csv_path + ")");
     const GreyboxFit fit = fit_greybox_family(without(training, k), model, g, options.decimation);
     held_out[k] = predict_family_member(training[k], fit);
+  };
+
+  // The tasks: the two halves first (warm refits only), then the refits, each as soon as the half
+  // it starts from is fitted, so a core that finishes one half goes on with the refits of the
+  // other half's tests instead of waiting for the second half.
+  const std::size_t first_refit = warm ? 2 : 0;
+  std::vector<std::vector<std::size_t>> prerequisites(first_refit + n);
+  if (warm)
+    for (std::size_t k = 0; k < n; ++k)
+      prerequisites[first_refit + k] = {static_cast<std::size_t>(1 - half[k])};
+  run_when_ready(prerequisites, threads, [&](std::size_t task) {
+    if (task < first_refit)
+      fit_half(task);
+    else
+      refit_without(task - first_refit);
   });
   return held_out;
 }
