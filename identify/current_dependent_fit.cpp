@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <future>
 #include <numeric>
 
 #include "core/error.hpp"
@@ -186,6 +187,12 @@ FamilyFit fit_current_dependent(const std::vector<lumped::Recording>& training,
   check_family(training, prediction, model);
   if (options.cross_validate) check_cross_validation(training, model);  // before the long fits
   FamilyFit out;
+  // The cross-validation's fits do not depend on the main fit: they run beside it, and the cores
+  // its starts leave idle (one start ends before the other) go to them.
+  std::future<std::vector<FamilyMember>> held_out;
+  if (options.cross_validate)
+    held_out = std::async(std::launch::async,
+                          [&] { return cross_validate_family(training, model, options); });
   const auto start = std::chrono::steady_clock::now();
   out.fit = fit_greybox_family(training, model, options.greybox, options.decimation);
   std::vector<double> factors;
@@ -219,7 +226,7 @@ FamilyFit fit_current_dependent(const std::vector<lumped::Recording>& training,
     evaluate(r, out.predicted);
     out.predicted.back().beyond = beyond_range(out.trained, operating_range(r, cols));
   }
-  if (options.cross_validate) out.held_out = cross_validate_family(training, model, options);
+  if (held_out.valid()) out.held_out = held_out.get();
   return out;
 }
 
