@@ -237,8 +237,8 @@ DamperForceRate<T> damper_force_rate_and_decay_at(const T* p, const PhenoDrive& 
   const T base = excess / valve.consistency_motion + 1e-12;
   const T power = positive_power(base, valve.inverse_index);
   const T post = s.motion_scale * power;
-  const T dpost = s.motion_scale * valve.inverse_index * power / base * dexcess /
-                  valve.consistency_motion;
+  const T dpost =
+      s.motion_scale * valve.inverse_index * power / base * dexcess / valve.consistency_motion;
   const T share = f / (abs_f + w);  // f / (|f| + w): its derivative is w^2 / (|f| + w)^3
   const T dshare = (w * w) / (root_f * root_f * root_f);
   const T valve_motion = f / p[kDmPreVisc] + share * post;
