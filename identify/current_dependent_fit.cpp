@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "identify/family_cross_validation.hpp"
 #include "identify/fit_model_json.hpp"
+#include "identify/multistart_fit.hpp"
 #include "identify/repeatability.hpp"
 #include "lumped/output_smoothing.hpp"
 
@@ -187,12 +188,13 @@ FamilyFit fit_current_dependent(const std::vector<lumped::Recording>& training,
   check_family(training, prediction, model);
   if (options.cross_validate) check_cross_validation(training, model);  // before the long fits
   FamilyFit out;
-  // The cross-validation's fits do not depend on the main fit: they run beside it, and the cores
-  // its starts leave idle (one start ends before the other) go to them.
+  // The cross-validation's fits do not depend on the main fit: on more than one thread they run
+  // beside it, and the cores its starts leave idle (one start ends before the other) go to them.
   std::future<std::vector<FamilyMember>> held_out;
   if (options.cross_validate)
-    held_out = std::async(std::launch::async,
-                          [&] { return cross_validate_family(training, model, options); });
+    held_out = std::async(
+        fit_threads(options.greybox.threads) > 1 ? std::launch::async : std::launch::deferred,
+        [&] { return cross_validate_family(training, model, options); });
   const auto start = std::chrono::steady_clock::now();
   out.fit = fit_greybox_family(training, model, options.greybox, options.decimation);
   std::vector<double> factors;
