@@ -120,10 +120,11 @@ const bool fit_family_registered = rheomag::app::register_command([](CLI::App& r
   cmd->add_option("--starts", o->starts, "Multi-start count of the fit")
       ->capture_default_str()
       ->check(rheomag::app::in_domain(rheomag::Domain::between(1, 16).whole()));
-  cmd->add_option("--threads", o->threads,
-                  "Threads of the fit's starts and of the --cross-validate refits, which run "
-                  "beside the main fit when it is not 1 (0: one per core); the result does not "
-                  "depend on it while it is at most --starts")
+  cmd->add_option(
+         "--threads", o->threads,
+         "Threads of the fit's starts and of the --cross-validate refits, which run "
+         "beside the main fit when it is not 1 (0: one per core); the result does not "
+         "depend on it while it is at most --starts, beyond rounding (about 1e-12 relative)")
       ->capture_default_str()
       ->check(rheomag::app::in_domain(rheomag::Domain::between(0, 256).whole()));
   cmd->add_option("--max-substep", o->max_substep,
