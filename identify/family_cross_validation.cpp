@@ -213,17 +213,23 @@ std::vector<FamilyMember> cross_validate_family(const std::vector<lumped::Record
 
   // The tasks: the two halves first (warm refits only), then the refits, each as soon as the half
   // it starts from is fitted, so a core that finishes one half goes on with the refits of the
-  // other half's tests instead of waiting for the second half.
+  // other half's tests instead of waiting for the second half; the longest refits (those without
+  // the shortest recordings) first, so that the last to end is short and no core waits long.
+  std::vector<std::size_t> refit_order(n);
+  std::iota(refit_order.begin(), refit_order.end(), std::size_t{0});
+  std::stable_sort(refit_order.begin(), refit_order.end(), [&](std::size_t a, std::size_t b) {
+    return training[a].t.size() < training[b].t.size();
+  });
   const std::size_t first_refit = warm ? 2 : 0;
   std::vector<std::vector<std::size_t>> prerequisites(first_refit + n);
   if (warm)
-    for (std::size_t k = 0; k < n; ++k)
-      prerequisites[first_refit + k] = {static_cast<std::size_t>(1 - half[k])};
+    for (std::size_t i = 0; i < n; ++i)
+      prerequisites[first_refit + i] = {static_cast<std::size_t>(1 - half[refit_order[i]])};
   run_when_ready(prerequisites, threads, [&](std::size_t task) {
     if (task < first_refit)
       fit_half(task);
     else
-      refit_without(task - first_refit);
+      refit_without(refit_order[task - first_refit]);
   });
   return held_out;
 }
