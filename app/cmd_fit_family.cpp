@@ -148,14 +148,17 @@ const bool fit_family_registered = rheomag::app::register_command([](CLI::App& r
                 "predicted recording's drive lies beyond the training recordings' "
                 "(operating_range: their field levels, peak speeds and strokes), each {quantity, "
                 "column, unit, value, trained_low, trained_high, text}}), "
-                "held_out (the same, with --cross-validate), mode");
+                "held_out (the same, with --cross-validate; beyond_training: beyond the other "
+                "training recordings', those its refit was fitted on), mode");
   rheomag::app::add_hold_option(cmd, o->holds);
   rheomag::app::add_keep_inertance_flag(cmd, o->keep_inertance);
   cmd->add_flag("--cross-validate", o->cross_validate,
                 "Also refit once without each training recording and predict it (leave one "
                 "recording out): the FIT to expect on a test the fit has not seen. Costs a fit of "
                 "each half of the recordings and one short refit per training recording, run "
-                "side by side (--threads); JSON key held_out, a report column");
+                "side by side (--threads); JSON key held_out, a report column. A left-out "
+                "test whose field, peak speed or stroke lies beyond the others' is named as an "
+                "extrapolation, and the held-out FIT of the tests inside is given apart");
   cmd->add_option("--refit-iterations", o->refit_iterations,
                   "--cross-validate: the most iterations of each refit, started from the fit of "
                   "the half of the recordings that does not hold the left-out one (30: the utfsm "

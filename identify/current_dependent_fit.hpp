@@ -64,7 +64,8 @@ struct FamilyMember {
   std::optional<ResidualRegimes> regimes;
   std::vector<double> simulated;  ///< free-run model output at the recording's samples
   /// Predicted recordings: what of the recording's drive lies beyond the training recordings'
-  /// (FamilyFit::trained); empty when within it.
+  /// (FamilyFit::trained); held-out recordings: beyond the other training recordings' (those
+  /// its refit was fitted on); empty when within it.
   std::vector<RangeExcess> beyond;
 };
 

@@ -12,6 +12,7 @@
 #include <numeric>
 
 #include "core/error.hpp"
+#include "identify/fit_model_json.hpp"
 #include "identify/multistart_fit.hpp"
 #include "identify/task_queue.hpp"
 
@@ -112,6 +113,15 @@ const FittedParameter* held_by_the_fit(const GreyboxFit& fit, const std::string&
   return nullptr;
 }
 
+/// What of `test`'s drive lies beyond the drive of `trained` (beyond_range).
+std::vector<RangeExcess> beyond_recordings(const std::vector<lumped::Recording>& trained,
+                                           const lumped::Recording& test,
+                                           const DriveColumns& cols) {
+  OperatingRange range;
+  for (const lumped::Recording& r : trained) range = span(range, operating_range(r, cols));
+  return beyond_range(range, operating_range(test, cols));
+}
+
 /// The parameter values of `fit`, in the model's order.
 std::vector<double> values_of(const GreyboxFit& fit) {
   std::vector<double> values;
@@ -207,8 +217,10 @@ std::vector<FamilyMember> cross_validate_family(const std::vector<lumped::Record
         progress.for_fit(k, other ? refit_bound : fit_bound,
                          "cross-validation, refit " + std::to_string(k + 1) + " of " +
                              std::to_string(n) + " (without " + training[k].csv_path + ")");
-    const GreyboxFit fit = fit_greybox_family(without(training, k), model, g, options.decimation);
+    const std::vector<lumped::Recording> rest = without(training, k);
+    const GreyboxFit fit = fit_greybox_family(rest, model, g, options.decimation);
     held_out[k] = predict_family_member(training[k], fit);
+    held_out[k].beyond = beyond_recordings(rest, training[k], drive_columns(fit));
   };
 
   // The tasks: the two halves first (warm refits only), then the refits, each as soon as the half

@@ -23,7 +23,8 @@ std::vector<std::vector<lumped::Recording>> cross_validation_halves(
     const std::vector<lumped::Recording>& training, const std::string& model);
 
 /// For each training recording k (in order), `model` fitted on the others and evaluated on k
-/// (predict_family_member: band and calibrated level too). With options.refit_iterations > 0,
+/// (predict_family_member: band and calibrated level too; `beyond`: what of k's drive lies
+/// beyond the other recordings', where the refit extrapolates). With options.refit_iterations > 0,
 /// each refit runs that many iterations from one start: the fit (from nominal, with
 /// options.greybox) of the half (cross_validation_halves) that does not hold k, so no fit that saw
 /// k starts it; a half that is no family for the model (check_family) leaves its tests the cold

@@ -121,7 +121,15 @@ void print_regimes(std::ostream& out, const char* title, const std::vector<Famil
   }
 }
 
-/// One line comparing the held-out FITs with the fitted ones: the median and the lowest of each.
+/// One line per drive quantity of a member beyond the recordings its model was fitted on.
+void print_beyond(std::ostream& out, const char* what, const std::vector<FamilyMember>& members) {
+  for (const FamilyMember& m : members)
+    for (const RangeExcess& e : m.beyond)
+      out << "  " << what << ": " << m.csv_path << ": " << e.text() << "\n";
+}
+
+/// One line comparing the held-out FITs with the fitted ones: the median and the lowest of each;
+/// another for the held-out tests inside their refits' drive, when some are beyond it.
 void print_held_out_summary(std::ostream& out, const FamilyFit& r) {
   const auto fits = [](const std::vector<FamilyMember>& members) {
     std::vector<double> v;
@@ -138,6 +146,17 @@ void print_held_out_summary(std::ostream& out, const FamilyFit& r) {
       "held-out FIT: median %.1f %%, lowest %.1f %% (fitted on all: median %.1f %%, lowest "
       "%.1f %%)\n",
       median(held), held.front(), median(fitted), fitted.front());
+  std::vector<FamilyMember> inside;
+  for (const FamilyMember& m : r.held_out)
+    if (m.beyond.empty()) inside.push_back(m);
+  if (!inside.empty() && inside.size() < r.held_out.size()) {
+    const std::vector<double> within = fits(inside);
+    out << format_text(
+        "held-out FIT within the drive each refit was fitted on: median %.1f %%, lowest %.1f %% "
+        "(%zu of %zu tests; the other %zu extrapolate, above)\n",
+        median(within), within.front(), inside.size(), r.held_out.size(),
+        r.held_out.size() - inside.size());
+  }
   std::vector<double> pure, levelled;
   for (const FamilyMember& m : r.held_out)
     if (m.level) {
@@ -194,15 +213,13 @@ void write_family_fit_text(const FamilyFit& r, std::size_t recordings, int decim
   print_members(out, "training recordings:", r.training);
   if (!r.predicted.empty()) {
     print_members(out, "predicted recordings:", r.predicted);
-    for (const FamilyMember& m : r.predicted)
-      for (const RangeExcess& e : m.beyond)
-        out << "  beyond the training recordings' drive: " << m.csv_path << ": " << e.text()
-            << "\n";
+    print_beyond(out, "beyond the training recordings' drive", r.predicted);
   }
   if (!r.held_out.empty()) {
     print_members(out,
                   "held out (each training recording predicted by the family fitted without it):",
                   r.held_out);
+    print_beyond(out, "beyond the drive of the recordings its refit was fitted on", r.held_out);
     print_held_out_summary(out, r);
   }
   out << "residual by regime (% of the model's residual energy in % of the samples; mean "

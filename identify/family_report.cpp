@@ -186,11 +186,14 @@ std::string family_report_html(const FamilyFit& r, const std::vector<lumped::Rec
        "residual of the settled strokes, motion &gt; 0 / &lt; 0</th></tr>\n";
   const auto rows = [&](const std::vector<FamilyMember>& members, const char* role) {
     for (const FamilyMember& m : members)
-      o << "<tr><td>" << html_escape(m.csv_path) << "</td><td>" << role << "</td><td>"
-        << html_number(m.field) << "</td><td>" << html_number(m.metrics.fit_percent, 3)
-        << "</td><td>" << html_number(m.metrics.rmse_percent, 3) << "</td><td>"
-        << html_number(m.metrics.re, 3) << "</td><td>"
-        << (m.band ? html_number(m.band->percent, 3) : std::string("&mdash;")) << "</td><td>"
+      o << "<tr><td>" << html_escape(m.csv_path) << "</td><td>" << role
+        << (m.beyond.empty() ? std::string()
+                             : " (extrapolated: " + html_escape(m.beyond.front().text()) + ")")
+        << "</td><td>" << html_number(m.field) << "</td><td>"
+        << html_number(m.metrics.fit_percent, 3) << "</td><td>"
+        << html_number(m.metrics.rmse_percent, 3) << "</td><td>" << html_number(m.metrics.re, 3)
+        << "</td><td>" << (m.band ? html_number(m.band->percent, 3) : std::string("&mdash;"))
+        << "</td><td>"
         << (m.repeatability ? html_number(*m.repeatability, 3) : std::string("&mdash;"))
         << "</td><td>"
         << (m.level ? html_number(m.level->pure_fit_percent, 3) : std::string("&mdash;"))

@@ -11,11 +11,14 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <sstream>
 #include <string>
 
 #include "core/error.hpp"
 #include "identify/current_dependent_fit.hpp"
 #include "identify/family_cross_validation.hpp"
+#include "identify/family_fit_output.hpp"
+#include "identify/family_report.hpp"
 #include "lumped/recording_io.hpp"
 
 using namespace rheomag::lumped;
@@ -154,6 +157,8 @@ TEST(CurrentDependent, CrossValidationPredictsEachRecordingFromTheOthers) {
   EXPECT_NEAR(held.level->gain, 1.1, 0.0055);
   EXPECT_NEAR(held.level->pure_fit_percent, 100.0 * (1.0 - 0.1 / 1.1), 0.2);
   EXPECT_FALSE(r.training[scaled].level.has_value());  // training rows are fitted, not predicted
+  for (const FamilyMember& m : r.held_out)  // both frequencies and two tests at every level
+    EXPECT_TRUE(m.beyond.empty()) << m.csv_path;
 
   // The halves: every field level (0, 0.5, 1 A) in each, and both frequencies (two tests a
   // level: the first half 0.1 Hz at 0 and 1 A, 0.25 Hz at 0.5 A), in training order.
@@ -200,6 +205,70 @@ TEST(CurrentDependent, CrossValidationPredictsEachRecordingFromTheOthers) {
 
   EXPECT_THROW(fit_current_dependent({training[0], training[1]}, "lugre", {}, options),
                rheomag::InputError);  // leaving one of two out leaves no family
+}
+
+// A held-out test outside the drive of the recordings its refit was fitted on is an
+// extrapolation, and the held-out rows say so (beyond_range against the other recordings' drive).
+// LuGre recordings as above, noise-free: 0.25 Hz at 0, 0.5 and 1 A and 0.1 Hz at 0.5 A. Without
+// the 0 A test the others span 0.5 ... 1 A (field below, exactly 0 against 0.5 ... 1); without
+// the 1 A test, 0 ... 0.5 A (field above); without the 0.1 Hz test, only the 0.25 Hz peak speed
+// (below it by the frequency ratio 0.4, beyond the 1.25 factor); the 0.25 Hz / 0.5 A test lies
+// inside the others' drive. The text report names each excess and gives the held-out FIT of the
+// one test inside apart; the HTML report's table marks the other three rows.
+TEST(CurrentDependent, CrossValidationNamesTheHeldOutTestsItExtrapolates) {
+  const std::vector<double> truth = {40.0, 260.0, 2.0, 1000.0, 90.0, 700.0, 0.4, 0.0};
+  std::vector<Recording> training = {sine_recording(0.25, 0.0), sine_recording(0.1, 0.5),
+                                     sine_recording(0.25, 0.5), sine_recording(0.25, 1.0)};
+  const double v_rms = joined_velocity_rms(training);
+  for (Recording& r : training) simulate_force(r, truth, v_rms, 0.0, 1);
+  FamilyFitOptions options;
+  options.decimation = kDecimation;
+  options.cross_validate = true;
+  const FamilyFit r = fit_current_dependent(training, "lugre", {}, options);
+  ASSERT_EQ(r.held_out.size(), 4u);
+  const auto excess = [&](std::size_t k) {
+    EXPECT_EQ(r.held_out[k].beyond.size(), 1u) << k;
+    return r.held_out[k].beyond.empty() ? RangeExcess{} : r.held_out[k].beyond.front();
+  };
+  const RangeExcess below = excess(0), slow = excess(1), above = excess(3);
+  EXPECT_EQ(below.quantity, "field");
+  EXPECT_EQ(below.value, 0.0);
+  EXPECT_EQ(below.low, 0.5);
+  EXPECT_EQ(below.high, 1.0);
+  EXPECT_EQ(above.quantity, "field");
+  EXPECT_EQ(above.value, 1.0);
+  EXPECT_EQ(above.low, 0.0);
+  EXPECT_EQ(above.high, 0.5);
+  EXPECT_EQ(slow.quantity, "speed");
+  EXPECT_NEAR(slow.value / slow.high, 0.4, 1e-3);  // the same stroke at 0.1 against 0.25 Hz
+  EXPECT_NEAR(slow.high, kAmplitude * 2 * kPi * 0.25, 1e-3 * slow.high);
+  EXPECT_TRUE(r.held_out[2].beyond.empty());
+
+  std::ostringstream text;
+  write_family_fit_text(r, training.size(), kDecimation, text);
+  for (std::size_t k : {0, 1, 3})
+    EXPECT_NE(text.str().find("beyond the drive of the recordings its refit was fitted on: " +
+                              training[k].csv_path + ": " + r.held_out[k].beyond.front().text()),
+              std::string::npos)
+        << k << "\n"
+        << text.str();
+  char within[160];
+  std::snprintf(within, sizeof within,
+                "held-out FIT within the drive each refit was fitted on: median %.1f %%, lowest "
+                "%.1f %% (1 of 4 tests; the other 3 extrapolate, above)",
+                r.held_out[2].metrics.fit_percent, r.held_out[2].metrics.fit_percent);
+  EXPECT_NE(text.str().find(within), std::string::npos) << text.str();
+
+  // The report's table marks the three held-out rows, each with its excess.
+  const std::string html = family_report_html(r, training, {});
+  EXPECT_NE(html.find("<td>held out (extrapolated: field: current down to 0 A, below the trained "
+                      "0.5 ... 1 A"),
+            std::string::npos);
+  std::size_t marked = 0;
+  for (std::size_t at = html.find("held out (extrapolated: "); at != std::string::npos;
+       at = html.find("held out (extrapolated: ", at + 1))
+    ++marked;
+  EXPECT_EQ(marked, 3u);
 }
 
 // Issue 36: a recording given twice counted as two tests (between-recording standard errors
