@@ -12,6 +12,19 @@
 
 namespace rheomag::diagnose {
 
+namespace {
+
+/// The output delay of `fit` [s] from the centre of the drive convention's range (held drives are
+/// read half a sample late); 0 without a delay nuisance.
+double output_delay_off_convention(const DiagnosisModel& model, const ModelFit& fit) {
+  for (std::size_t j = 0; j < fit.layout.size(); ++j)
+    if (fit.layout[j].name == "delay")
+      return fit.values[j] - model.held_delay_shift() * model.sample_interval();
+  return 0.0;
+}
+
+}  // namespace
+
 std::string rejection(const DiagnosisModel& model, const ModelFit& current, const ModelFit& fit,
                       const Candidate* effect, double delta_bic, const Evidence& evidence,
                       bool away, const DiagnoseOptions& options, double& share) {
@@ -47,10 +60,19 @@ std::string rejection(const DiagnosisModel& model, const ModelFit& current, cons
   }
   // A time constant shorter than one sample interval cannot be told from the recording's own
   // timing (channel skew, held drives), which the delay nuisance already absorbs.
-  if (const double tau = effect->timing_lag(model, fit); tau > 0.0 && tau < model.sample_interval())
+  const double tau = effect->timing_lag(model, fit);
+  if (tau > 0.0 && tau < model.sample_interval())
     return head + " with a time constant of " + fmt(1e3 * tau) +
            " ms, shorter than one sample interval (" + fmt(1e3 * model.sample_interval()) +
            " ms): not told apart from the recording's timing; not accepted";
+  // A lag the output delay takes back: with the delay leading the output by about the lag, the
+  // two shift the output by under one sample and act as a smoothing of it, not as a lag.
+  if (const double lead = -output_delay_off_convention(model, fit);
+      tau > 0.0 && tau - lead < model.sample_interval())
+    return head + " with a time constant of " + fmt(1e3 * tau) + " ms and the output delay " +
+           fmt(1e3 * lead) + " ms ahead of the drives: together they shift the output by under " +
+           "one sample interval (" + fmt(1e3 * model.sample_interval()) +
+           " ms), a smoothing of the recording's timing and not a lag; not accepted";
   // What the candidate itself finds implausible (e.g. a hysteresis loop inside the noise).
   if (auto why = effect->implausible(model, fit); !why.empty()) return head + why;
   // Identifiability: the effect's size parameter known to a relative standard error below
