@@ -15,6 +15,8 @@ concealed). Python 3 standard library only. Usage:
 
     scripts/independent-rig.py OUTDIR            # writes OUTDIR/<name>.csv/.toml, truth.toml
     scripts/independent-rig.py OUTDIR --list     # names and concealed effects only
+    scripts/independent-rig.py OUTDIR --random 40 --seed 6 --diagnose build/app/rheomag
+                                                 # 40 recordings drawn at random, scored
     scripts/independent-rig.py OUTDIR --diagnose build/app/rheomag   # and score its diagnoses
     LINE_VALVE=1 scripts/independent-rig.py ...  # the valve as a Bingham line (isolates its shape)
 
@@ -325,23 +327,29 @@ def sidecar(sc):
     return "\n".join(lines) + "\n"
 
 
+def sine(amp_v, freq):
+    """A velocity sine of amplitude amp_v at freq Hz, from rest at x = 0: (x(t), v(t), a(t))."""
+    w = 2 * math.pi * freq
+    return lambda t: (amp_v / w * (1 - math.cos(w * t)), amp_v * math.sin(w * t), amp_v * w * math.cos(w * t))
+
+
+def constant(v):
+    """A constant velocity v: (x(t), v(t), a(t))."""
+    return lambda t: (v * t, v, 0.0)
+
+
+def disp_sine(amp_x, freq):
+    """A displacement sine of amplitude amp_x at freq Hz: (x(t), v(t), a(t))."""
+    w = 2 * math.pi * freq
+    return lambda t: (amp_x * math.sin(w * t), amp_x * w * math.cos(w * t), -amp_x * w * w * math.sin(w * t))
+
+
 def scenarios():
     """The recordings: one or two concealed effects each, or none."""
     bypass = Valve([0.0, 0.25, 0.5, 0.75, 1.0], [0.0, 1.3e6, 2.4e6, 3.3e6, 3.9e6], 1.8e10)
     damper_valve = Valve([0.0, 0.25, 0.5, 0.75, 1.0], [0.07e6, 0.27e6, 0.53e6, 0.73e6, 0.87e6], 2.5e9)
     hb_valve = Valve([0.0, 0.25, 0.5, 0.75, 1.0], [0.0, 1.3e6, 2.4e6, 3.3e6, 3.9e6], 1.8e10, 2000.0, 0.85, 4e-6)
     a_bypass = 4.524e-4
-
-    def sine(amp_v, freq):
-        w = 2 * math.pi * freq
-        return lambda t: (amp_v / w * (1 - math.cos(w * t)), amp_v * math.sin(w * t), amp_v * w * math.cos(w * t))
-
-    def constant(v):
-        return lambda t: (v * t, v, 0.0)
-
-    def disp_sine(amp_x, freq):
-        w = 2 * math.pi * freq
-        return lambda t: (amp_x * math.sin(w * t), amp_x * w * math.cos(w * t), -amp_x * w * w * math.sin(w * t))
 
     hyd = dict(drives=["velocity", "current"], output="pressure", area=a_bypass, chamber_volume=2e-5)
     dmp = dict(drives=["displacement", "velocity", "current"], output="force", area=7e-4,
@@ -382,6 +390,105 @@ def scenarios():
     ]
 
 
+RANDOM_CLASSES = ["none", "compressibility", "fluid_inertia", "mr_response_time", "eddy_currents", "friction",
+                  "magnetic_hysteresis", "coil_inductance", "coil_heating", "pair"]
+RANDOM_PAIRS = [("compressibility", "friction"), ("compressibility", "mr_response_time"),
+                ("friction", "mr_response_time"), ("friction", "coil_inductance"),
+                ("compressibility", "coil_inductance")]
+
+
+def random_scenarios(seed, count):
+    """`count` recordings drawn from `seed`: the classes of RANDOM_CLASSES in turn (two effects for
+    "pair"), each effect's size, the rig's valve, the drive and the recorder (rate, held or
+    instantaneous drive samples, channel skew, noise) at random within ranges a test rig shows."""
+    rng = random.Random(seed)
+    u = rng.uniform
+
+    def valve(kind):
+        ys, r = u(0.7, 1.3), u(0.7, 1.4)
+        if kind == "damper":
+            return Valve([0.0, 0.25, 0.5, 0.75, 1.0], [ys * p for p in (0.07e6, 0.27e6, 0.53e6, 0.73e6, 0.87e6)], r * 2.5e9)
+        index = 0.85 if rng.random() < 0.3 else 1.0  # some fluids shear-thin
+        return Valve([0.0, 0.25, 0.5, 0.75, 1.0], [ys * p for p in (0.0, 1.3e6, 2.4e6, 3.3e6, 3.9e6)], r * 1.8e10,
+                     2000.0, index, 4e-6 if index < 1 else 1e-5)
+
+    def levels(n, top):
+        return [0.0] + [round(u(0.1, 1.0) * top, 3) for _ in range(n - 1)]
+
+    def recorder(rates):
+        return dict(sample_rate=rng.choice(rates), skew=u(-0.5, 0.5), held=rng.random() < 0.5,
+                    output_noise=u(0.002, 0.008), drive_noise=u(0.001, 0.004))
+
+    out = []
+    for k in range(count):
+        cls = RANDOM_CLASSES[k % len(RANDOM_CLASSES)]
+        effects = list(rng.choice(RANDOM_PAIRS)) if cls == "pair" else ([] if cls == "none" else [cls])
+        concealed = {}
+        for e in effects:
+            if e == "compressibility":
+                concealed[e] = {"air_volume": u(1.5e-7, 8e-7) if cls != "pair" else u(1e-6, 4e-6)}
+            elif e == "fluid_inertia":
+                concealed[e] = {"inertance": u(4e8, 1.5e9)}
+            elif e in ("mr_response_time", "eddy_currents"):
+                concealed[e] = {"time_constant": u(0.01, 0.05)}
+            elif e == "friction":
+                concealed[e] = {"coulomb_force": u(60.0, 200.0)}
+            elif e == "magnetic_hysteresis":
+                concealed[e] = {"play_half_width": u(0.04, 0.1)}
+            elif e == "coil_inductance":
+                concealed[e] = {"inductance": u(0.1, 0.6)}
+            elif e == "coil_heating":
+                concealed[e] = {"thermal_resistance": u(3.0, 8.0), "thermal_time_constant": u(15.0, 40.0)}
+        # the rig each class needs; "none" takes any of them
+        rig = {"compressibility": "bypass", "fluid_inertia": "inertia", "mr_response_time": "pump",
+               "eddy_currents": "pump", "friction": "damper", "magnetic_hysteresis": "hysteresis",
+               "coil_inductance": "coil", "coil_heating": "heating", "pair": "damper_voltage"}.get(cls)
+        if cls == "none":
+            rig = rng.choice(["bypass", "pump", "damper", "damper_voltage", "coil"])
+        if cls in ("mr_response_time", "eddy_currents") and rng.random() < 0.5:
+            rig = "bypass"
+        name = "random%d_%s" % (k, cls)
+        period = u(0.4, 1.0)
+        hyd = dict(drives=["velocity", "current"], output="pressure", area=4.524e-4, chamber_volume=2e-5)
+        dmp = dict(drives=["displacement", "velocity", "current"], output="force", area=7e-4,
+                   chamber_volume=1e-4, gas_force=u(50.0, 200.0))
+        if rig == "bypass":
+            sc = Scenario(name, "bypass_cylinder", 4.0, 0, concealed, motion=sine(u(0.02, 0.04), u(0.8, 1.5)),
+                          coil=steps(levels(5, 1.0), 0.0, period, 2e-3), valve=valve("bypass"),
+                          **dict(hyd, **recorder([500.0, 1000.0])))
+        elif rig == "inertia":
+            sc = Scenario(name, "bypass_cylinder", 2.0, 0, concealed, motion=sine(u(0.04, 0.06), u(3.0, 5.0)),
+                          coil=steps(levels(4, 0.6), 0.0, 0.5, 2e-3), valve=valve("bypass"),
+                          **dict(hyd, **dict(recorder([2000.0]), held=False)))
+        elif rig == "pump":
+            sc = Scenario(name, "constant_velocity_pump", 4.0, 0, concealed, motion=constant(u(0.006, 0.012)),
+                          coil=steps(levels(10, 1.0), 0.0, 0.4, 1e-3), valve=valve("bypass"),
+                          **dict(hyd, **recorder([500.0, 1000.0])))
+        elif rig == "hysteresis":
+            tri = [0.0, 0.3, 0.6, 1.0, 0.6, 0.3, 0.0, 0.45, 0.8, 0.45, 0.1, 0.6, 0.3]
+            sc = Scenario(name, "constant_velocity_pump", 8.0, 0, concealed, motion=constant(u(0.006, 0.012)),
+                          coil=steps(tri, 0.0, 0.6, 2e-3), valve=valve("bypass"), **dict(hyd, **recorder([500.0])))
+        elif rig == "damper":
+            sc = Scenario(name, "damper", 5.0, 0, concealed, motion=disp_sine(u(0.006, 0.015), u(1.0, 2.0)),
+                          coil=steps(levels(6, 1.0), 0.0, period, 2e-3), valve=valve("damper"),
+                          **dict(dmp, **recorder([500.0, 1000.0])))
+        elif rig == "damper_voltage":
+            sc = Scenario(name, "damper", 5.0, 0, concealed, motion=disp_sine(u(0.006, 0.015), u(1.0, 2.0)),
+                          coil=steps(levels(8, 5.0), 0.0, period, 1e-4), voltage_driven=True, coil_resistance=5.0,
+                          inductance=0.05, valve=valve("damper"),
+                          **dict(dmp, drives=["displacement", "velocity", "voltage"], **recorder([500.0, 1000.0])))
+        elif rig == "coil":
+            sc = Scenario(name, "coil_bench", 3.0, 0, concealed, coil=steps(levels(12, 9.0), 0.0, 0.25, 1e-4),
+                          drives=["voltage"], output="current", voltage_driven=True, **recorder([1000.0]))
+        else:  # heating
+            sc = Scenario(name, "coil_bench", 60.0, 0, concealed, coil=steps([12.0, 2.0] * 6, 0.0, 5.0, 1e-4),
+                          inductance=0.25, drives=["voltage"], output="current", voltage_driven=True,
+                          **recorder([200.0]))
+        sc.rate = sc.kw.pop("sample_rate")
+        out.append(sc)
+    return out
+
+
 def write_csv(path, cols):
     keys = ["t"] + [k for k in cols if k != "t"]
     tmp = path + ".tmp"
@@ -400,10 +507,13 @@ def main():
     ap.add_argument("--seed", type=int, default=11)
     ap.add_argument("--diagnose", metavar="RHEOMAG", help="run this rheomag's diagnose on each and score it")
     ap.add_argument("--reuse", action="store_true", help="keep recordings already in OUTDIR (do not simulate again)")
+    ap.add_argument("--random", type=int, metavar="N",
+                    help="instead of the ten fixed recordings, N drawn at random from --seed (classes in turn)")
     args = ap.parse_args()
     os.makedirs(args.outdir, exist_ok=True)
+    cases = random_scenarios(args.seed, args.random) if args.random else scenarios()
     truth = []
-    for k, sc in enumerate(scenarios()):
+    for k, sc in enumerate(cases):
         names = sorted(sc.concealed) or ["none"]
         truth.append('[%s]\nconcealed = [%s]\n' % (sc.name, ", ".join('"%s"' % n for n in names)))
         for n, p in sc.concealed.items():
@@ -423,7 +533,7 @@ def main():
     with open(os.path.join(args.outdir, "truth.toml"), "w") as f:
         f.write("\n".join(truth))
     if args.diagnose:
-        diagnose_all(args.outdir, args.diagnose, [sc for sc in scenarios() if not args.only or sc.name == args.only])
+        diagnose_all(args.outdir, args.diagnose, [sc for sc in cases if not args.only or sc.name == args.only])
 
 
 if __name__ == "__main__":
