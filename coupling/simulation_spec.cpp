@@ -169,7 +169,7 @@ lumped::RigSpec read_rig(const toml::table& doc, const std::string& file) {
 
   TableReader valve(doc["valve"].as_table(), file, "valve");
   valve.only({"yield_current", "yield_pressure", "viscous_resistance", "yield_scale",
-              "regularisation_flow", "case", "viscous_scale"});
+              "regularisation_flow", "case", "viscous_scale", "slit_fraction"});
   if (s.kind != lumped::RigKind::coil_bench && valve.has("case")) {
     // The valve's static map from the fluid chain of an FE case (path relative to this spec).
     const std::filesystem::path case_path =
@@ -181,6 +181,10 @@ lumped::RigSpec read_rig(const toml::table& doc, const std::string& file) {
       valve.fail("case",
                  "replaces yield_current, yield_pressure and viscous_resistance: give "
                  "either the case or the table");
+    if (valve.has("slit_fraction"))
+      valve.fail(
+          "slit_fraction",
+          "shapes a table's Bingham line; a case's chain map is already its gap's exact law");
     s.valve.case_file = case_path.lexically_normal().string();
     s.valve.yield_scale = valve.number("yield_scale", 1.0, 0.0);
     s.valve.viscous_scale = valve.positive("viscous_scale", 1.0);
@@ -199,6 +203,8 @@ lumped::RigSpec read_rig(const toml::table& doc, const std::string& file) {
     s.valve.yield_scale = valve.number("yield_scale", 1.0, 0.0);
     s.valve.regularisation_flow =
         valve.positive("regularisation_flow", 1e-3 * s.piston_area * 1e-3);
+    s.valve.slit_fraction = valve.within("slit_fraction", Domain::between(0.0, 1.0), 0.0,
+                                         "0 the Bingham line, 1 the exact slit law");
   }
 
   TableReader effects(doc["effects"].as_table(), file, "effects");

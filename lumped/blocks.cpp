@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "lumped/slit_law.hpp"
 #include "lumped/smooth.hpp"
 
 namespace rheomag::lumped {
@@ -59,8 +60,13 @@ double ValveMapBlock::pressure_drop(double flow, double current, double viscous_
   if (chain)
     return chain_pressure_drop(*chain, flow, current, yield_scale, viscous_scale * viscous_factor,
                                regularisation_flow);
-  return yield(current) * smooth_sign(flow, regularisation_flow) +
-         viscous_factor * viscous_resistance * flow;
+  const double resistance = viscous_factor * viscous_resistance;
+  double py = yield(current);
+  if (slit_fraction > 0.0 && py > 0.0) {
+    const double delta = slit_plug_at_flow(resistance * std::abs(flow) / py);
+    py *= 1.0 - slit_fraction * delta * delta / 3.0;
+  }
+  return py * smooth_sign(flow, regularisation_flow) + resistance * flow;
 }
 
 double ValveMapBlock::flow(double dp, double current, double viscous_factor) const {
@@ -69,7 +75,14 @@ double ValveMapBlock::flow(double dp, double current, double viscous_factor) con
                       regularisation_flow);
   const double resistance = viscous_factor * viscous_resistance;
   const double py = yield(current), width = resistance * regularisation_flow;
-  return (smooth_ramp(dp - py, width) - smooth_ramp(-dp - py, width)) / resistance;
+  if (!(slit_fraction > 0.0 && py > 0.0))
+    return (smooth_ramp(dp - py, width) - smooth_ramp(-dp - py, width)) / resistance;
+  // The knee: the excess over the onset p_y (1 - k/3), regularised by the same smooth ramp as
+  // the line (k = 0 gives the line's ramp / R), drives the slit law's flow. The composition is
+  // smooth and increasing; below the onset its creep is the ramp's tail through the knee.
+  const double onset = py * (1.0 - slit_fraction / 3.0);
+  return knee_flow(smooth_ramp(dp - onset, width), py, resistance, slit_fraction) -
+         knee_flow(smooth_ramp(-dp - onset, width), py, resistance, slit_fraction);
 }
 
 double ChamberBlock::capacitance(double pressure) const {

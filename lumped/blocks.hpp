@@ -108,11 +108,15 @@ struct DriverBlock {
 /// With `chain` set, the map is the fluid chain's table of an FE case instead (yield part times
 /// yield_scale, viscous part times viscous_scale; the yield table and R are then unused).
 struct ValveMapBlock {
-  std::vector<double> yield_current;           ///< [A]
-  std::vector<double> yield_pressure;          ///< [Pa]
-  double viscous_resistance = 1.5e10;          ///< [Pa s/m^3]
-  double yield_scale = 1.0;                    ///< [-] calibration factor on the table
-  double regularisation_flow = 1e-8;           ///< [m^3/s] width of the smooth sign
+  std::vector<double> yield_current;   ///< [A]
+  std::vector<double> yield_pressure;  ///< [Pa]
+  double viscous_resistance = 1.5e10;  ///< [Pa s/m^3]
+  double yield_scale = 1.0;            ///< [-] calibration factor on the table
+  double regularisation_flow = 1e-8;   ///< [m^3/s] width of the smooth sign
+  /// [-] shape of the table map's knee: 0 the Bingham line; 1 the exact slit (Buckingham) law with
+  /// the line as its asymptote (yield part p_y (1 - delta^2 / 3), lumped/slit_law.hpp); between,
+  /// yield part p_y (1 - slit_fraction delta^2 / 3). Unused by a chain map.
+  double slit_fraction = 0.0;
   std::string case_file;                       ///< FE case of the valve (chain map), or empty
   double viscous_scale = 1.0;                  ///< [-] chain map: factor on the viscous part
   std::shared_ptr<const ChainMapTable> chain;  ///< chain map tabulated from case_file

@@ -148,5 +148,22 @@ TEST(Simulate, BadSpecsExitWith2) {
       EXPECT_NE(std::string(e.what()).find("effects.fluid_heating"), std::string::npos) << e.what();
     }
   }
+  // The valve table's knee (lumped/slit_law.hpp) is a fraction in [0, 1]; a case's chain map is
+  // already its gap's exact law, so a knee beside a case is refused too.
+  const std::string table =
+      "[rig]\nkind = \"bypass_cylinder\"\n[valve]\nyield_current=[0,1]\nyield_pressure=[0,1e6]\n";
+  EXPECT_DOUBLE_EQ(
+      read_simulation_spec(spec(table + "slit_fraction = 0.5\n")).rig->valve.slit_fraction, 0.5);
+  for (const std::string& text :
+       {table + "slit_fraction = 1.5\n",
+        std::string("[rig]\nkind = \"bypass_cylinder\"\n[valve]\ncase = \"") + rigs() +
+            "../annular_valve.toml\"\nslit_fraction = 0.5\n"}) {
+    try {
+      read_simulation_spec(spec(text));
+      FAIL() << "accepted: " << text;
+    } catch (const rheomag::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("[valve] slit_fraction"), std::string::npos) << e.what();
+    }
+  }
   fs::remove_all(dir);
 }
