@@ -94,6 +94,10 @@ std::string nuisance_text(const Nuisance& u) {
   if (u.preyield_flow > 0.0)
     text +=
         ", pre-yield smoothing " + significant(100 * u.preyield_fraction, 2) + " % of peak flow";
+  if (std::isfinite(u.slit_fraction))
+    text += ", knee " + significant(u.slit_fraction, 2) +
+            " of the way from the Bingham line to "
+            "the exact slit law";
   return text;
 }
 

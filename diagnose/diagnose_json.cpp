@@ -25,6 +25,7 @@ nlohmann::json nuisance_json(const Nuisance& u) {
     j["preyield_flow"] = u.preyield_flow;
     j["preyield_fraction_of_peak_flow"] = u.preyield_fraction;
   }
+  if (std::isfinite(u.slit_fraction)) j["slit_fraction"] = u.slit_fraction;
   return j;
 }
 

@@ -130,9 +130,20 @@ DiagnosisModel::DiagnosisModel(const lumped::Recording& rec, const ModelBaseline
       base_.valve.yield_current = meta.valve.yield_current;
       base_.valve.yield_pressure = meta.valve.yield_pressure;
       base_.valve.viscous_resistance = *meta.valve.viscous_resistance;
+      // A table states a Bingham line; the gap's real law bends below it (the exact slit law
+      // has the line as its asymptote): the knee's shape is a nuisance where a yield shows and
+      // the recorded output is the valve's own pressure drop. A damper's force adds the seals
+      // and the gas, and there the knee trades with the viscous resistance (docs/diagnosis.md).
+      knee_nuisance_ = *std::max_element(meta.valve.yield_pressure.begin(),
+                                         meta.valve.yield_pressure.end()) > 0.0 &&
+                       base_.kind != RigKind::damper;
       include("static_map", 0.0, "",
               "sidecar [valve] yield_current/yield_pressure/viscous_resistance (Bingham table, "
-              "scale calibrated)" +
+              "scale calibrated" +
+                  std::string(knee_nuisance_ ? "; its knee between the line and the exact slit "
+                                               "law calibrated"
+                                             : "") +
+                  ")" +
                   std::string(meta.valve.case_file.empty()
                                   ? ""
                                   : "; the table is used, [valve] case is not run"));
@@ -397,11 +408,12 @@ std::vector<ParamDef> DiagnosisModel::static_params() const {
                  std::clamp(base_.valve.regularisation_flow, 1e-5 * q, kMaxPreyieldFraction * q),
                  1e-5 * q, kMaxPreyieldFraction * q, true, 1.0, "m^3/s"});
   }
+  if (knee_nuisance_) p.push_back({"slit_fraction", 0.0, 0.0, 1.0, false, 0.1, "1"});
   return p;
 }
 
 std::size_t DiagnosisModel::nuisance_count() const {
-  return smoothing_nuisance_ ? 2 : 1;
+  return 1 + (smoothing_nuisance_ ? 1 : 0) + (knee_nuisance_ ? 1 : 0);
 }
 
 std::vector<ParamDef> DiagnosisModel::layout(const std::vector<const Candidate*>& effects) const {
@@ -432,6 +444,7 @@ RigSpec DiagnosisModel::spec(const std::vector<const Candidate*>& effects,
   if (!fitted_) {
     ++k;  // delay: applied to the output (predict)
     if (smoothing_nuisance_) s.valve.regularisation_flow = values.at(k++);
+    if (knee_nuisance_) s.valve.slit_fraction = values.at(k++);
   }
   ParamReader reader(values, k);
   for (const Candidate* e : effects) e->switch_on(s, reader, *this);

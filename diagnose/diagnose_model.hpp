@@ -122,7 +122,8 @@ class DiagnosisModel {
   bool can_hold() const { return !fitted_ && !constant_field_ && coil_drive_steps_; }
 
   /// Static (calibrated) parameters of the baseline: yield_scale, viscous_resistance (or
-  /// viscous_scale of an FE-chain map), force_offset, and the nuisances delay and preyield_flow.
+  /// viscous_scale of an FE-chain map), force_offset, and the nuisances delay, preyield_flow and
+  /// slit_fraction (the table map's knee).
   std::vector<ParamDef> static_params() const;
 
   /// Number of static parameters that are nuisances (the last ones of static_params()).
@@ -178,6 +179,8 @@ class DiagnosisModel {
   const std::string& field_column() const { return field_column_; }
   /// True when the static map's pre-yield smoothness is calibrated (the flow reverses).
   bool preyield_calibrated() const { return smoothing_nuisance_; }
+  /// True when the table map's knee (slit_fraction, lumped/slit_law.hpp) is calibrated.
+  bool knee_calibrated() const { return knee_nuisance_; }
   /// Standard deviation of the measured output about its mean (floored at 1e-300).
   double output_spread() const { return output_rms_; }
   /// [s] median sample interval.
@@ -212,6 +215,7 @@ class DiagnosisModel {
   double velocity_filter_bandwidth_ = 0.0;
   bool smoothing_nuisance_ = false;  ///< the flow reverses: the pre-yield smoothness is calibrated
   bool fe_chain_ = false;            ///< the static map is the FE chain of [valve] case
+  bool knee_nuisance_ = false;       ///< a table map with a yield: its knee's shape is calibrated
   DriveSampling sampling_ = DriveSampling::linear;
   bool coil_drive_steps_ = false;  ///< the coil drive moves by a step within one interval
   /// Applies the held convention to the drives (RigSpec::held_drives, motion read later).

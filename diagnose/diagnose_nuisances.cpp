@@ -29,7 +29,10 @@ std::vector<bool> held_in_candidates(const DiagnosisModel& model,
     const bool at_bound = p.log_scale ? v <= p.lower * 1.001 || v >= p.upper / 1.001
                                       : std::abs(v - p.lower) < 5e-4 * (p.upper - p.lower) ||
                                             std::abs(v - p.upper) < 5e-4 * (p.upper - p.lower);
-    if (!at_bound) held[j] = false;
+    // The map's knee is a shape the baseline calibrates once: free beside a candidate it would
+    // trade its curvature for the candidate's (an air pocket's or a mass's rounding of a
+    // reversal), so it stays held until the final joint re-fit.
+    if (!at_bound && p.name != "slit_fraction") held[j] = false;
   }
   return held;
 }
@@ -55,8 +58,9 @@ void recalibrate_nuisances(const DiagnosisModel& model, ModelFit& fit, const Fit
   auto free = held_in_candidates(model, fit.effects, fit.values);
   bool any = false;
   std::vector<bool> fixed(fit.values.size(), true);
-  for (std::size_t j = model.delay_index(); j < model.static_params().size(); ++j)
-    if (!free[j]) fixed[j] = false, any = true;
+  const auto layout = model.static_params();
+  for (std::size_t j = model.delay_index(); j < layout.size(); ++j)
+    if (!free[j] || layout[j].name == "slit_fraction") fixed[j] = false, any = true;
   if (!any) return;
   auto s = base;
   s.fixed = fixed;
@@ -81,12 +85,18 @@ std::vector<double> nuisance_start(const DiagnosisModel& model, int threads) {
   const auto layout = model.static_params();
   std::vector<double> start;
   for (const auto& p : layout) start.push_back(p.nominal);
-  const std::size_t j = layout.size() - 1;
-  if (layout[j].name != "preyield_flow") return start;
-  std::vector<double> grid;
-  for (double v = layout[j].lower; v <= layout[j].upper * 1.0001; v *= std::sqrt(10.0))
-    grid.push_back(v);
-  return grid_search(model, {}, std::move(start), j, grid, nullptr, threads);
+  // A grid over each shape nuisance in turn (the fit from a grid point finds the rest): the
+  // pre-yield smoothness in half decades, then the knee between the line and the slit law.
+  for (std::size_t j = model.delay_index(); j < layout.size(); ++j) {
+    std::vector<double> grid;
+    if (layout[j].name == "preyield_flow")
+      for (double v = layout[j].lower; v <= layout[j].upper * 1.0001; v *= std::sqrt(10.0))
+        grid.push_back(v);
+    else if (layout[j].name == "slit_fraction")
+      grid = {0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0};
+    if (!grid.empty()) start = grid_search(model, {}, std::move(start), j, grid, nullptr, threads);
+  }
+  return start;
 }
 
 Nuisance nuisance_of(const DiagnosisModel& model, const ModelFit& fit) {
@@ -97,6 +107,7 @@ Nuisance nuisance_of(const DiagnosisModel& model, const ModelFit& fit) {
   for (std::size_t j = 0; j < model.static_params().size(); ++j) {
     if (fit.layout[j].name == "delay") u.delay = fit.values[j];
     if (fit.layout[j].name == "preyield_flow") u.preyield_flow = fit.values[j];
+    if (fit.layout[j].name == "slit_fraction") u.slit_fraction = fit.values[j];
   }
   u.delay_samples = u.delay / model.sample_interval();
   if (model.peak_flow() > 0.0) u.preyield_fraction = u.preyield_flow / model.peak_flow();

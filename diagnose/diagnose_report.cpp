@@ -245,6 +245,11 @@ std::string diagnosis_html(const Diagnosis& d) {
     o << "<tr><td>pre-yield smoothness of the static map (" << kFinalStage
       << ")</td><td>plug switch width " << html_escape(value_text(u.preyield_flow, "m^3/s"))
       << "</td></tr>\n";
+  if (std::isfinite(u.slit_fraction))
+    o << "<tr><td>knee of the static map (" << kFinalStage << ")</td><td>slit_fraction "
+      << html_number(u.slit_fraction)
+      << " (0: the table's Bingham line; 1: the exact slit law with that line as its "
+         "asymptote)</td></tr>\n";
   if (u.velocity_filter_bandwidth > 0.0)
     o << "<tr><td>noisy velocity smoothed (cubic Savitzky-Golay, zero phase)</td><td>-3 dB at "
       << html_number(u.velocity_filter_bandwidth) << " Hz</td></tr>\n";

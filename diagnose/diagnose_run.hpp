@@ -104,7 +104,9 @@ struct Nuisance {
   /// FIT points the calibrated convention gains over the other (NaN: only one applies)
   double sampling_fit_gain = std::numeric_limits<double>::quiet_NaN();
   double preyield_flow = 0.0;  ///< [m^3/s] width of the static map's plug switch (0: not fitted)
-  double preyield_fraction = 0.0;             ///< preyield_flow / peak flow
+  double preyield_fraction = 0.0;  ///< preyield_flow / peak flow
+  /// The table map's knee: 0 the Bingham line, 1 the exact slit law (NaN: not calibrated)
+  double slit_fraction = std::numeric_limits<double>::quiet_NaN();
   std::map<std::string, double> drive_noise;  ///< column -> white-noise std (SI)
   double velocity_filter_bandwidth = 0.0;     ///< [Hz] filter on a noisy velocity (0: none)
   /// [A] smallest swing of a noisy current that the Duhem candidate's path takes as a reversal

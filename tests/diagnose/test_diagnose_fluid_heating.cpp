@@ -75,7 +75,8 @@ double final_viscous_factor(RigSpec rig, const rheomag::lumped::FluidHeatingBloc
 
 void print(const Diagnosis& d, double ceiling) {
   std::cout << "baseline FIT " << d.baseline_fit_percent << ", final " << d.final_fit_percent
-            << ", ceiling " << ceiling << "\n";
+            << ", ceiling " << ceiling << "; knee (slit_fraction) " << d.nuisance.slit_fraction
+            << " -> " << d.final_nuisance.slit_fraction << "\n";
   rheomag::test::print_findings(d);
   for (const auto& c : d.candidates)
     std::cout << "  step " << c.step << " " << c.effect->name() << " FIT " << c.fit_percent
@@ -176,7 +177,9 @@ TEST(DiagnoseFluidHeating, RealRecordingWithAConcealedWarming) {
   const RigSpec fitted = model.spec(d.final_fit.effects, d.final_fit.values);
   ASSERT_TRUE(fitted.fluid_heating);
   const double injected = viscous_loss(truth, rec), found = viscous_loss(fitted, rec);
-  std::cout << "viscous resistance lost: injected " << injected << ", found " << found << "\n";
+  std::cout << "viscous resistance lost: injected " << injected << ", found " << found
+            << "; viscous resistance " << truth.valve.viscous_resistance << " / "
+            << fitted.valve.viscous_resistance << "\n";
   EXPECT_NEAR(found / injected, 1.0, 0.3);
 }
 

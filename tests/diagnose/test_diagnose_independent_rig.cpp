@@ -18,14 +18,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Writes the independent simulator's recording `name` into a fresh folder and returns its CSV.
-fs::path independent_recording(const std::string& name) {
+/// Writes the independent simulator's recording `name` into a fresh folder and returns its CSV
+/// (`options`: more of the script's options, e.g. a random draw's "--random 40 --seed 7").
+fs::path independent_recording(const std::string& name, const std::string& options = "") {
   const fs::path dir =
       fs::temp_directory_path() / ("rheomag_independent_rig_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   const std::string command = "python3 '" + std::string(RHEOMAG_SOURCE_DIR) +
                               "/scripts/independent-rig.py' '" + dir.string() + "' --only " + name +
-                              " > /dev/null";
+                              " " + options + " > /dev/null";
   EXPECT_EQ(std::system(command.c_str()), 0) << command;
   return dir / (name + ".csv");
 }
@@ -47,6 +48,35 @@ TEST(DiagnoseIndependentRig, AirPocketBehindASlitValveIsOnlyCompressibility) {
   ASSERT_FALSE(f.params.empty());
   EXPECT_EQ(f.param_names.front(), "air_volume");
   EXPECT_NEAR(f.params.front() / 2e-7, 1.0, 0.10);
+  fs::remove_all(csv.parent_path());
+}
+
+// A random draw (seed 7, draw 13): a 10.6 ms MR response time on the constant-velocity pump,
+// 1 kHz, behind a slit valve (the exact Buckingham law, the sidecar's Bingham line 10 % off).
+// The Bingham line's missing knee showed as a nearly closed Duhem loop (d = 0.971) beside the
+// right lag. With the knee calibrated (nuisance slit_fraction; the truth is a full slit, 1) the
+// lag alone is to be named, within 20 % (measured 10.6 ms, final FIT 99.3 %, nothing above the
+// noise left; the tolerance covers the lag's trade with the delay nuisance).
+TEST(DiagnoseIndependentRig, SlitValveKneeLeavesTheFieldLagAlone) {
+  const fs::path csv = independent_recording("random13_mr_response_time", "--random 40 --seed 7");
+  const auto d = rheomag::test::run_diagnosis(rheomag::lumped::read_recording(csv.string()));
+  rheomag::test::print_findings(d);
+  EXPECT_GT(d.nuisance.slit_fraction, 0.8);
+  ASSERT_EQ(d.findings.size(), 1u);
+  const auto& f = d.findings.front();
+  EXPECT_TRUE(f.effect->name() == "mr_response_time" || f.effect->name() == "eddy_currents");
+  ASSERT_FALSE(f.params.empty());
+  EXPECT_NEAR(f.params.front() / 0.0106, 1.0, 0.20);
+  fs::remove_all(csv.parent_path());
+}
+
+// A random draw with nothing concealed (seed 7, draw 30): the bypass behind a slit valve.
+// Without the knee the baseline named a 2.3e7 Pa s^2/m^3 fluid inertia; nothing is to be named.
+TEST(DiagnoseIndependentRig, SlitValveWithNothingConcealedNamesNothing) {
+  const fs::path csv = independent_recording("random30_none", "--random 40 --seed 7");
+  const auto d = rheomag::test::run_diagnosis(rheomag::lumped::read_recording(csv.string()));
+  rheomag::test::print_findings(d);
+  EXPECT_TRUE(d.findings.empty());
   fs::remove_all(csv.parent_path());
 }
 
