@@ -87,26 +87,59 @@ std::string rejection(const DiagnosisModel& model, const ModelFit& current, cons
   return "";
 }
 
+namespace {
+
+/// `fit` with its effect i moved to the end of the layout (Candidate::implausible reads the
+/// effect it judges as the last one).
+ModelFit with_effect_last(const DiagnosisModel& model, const ModelFit& fit, std::size_t i) {
+  std::size_t offset = model.static_params().size();
+  for (std::size_t j = 0; j < i; ++j) offset += fit.effects[j]->params(model).size();
+  const auto k = static_cast<std::ptrdiff_t>(fit.effects[i]->params(model).size());
+  const auto at = static_cast<std::ptrdiff_t>(offset);
+  ModelFit last = fit;
+  auto to_end = [&](auto& v) {
+    if (v.size() == fit.layout.size()) std::rotate(v.begin() + at, v.begin() + at + k, v.end());
+  };
+  to_end(last.layout);
+  to_end(last.values);
+  to_end(last.standard_errors);
+  std::rotate(last.effects.begin() + static_cast<std::ptrdiff_t>(i),
+              last.effects.begin() + static_cast<std::ptrdiff_t>(i) + 1, last.effects.end());
+  return last;
+}
+
+}  // namespace
+
 void drop_faded_findings(const DiagnosisModel& model, ModelFit& fit, const Evidence& evidence,
                          const DiagnoseOptions& options, Diagnosis& d) {
   bool dropped = true;
-  while (dropped && fit.effects.size() > 1) {
+  while (dropped && !fit.effects.empty()) {
     dropped = false;
     for (std::size_t i = 0; i < fit.effects.size(); ++i) {
+      const Candidate* e = fit.effects[i];
+      // What the candidate finds implausible in its jointly re-fitted parameters (e.g. a loop
+      // that the re-fit closed to the top of its reversible range).
+      const std::string why = e->implausible(model, with_effect_last(model, fit, i));
       const auto [without, sse_off] = sse_switched_off(model, fit, i, evidence);
       if (!std::isfinite(sse_off.all)) continue;
-      const TwoSse with{fit.sse, two_sse(model.measured(), fit.prediction, evidence).away};
-      double share = 0.0, share_away = 0.0, rms = 0.0;
-      if (material(sse_off.all, sse_off.all - with.all, evidence.floor_all, options, share, rms) ||
-          (!evidence.away.empty() && material(sse_off.away, sse_off.away - with.away,
-                                              evidence.floor_away, options, share_away, rms)))
-        continue;
-      const Candidate* e = fit.effects[i];
-      d.notes.push_back(e->name() +
-                        " was accepted in forward selection but in the joint "
-                        "re-fit it explains only " +
-                        fmt(100 * std::max(share, share_away), 2) +
-                        " % of the residual energy above the noise floor: not reported");
+      if (why.empty()) {
+        if (fit.effects.size() < 2) continue;
+        const TwoSse with{fit.sse, two_sse(model.measured(), fit.prediction, evidence).away};
+        double share = 0.0, share_away = 0.0, rms = 0.0;
+        if (material(sse_off.all, sse_off.all - with.all, evidence.floor_all, options, share,
+                     rms) ||
+            (!evidence.away.empty() && material(sse_off.away, sse_off.away - with.away,
+                                                evidence.floor_away, options, share_away, rms)))
+          continue;
+        d.notes.push_back(e->name() +
+                          " was accepted in forward selection but in the joint "
+                          "re-fit it explains only " +
+                          fmt(100 * std::max(share, share_away), 2) +
+                          " % of the residual energy above the noise floor: not reported");
+      } else {
+        d.notes.push_back(e->name() + " was accepted in forward selection but in the joint re-fit" +
+                          why.substr(0, why.rfind("; not accepted")) + ": not reported");
+      }
       d.findings.erase(std::remove_if(d.findings.begin(), d.findings.end(),
                                       [e](const Finding& f) { return f.effect == e; }),
                        d.findings.end());

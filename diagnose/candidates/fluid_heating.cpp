@@ -25,6 +25,30 @@ double mean_dissipated_power(const DiagnosisModel& model) {
   return sum / static_cast<double>(std::max<std::size_t>(y.size(), 1));
 }
 
+/// [s] Mean flow cycle of the recording: twice its duration over the number of velocity
+/// reversals beyond a band of five noise standard deviations and 1 % of the peak (0: fewer than
+/// two reversals).
+double flow_cycle(const DiagnosisModel& model) {
+  const auto& t = model.recording().t;
+  const auto& v = model.recording().column("velocity");
+  if (t.size() < 2 || v.empty()) return 0.0;
+  double peak = 0.0;
+  for (double x : v) peak = std::max(peak, std::abs(x));
+  const auto noise = model.drive_noise().find("velocity");
+  const double band =
+      std::max(0.01 * peak, noise == model.drive_noise().end() ? 0.0 : 5.0 * noise->second);
+  int sign = 0, reversals = 0;
+  for (double x : v) {
+    const int s = x > band ? 1 : x < -band ? -1 : 0;
+    if (s != 0 && sign != 0 && s != sign) ++reversals;
+    if (s != 0) sign = s;
+  }
+  return reversals < 2 ? 0.0 : 2.0 * (t.back() - t.front()) / reversals;
+}
+
+/// Lower bound of the thermal time constant, as a fraction of the recording's duration.
+constexpr double kMinTimeConstantFraction = 1e-2;
+
 class FluidHeating final : public Candidate {
  public:
   std::string name() const override { return "fluid_heating"; }
@@ -43,7 +67,24 @@ class FluidHeating final : public Candidate {
     const double resistance = 5.0 / mean_dissipated_power(model);
     return {
         {"thermal_resistance", resistance, 1e-3 * resistance, 1e3 * resistance, true, 1.0, "K/W"},
-        {"thermal_time_constant", duration, 1e-2 * duration, 1e3 * duration, true, 1.0, "s"}};
+        {"thermal_time_constant", duration, kMinTimeConstantFraction * duration, 1e3 * duration,
+         true, 1.0, "s"}};
+  }
+
+  std::string implausible(const DiagnosisModel& model, const ModelFit& fit) const override {
+    // A heat store that fills and empties within one flow cycle (or at the bottom of the time
+    // constant's range) stores nothing: the viscous part would follow the power of the moment,
+    // which is the valve law's own shape (its knee, a shear-thinning fluid), not a warming.
+    const double tau = fit_value(fit, "thermal_time_constant");
+    const auto& t = model.recording().t;
+    const double cycle = flow_cycle(model);
+    const double lowest = 2.0 * kMinTimeConstantFraction * (t.back() - t.front());
+    if (!(tau < std::max(cycle, lowest))) return "";
+    return " with a thermal time constant of " + fmt(tau) + " s, shorter than " +
+           (cycle > lowest ? "one flow cycle (" + fmt(cycle) + " s)"
+                           : "twice the lowest it may take (" + fmt(lowest) + " s)") +
+           ": the viscous part follows the power of the moment, a shape of the valve law (its "
+           "knee, a shear-thinning fluid), not a warming; not accepted";
   }
 
   void switch_on(lumped::RigSpec& spec, ParamReader& values,

@@ -31,6 +31,12 @@ namespace {
 /// A Duhem loop must be wider than this many noise standard deviations of the current.
 constexpr double kLoopNoiseRatio = 10.0;
 
+/// Largest reversible fraction d of the candidate's range (params()).
+constexpr double kMaxReversible = 0.98;
+
+/// A fitted d this close to kMaxReversible is pinned there: the fit asks for less loop than any.
+constexpr double kPinnedReversible = 0.01;
+
 /// The field-equivalent current of the candidate (duhem_field(a, d)) along the current path `i`:
 /// along a distance x travelled in direction s, dh/dx = a (f - h) + s d with f(i) = i
 /// (kDuhemFieldB2 small), integrated exactly on each sample interval.
@@ -75,7 +81,7 @@ class MagneticHysteresis final : public Candidate {
     const auto [lo, hi] = std::minmax_element(i.begin(), i.end());
     const double range = std::max(*hi - *lo, 1e-6);
     return {{"a", 10.0 / range, 0.3 / range, 3e3 / range, true, 1.0, "1/A"},
-            {"d", 0.5, 0.0, 0.98, false, 1.0, "1"}};
+            {"d", 0.5, 0.0, kMaxReversible, false, 1.0, "1"}};
   }
 
   void switch_on(lumped::RigSpec& spec, ParamReader& values,
@@ -123,11 +129,20 @@ class MagneticHysteresis final : public Candidate {
   }
 
   std::string implausible(const DiagnosisModel& model, const ModelFit& fit) const override {
+    const std::size_t j = fit.layout.size() - 2;
+    // A reversible fraction at the top of its range: the fit wants an even thinner loop than the
+    // candidate allows, and what it uses is the slow approach over 1/a amperes (a small
+    // reshaping of the yield-current map), not a loop.
+    const double d = fit.values[j + 1];
+    if (d >= kMaxReversible - kPinnedReversible)
+      return " with a reversible fraction d = " + fmt(d, 3) + " at the top of its range (" +
+             fmt(kMaxReversible, 2) +
+             "): the fit asks for less loop than any, and reshapes the "
+             "yield's approach to each current instead; not accepted";
     // A loop narrower than ten noise standard deviations of the current is what a Duhem block
     // does to a noisy current (it follows the noise and low-passes it), not a loop.
     if (!model.drive_noise().count("current")) return "";
-    const std::size_t j = fit.layout.size() - 2;
-    const double half_width = (1.0 - fit.values[j + 1]) / fit.values[j];
+    const double half_width = (1.0 - d) / fit.values[j];
     const double noise = model.drive_noise().at("current");
     if (!(half_width < kLoopNoiseRatio * noise)) return "";
     return " with a loop half width (1 - d)/a of " + fmt(half_width) + " A, less than " +
