@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <sstream>
 
 #include "diagnose/candidate.hpp"
@@ -34,6 +35,10 @@ constexpr double kLoopNoiseRatio = 10.0;
 /// Largest reversible fraction d of the candidate's range (params()).
 constexpr double kMaxReversible = 0.98;
 
+/// Smallest share of the loop's offset that depends on the direction of approach
+/// (direction_dependent_share) for a loop to be told from a reshaped yield-current map.
+constexpr double kMinDirectionShare = 0.15;
+
 /// A fitted d this close to kMaxReversible is pinned there: the fit asks for less loop than any.
 constexpr double kPinnedReversible = 0.01;
 
@@ -57,6 +62,35 @@ std::vector<double> duhem_path(const std::vector<double>& i, double a, double d)
     h[k + 1] = i[k + 1] - s * (1.0 - d) / a + (h[k] - start) * std::exp(-a * x);
   }
   return h;
+}
+
+/// Share (rms) of the loop's offset h - i along the current `i` that no function of the
+/// current alone takes: the offset minus its mean over the samples whose current lies within
+/// `width` of each sample's, relative to the offset itself. Near 1 where each current is reached
+/// from both directions (the offset changes sign with the approach); near 0 where each current
+/// level is reached from one direction only, so a reshaped yield map gives the same output.
+double direction_dependent_share(const std::vector<double>& i, const std::vector<double>& h,
+                                 double width) {
+  const std::size_t n = std::min(i.size(), h.size());
+  if (n == 0) return 0.0;
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t p, std::size_t q) { return i[p] < i[q]; });
+  // Prefix sums of the offset in the order of the current, for the window means.
+  std::vector<double> sum(n + 1, 0.0);
+  for (std::size_t k = 0; k < n; ++k) sum[k + 1] = sum[k] + (h[order[k]] - i[order[k]]);
+  double unexplained = 0.0, total = 0.0;
+  std::size_t lo = 0, hi = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double c = i[order[k]];
+    while (i[order[lo]] < c - width) ++lo;
+    while (hi < n && i[order[hi]] <= c + width) ++hi;
+    const double offset = h[order[k]] - c;
+    const double mean = (sum[hi] - sum[lo]) / static_cast<double>(hi - lo);
+    unexplained += (offset - mean) * (offset - mean);
+    total += offset * offset;
+  }
+  return total > 0.0 ? std::sqrt(unexplained / total) : 0.0;
 }
 
 class MagneticHysteresis final : public Candidate {
@@ -139,13 +173,28 @@ class MagneticHysteresis final : public Candidate {
              fmt(kMaxReversible, 2) +
              "): the fit asks for less loop than any, and reshapes the "
              "yield's approach to each current instead; not accepted";
+    // A loop whose offset is a function of the current alone (each current level reached from
+    // one direction only, the steps between them too quick to show the loop) is what a reshaped
+    // yield map between the stated currents gives; the recording cannot tell the two apart.
+    const double a = fit.values[j], width = (1.0 - d) / a;
+    const auto& path = model.current_path();
+    const std::string column = model.fitted_baseline() ? model.field_column() : "current";
+    const auto& current = path.empty() ? model.recording().column(column) : path;
+    const double share = direction_dependent_share(current, duhem_path(current, a, d), width);
+    if (share < kMinDirectionShare)
+      return " whose offset from the current (h - i) depends on the direction of approach for "
+             "only " +
+             fmt(100.0 * share, 2) + " % of its rms (under " + fmt(100.0 * kMinDirectionShare, 2) +
+             " %): within the loop's half width (" + fmt(width) +
+             " A) each current is reached from one direction only, or too briefly from the "
+             "other, so a yield map reshaped at those currents gives the same output; not "
+             "accepted";
     // A loop narrower than ten noise standard deviations of the current is what a Duhem block
     // does to a noisy current (it follows the noise and low-passes it), not a loop.
     if (!model.drive_noise().count("current")) return "";
-    const double half_width = (1.0 - d) / fit.values[j];
     const double noise = model.drive_noise().at("current");
-    if (!(half_width < kLoopNoiseRatio * noise)) return "";
-    return " with a loop half width (1 - d)/a of " + fmt(half_width) + " A, less than " +
+    if (!(width < kLoopNoiseRatio * noise)) return "";
+    return " with a loop half width (1 - d)/a of " + fmt(width) + " A, less than " +
            fmt(kLoopNoiseRatio, 2) + " times the current's noise (" + fmt(noise) +
            " A): not told apart from the noise; not accepted";
   }
