@@ -80,4 +80,16 @@ TEST(DiagnoseIndependentRig, SlitValveWithNothingConcealedNamesNothing) {
   fs::remove_all(csv.parent_path());
 }
 
+// A random draw with nothing concealed (seed 6, draw 30): a clean bypass whose current levels
+// are each reached from one direction (0.26 and 0.34 A from below, 0.10 A from above) through
+// steps that rise within about a sample. The previous build named a Duhem loop of half width 0.013 A whose
+// offset depended on the direction of approach for 5 % of its rms; nothing is to be named.
+TEST(DiagnoseIndependentRig, LevelsReachedFromOneDirectionShowNoLoop) {
+  const fs::path csv = independent_recording("random30_none", "--random 40 --seed 6");
+  const auto d = rheomag::test::run_diagnosis(rheomag::lumped::read_recording(csv.string()));
+  rheomag::test::print_findings(d);
+  EXPECT_TRUE(d.findings.empty());
+  fs::remove_all(csv.parent_path());
+}
+
 }  // namespace
