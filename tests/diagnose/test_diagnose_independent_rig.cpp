@@ -31,6 +31,16 @@ fs::path independent_recording(const std::string& name, const std::string& optio
   return dir / (name + ".csv");
 }
 
+/// Diagnoses the independent simulator's recording `name` (`options` as for
+/// independent_recording) and expects nothing named.
+void expect_nothing_named(const std::string& name, const std::string& options) {
+  const fs::path csv = independent_recording(name, options);
+  const auto d = rheomag::test::run_diagnosis(rheomag::lumped::read_recording(csv.string()));
+  rheomag::test::print_findings(d);
+  EXPECT_TRUE(d.findings.empty());
+  fs::remove_all(csv.parent_path());
+}
+
 // An air pocket of 4e-7 m^3 (2e-7 per chamber) behind a slit valve whose shape the baseline's
 // Bingham line cannot follow (97 % of the final residual is that shape). A first-order field lag
 // of 1.4 ms with the output delay moved to 2 samples ahead of the drives (one sample = 1 ms) fits
@@ -73,23 +83,15 @@ TEST(DiagnoseIndependentRig, SlitValveKneeLeavesTheFieldLagAlone) {
 // A random draw with nothing concealed (seed 7, draw 30): the bypass behind a slit valve.
 // Without the knee the baseline named a 2.3e7 Pa s^2/m^3 fluid inertia; nothing is to be named.
 TEST(DiagnoseIndependentRig, SlitValveWithNothingConcealedNamesNothing) {
-  const fs::path csv = independent_recording("random30_none", "--random 40 --seed 7");
-  const auto d = rheomag::test::run_diagnosis(rheomag::lumped::read_recording(csv.string()));
-  rheomag::test::print_findings(d);
-  EXPECT_TRUE(d.findings.empty());
-  fs::remove_all(csv.parent_path());
+  expect_nothing_named("random30_none", "--random 40 --seed 7");
 }
 
 // A random draw with nothing concealed (seed 6, draw 30): a clean bypass whose current levels
 // are each reached from one direction (0.26 and 0.34 A from below, 0.10 A from above) through
-// steps that rise within about a sample. The previous build named a Duhem loop of half width 0.013 A whose
-// offset depended on the direction of approach for 5 % of its rms; nothing is to be named.
+// steps that rise within about a sample. The previous build named a Duhem loop of half width 0.013
+// A whose offset depended on the direction of approach for 5 % of its rms; nothing is to be named.
 TEST(DiagnoseIndependentRig, LevelsReachedFromOneDirectionShowNoLoop) {
-  const fs::path csv = independent_recording("random30_none", "--random 40 --seed 6");
-  const auto d = rheomag::test::run_diagnosis(rheomag::lumped::read_recording(csv.string()));
-  rheomag::test::print_findings(d);
-  EXPECT_TRUE(d.findings.empty());
-  fs::remove_all(csv.parent_path());
+  expect_nothing_named("random30_none", "--random 40 --seed 6");
 }
 
 }  // namespace
