@@ -103,7 +103,7 @@ DiagnosisModel::DiagnosisModel(const lumped::Recording& rec, const ModelBaseline
                            : "sidecar [coil] resistance (no effect: the current is imposed)");
   }
   // Everything the sidecar states is in the baseline: a stated inductance makes the coil an
-  // L-R circuit, and coil_inductance is then no longer a candidate.
+  // L-R circuit, and coil_inductance is then the inductance beyond it.
   base_.coil.inductance = 0.0;
   if (meta.coil.inductance && *meta.coil.inductance > 0.0) {
     if (voltage_driven) base_.coil.inductance = *meta.coil.inductance;

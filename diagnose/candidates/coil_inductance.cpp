@@ -1,5 +1,5 @@
 // The coil_inductance candidate: the coil's inductance, an L/R lag of the current behind a
-// voltage drive.
+// voltage drive; where the sidecar states an inductance, the inductance beyond it.
 
 #include <sstream>
 
@@ -17,11 +17,15 @@ class CoilInductance final : public Candidate {
   std::string name() const override { return "coil_inductance"; }
 
   bool applies(const DiagnosisModel& model) const override {
-    // A stated inductance is in the baseline already.
+    // A stated inductance is in the baseline already; an inductance beyond it is in series with
+    // it, one L/R lag of the summed inductance, which a field lag behind the stated coil's lag
+    // (two lags in series) is not.
     const bool stated = model.baseline().coil.inductance > 0.0;
     if (!model.fitted_baseline())
-      return model.baseline().driver_mode == lumped::DriverMode::voltage && !stated;
-    // On a fitted model: the coil's L/R lag of a voltage field input (its resistance stated).
+      return model.baseline().driver_mode == lumped::DriverMode::voltage;
+    // On a fitted model: the coil's L/R lag of a voltage field input (its resistance stated). A
+    // model fitted to a coil with a stated inductance holds that coil's lag in its own response,
+    // so an inductance beyond it would be one more lag of the field input: a field lag.
     const std::string& field = model.field_column();
     return !field.empty() && !model.constant_field() && field != "current" &&
            field != "current_cmd" && model.recording().meta.coil.resistance && !stated;
@@ -33,7 +37,7 @@ class CoilInductance final : public Candidate {
 
   void switch_on(lumped::RigSpec& spec, ParamReader& values,
                  const DiagnosisModel& /*model*/) const override {
-    spec.coil.inductance = values.next();
+    spec.coil.inductance += values.next();  // beyond the stated inductance (0 if none)
   }
 
   bool composes_with_fitted_model() const override { return true; }
@@ -51,11 +55,16 @@ class CoilInductance final : public Candidate {
     double resistance = fit_value(fit, "coil_resistance");
     for (const BaselineItem& item : d.includes)
       if (resistance <= 0.0 && item.name == "coil_resistance") resistance = item.value;
-    const double inductance = fit_value(fit, "inductance");
+    double stated = 0.0;
+    for (const BaselineItem& item : d.includes)
+      if (item.name == "coil_inductance") stated = item.value;
+    const double inductance = fit_value(fit, "inductance"), total = stated + inductance;
     o << "the response lags the coil voltage at its edges (output "
       << fmt(1e3 * d.baseline_stats.output_lag) << " ms behind the baseline); an inductance of "
       << fmt(inductance) << " H";
-    if (resistance > 0.0) o << " (L/R = " << fmt(1e3 * inductance / resistance) << " ms)";
+    if (stated > 0.0)
+      o << " beyond the stated " << fmt(stated) << " H (" << fmt(total) << " H in all)";
+    if (resistance > 0.0) o << " (L/R = " << fmt(1e3 * total / resistance) << " ms)";
     o << " explains it";
     return o.str();
   }
