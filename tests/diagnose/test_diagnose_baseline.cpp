@@ -25,7 +25,12 @@ using rheomag::test::make_recording;
 void print(const Diagnosis& d, double ceiling) {
   std::cout << rheomag::diagnose::diagnosis_json(d)["baseline"].dump(1) << "\nfinal FIT "
             << d.final_fit_percent << ", ceiling " << ceiling << "\n";
-  for (const auto& f : d.findings) std::cout << "  named " << f.effect->name() << "\n";
+  for (const auto& f : d.findings) {
+    std::cout << "  named " << f.effect->name();
+    for (std::size_t j = 0; j < f.params.size(); ++j)
+      std::cout << " " << f.param_names[j] << " " << f.params[j];
+    std::cout << "\n";
+  }
   for (const auto& n : d.notes) std::cout << "  note: " << n << "\n";
 }
 
@@ -51,20 +56,27 @@ rheomag::test::VirtualRecording skewed_recording(double duration, double rate,
   return v;
 }
 
-// A stated coil inductance (0.5 H on a voltage-driven pump coil, L/R = 56 ms) is part of the
-// baseline: nothing is missing, and the report lists it.
-TEST(DiagnoseBaseline, StatedInductanceIsNotMissing) {
-  auto truth = bypass_rig();
+/// 1.6 s of the voltage-driven pump (250 Hz, voltage steps every 0.4 s) simulated from `truth`,
+/// with `stated` [H] as the sidecar's [coil] inductance.
+rheomag::test::VirtualRecording stated_coil_pump(rheomag::lumped::RigSpec truth, double stated) {
   truth.kind = RigKind::constant_velocity_pump;
   truth.driver_mode = DriverMode::voltage;
   truth.voltage_column = "voltage";
-  truth.coil.inductance = 0.5;
   auto v = make_recording(
       truth,
       drive(1.6, 250.0,
             {"velocity=constant:value=0.01", "voltage=steps:levels=0/8.9/4.45,period=0.4"}),
       3e4);
-  v.noisy.meta.coil.inductance = 0.5;  // the sidecar states it
+  v.noisy.meta.coil.inductance = stated;
+  return v;
+}
+
+// A stated coil inductance (0.5 H on a voltage-driven pump coil, L/R = 56 ms) is part of the
+// baseline: nothing is missing, and the report lists it.
+TEST(DiagnoseBaseline, StatedInductanceIsNotMissing) {
+  auto truth = bypass_rig();
+  truth.coil.inductance = 0.5;
+  const auto v = stated_coil_pump(truth, 0.5);  // the sidecar states it
   const auto d = rheomag::test::run_diagnosis(v.noisy);
   print(d, v.noise_ceiling);
   EXPECT_TRUE(d.findings.empty());
@@ -73,6 +85,39 @@ TEST(DiagnoseBaseline, StatedInductanceIsNotMissing) {
   ASSERT_NE(it, d.includes.end());
   EXPECT_EQ(it->value, 0.5);
   EXPECT_NEAR(d.final_fit_percent, v.noise_ceiling, 2.0);
+}
+
+// A coil whose inductance is larger than the sidecar states (0.5 H against a stated 0.1 H;
+// L/R 56 ms against 11 ms): the inductance beyond the stated one is named, coil_inductance with
+// 0.4 H within 10 % (reference: the truth's 0.5 - 0.1 H), and the final FIT within 2 points of
+// the noise ceiling. The stated coil's lag and a field lag behind it would be two lags in series;
+// one lag of the summed inductance is what the truth has.
+TEST(DiagnoseBaseline, AnInductanceBeyondTheStatedOneIsNamed) {
+  auto truth = bypass_rig();
+  truth.coil.inductance = 0.5;
+  const auto v = stated_coil_pump(truth, 0.1);
+  const auto d = rheomag::test::run_diagnosis(v.noisy);
+  print(d, v.noise_ceiling);
+  ASSERT_EQ(d.findings.size(), 1u);
+  EXPECT_EQ(d.findings.front().effect->name(), "coil_inductance");
+  EXPECT_NEAR(d.findings.front().params.at(0), 0.4, 0.04);
+  EXPECT_NEAR(d.final_fit_percent, v.noise_ceiling, 2.0);
+}
+
+// The converse: the stated inductance is right (0.1 H) and a 40 ms MR response lags the field
+// behind it. A field lag is named (mr_response_time, or eddy_currents, its twin), not an
+// inductance beyond the stated one, and the lag within 15 % of the truth's 40 ms.
+TEST(DiagnoseBaseline, AFieldLagBehindAStatedCoilIsNotAnInductance) {
+  auto truth = bypass_rig();
+  truth.coil.inductance = 0.1;
+  truth.mr_response_time = 0.04;
+  const auto v = stated_coil_pump(truth, 0.1);
+  const auto d = rheomag::test::run_diagnosis(v.noisy);
+  print(d, v.noise_ceiling);
+  ASSERT_EQ(d.findings.size(), 1u);
+  const std::string named = d.findings.front().effect->name();
+  EXPECT_TRUE(named == "mr_response_time" || named == "eddy_currents") << named;
+  EXPECT_NEAR(d.findings.front().params.at(0), 0.04, 0.006);
 }
 
 // The output channel read 0.8 samples after the drive channels (2.7 ms at 300 Hz): a clean
