@@ -87,10 +87,6 @@ std::string rejection(const DiagnosisModel& model, const ModelFit& current, cons
   return "";
 }
 
-namespace {
-
-/// `fit` with its effect i moved to the end of the layout (Candidate::implausible reads the
-/// effect it judges as the last one).
 ModelFit with_effect_last(const DiagnosisModel& model, const ModelFit& fit, std::size_t i) {
   std::size_t offset = model.static_params().size();
   for (std::size_t j = 0; j < i; ++j) offset += fit.effects[j]->params(model).size();
@@ -107,8 +103,6 @@ ModelFit with_effect_last(const DiagnosisModel& model, const ModelFit& fit, std:
               last.effects.begin() + static_cast<std::ptrdiff_t>(i) + 1, last.effects.end());
   return last;
 }
-
-}  // namespace
 
 void drop_faded_findings(const DiagnosisModel& model, ModelFit& fit, const Evidence& evidence,
                          const DiagnoseOptions& options, Diagnosis& d) {

@@ -31,6 +31,10 @@ std::string rejection(const DiagnosisModel& model, const ModelFit& current, cons
 void drop_faded_findings(const DiagnosisModel& model, ModelFit& fit, const Evidence& evidence,
                          const DiagnoseOptions& options, Diagnosis& d);
 
+/// `fit` with its effect i moved to the end of the layout (Candidate::implausible reads the
+/// effect it judges as the last one).
+ModelFit with_effect_last(const DiagnosisModel& model, const ModelFit& fit, std::size_t i);
+
 /// Relative standard error of the size parameter (the first) of the last effect of `fit`, on the
 /// samples of `mask` (all when empty).
 double size_relative_se(const DiagnosisModel& model, const ModelFit& fit, int threads,

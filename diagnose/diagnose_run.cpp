@@ -19,6 +19,7 @@
 #include "diagnose/diagnose_nuisances.hpp"
 #include "diagnose/diagnose_rejection.hpp"
 #include "diagnose/diagnose_selection.hpp"
+#include "diagnose/diagnose_ties.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording_excerpt.hpp"
 
@@ -220,7 +221,7 @@ Diagnosis diagnose(const lumped::Recording& recording, const DiagnoseOptions& op
 
   // Re-fit all accepted effects together, with the nuisances free again (they were held while
   // the candidates were compared); where that does not improve, keep the last forward step's fit
-  // (with its standard errors).
+  // (with its standard errors). Then each tie of the selection is decided again in that model.
   if (!d.findings.empty()) {
     FitSettings final_settings;
     final_settings.max_iterations = 2 * options.max_iterations;
@@ -231,6 +232,8 @@ Diagnosis diagnose(const lumped::Recording& recording, const DiagnoseOptions& op
       refit = fit_model(model, current.effects, current.values, final_settings);
     }
     current = std::move(refit);
+    final_settings.max_iterations = 2 * options.max_iterations;
+    revisit_ties(model, current, final_settings, options.bic_margin, d);
     drop_faded_findings(model, current, evidence, options, d);
   }
   clock.stage("joint re-fit");
