@@ -219,7 +219,7 @@ lumped::RigSpec read_rig(const toml::table& doc, const std::string& file) {
     lumped::ChamberBlock c;
     c.oil_volume = e.positive("chamber_volume", c.oil_volume);
     c.bulk_modulus = e.positive("bulk_modulus", c.bulk_modulus);
-    c.air_volume = e.number("air_volume", 0.0, 0.0) / 2.0;  // total air split over the chambers
+    c.air_volume = e.number("air_volume", 0.0, 0.0) / lumped::kRigChambers;  // total, split
     c.precharge = e.positive("precharge", c.precharge);
     const std::string process = e.text("air_process", "isothermal");
     if (process == "isothermal")

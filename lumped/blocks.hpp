@@ -130,6 +130,9 @@ struct ValveMapBlock {
   double flow(double pressure_drop, double current, double viscous_factor = 1.0) const;
 };
 
+/// Chambers of a rig's hydraulic loop, one either side of the valve, each a ChamberBlock.
+constexpr double kRigChambers = 2.0;
+
 /// Chamber compliance: oil volume with bulk modulus plus entrained air (isothermal or adiabatic).
 struct ChamberBlock {
   double oil_volume = 2e-5;     ///< [m^3] per chamber

@@ -6,6 +6,7 @@
 #include "diagnose/candidate.hpp"
 #include "diagnose/diagnose_run.hpp"
 #include "diagnose/diagnose_text.hpp"
+#include "lumped/blocks.hpp"
 
 namespace rheomag::diagnose::candidates {
 
@@ -39,8 +40,9 @@ class Compressibility final : public Candidate {
     o << "the output lags the baseline by " << fmt(1e3 * d.baseline_stats.output_lag) << " ms; "
       << fmt(100 * regime_share(d.mismatch, "flow reversal"), 2)
       << " % of the residual energy sits at flow reversals, where a chamber with "
-      << fmt(fit_value(fit, "air_volume")) << " m^3 of air per chamber must be compressed before "
-      << "pressure can build";
+      << fmt(fit_value(fit, "air_volume")) << " m^3 of air per chamber ("
+      << fmt(lumped::kRigChambers * fit_value(fit, "air_volume"))
+      << " m^3 in both) must be compressed before pressure can build";
     return o.str();
   }
 
@@ -58,8 +60,11 @@ class Compressibility final : public Candidate {
   std::vector<DerivedParam> derived_params(const DiagnosisModel& /*model*/,
                                            const std::vector<double>& params) const override {
     if (params.empty()) return {};
-    return {{"hydraulic_capacitance", params[0] / 1e5,
-             "m^3/Pa"}};  // isothermal air at the 1e5 Pa precharge
+    // The rig's loop has two chambers, each with this air: a rig spec (`air_volume`, split over
+    // the chambers) or another tool states the total. The capacitance is one chamber's,
+    // isothermal air at the 1e5 Pa precharge.
+    return {{"total_air_volume", lumped::kRigChambers * params[0], "m^3"},
+            {"hydraulic_capacitance", params[0] / 1e5, "m^3/Pa"}};
   }
 
   bool uses_chamber_volume() const override { return true; }
