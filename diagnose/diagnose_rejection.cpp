@@ -23,6 +23,30 @@ double output_delay_off_convention(const DiagnosisModel& model, const ModelFit& 
   return 0.0;
 }
 
+/// Why the lag that `effect`, the last effect of `fit`, adds is not told apart from the
+/// recording's timing, continuing a sentence that names it ("" when it is, or adds no lag).
+std::string timing_reason(const DiagnosisModel& model, const ModelFit& fit,
+                          const Candidate* effect) {
+  const double tau = effect->timing_lag(model, fit);
+  if (!(tau > 0.0)) return "";
+  const std::string sample = fmt(1e3 * model.sample_interval());
+  // A time constant shorter than one sample interval cannot be told from the recording's own
+  // timing (channel skew, held drives), which the delay nuisance already absorbs.
+  if (tau < model.sample_interval())
+    return " with a time constant of " + fmt(1e3 * tau) +
+           " ms, shorter than one sample interval (" + sample +
+           " ms): not told apart from the recording's timing; not accepted";
+  // A lag the output delay takes back: with the delay leading the output by about the lag, the
+  // two shift the output by under one sample and act as a smoothing of it, not as a lag.
+  if (const double lead = -output_delay_off_convention(model, fit);
+      tau - lead < model.sample_interval())
+    return " with a time constant of " + fmt(1e3 * tau) + " ms and the output delay " +
+           fmt(1e3 * lead) + " ms ahead of the drives: together they shift the output by under " +
+           "one sample interval (" + sample +
+           " ms), a smoothing of the recording's timing and not a lag; not accepted";
+  return "";
+}
+
 }  // namespace
 
 std::string rejection(const DiagnosisModel& model, const ModelFit& current, const ModelFit& fit,
@@ -58,21 +82,9 @@ std::string rejection(const DiagnosisModel& model, const ModelFit& current, cons
            " noise standard deviations in rms (at least " + fmt(options.min_noise_multiple, 2) +
            " needed): below the noise, not accepted";
   }
-  // A time constant shorter than one sample interval cannot be told from the recording's own
-  // timing (channel skew, held drives), which the delay nuisance already absorbs.
-  const double tau = effect->timing_lag(model, fit);
-  if (tau > 0.0 && tau < model.sample_interval())
-    return head + " with a time constant of " + fmt(1e3 * tau) +
-           " ms, shorter than one sample interval (" + fmt(1e3 * model.sample_interval()) +
-           " ms): not told apart from the recording's timing; not accepted";
-  // A lag the output delay takes back: with the delay leading the output by about the lag, the
-  // two shift the output by under one sample and act as a smoothing of it, not as a lag.
-  if (const double lead = -output_delay_off_convention(model, fit);
-      tau > 0.0 && tau - lead < model.sample_interval())
-    return head + " with a time constant of " + fmt(1e3 * tau) + " ms and the output delay " +
-           fmt(1e3 * lead) + " ms ahead of the drives: together they shift the output by under " +
-           "one sample interval (" + fmt(1e3 * model.sample_interval()) +
-           " ms), a smoothing of the recording's timing and not a lag; not accepted";
+  // A lag that the recording's timing could make (shorter than a sample, or taken back by the
+  // output delay).
+  if (auto why = timing_reason(model, fit, effect); !why.empty()) return head + why;
   // What the candidate itself finds implausible (e.g. a hysteresis loop inside the noise).
   if (auto why = effect->implausible(model, fit); !why.empty()) return head + why;
   // Identifiability: the effect's size parameter known to a relative standard error below
@@ -111,9 +123,12 @@ void drop_faded_findings(const DiagnosisModel& model, ModelFit& fit, const Evide
     dropped = false;
     for (std::size_t i = 0; i < fit.effects.size(); ++i) {
       const Candidate* e = fit.effects[i];
-      // What the candidate finds implausible in its jointly re-fitted parameters (e.g. a loop
-      // that the re-fit closed to the top of its reversible range).
-      const std::string why = e->implausible(model, with_effect_last(model, fit, i));
+      // What speaks against it in its jointly re-fitted parameters: a lag the re-fitted output
+      // delay takes back, or what the candidate finds implausible (e.g. a loop that the re-fit
+      // closed to the top of its reversible range).
+      const ModelFit last = with_effect_last(model, fit, i);
+      std::string why = timing_reason(model, last, e);
+      if (why.empty()) why = e->implausible(model, last);
       const auto [without, sse_off] = sse_switched_off(model, fit, i, evidence);
       if (!std::isfinite(sse_off.all)) continue;
       if (why.empty()) {

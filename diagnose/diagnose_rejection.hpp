@@ -27,7 +27,8 @@ std::string rejection(const DiagnosisModel& model, const ModelFit& current, cons
 /// noise floor or less than `min_noise_multiple` noise deviations in rms. A finding accepted
 /// beside another can fade in the joint re-fit (a Coulomb force that ends at a few newtons
 /// once a compliance and the static map are re-fitted with it); it is then not reported. So is a
-/// finding whose re-fitted parameters its candidate finds implausible (Candidate::implausible).
+/// finding whose re-fitted parameters its candidate finds implausible (Candidate::implausible),
+/// or whose lag the re-fitted output delay takes back (the timing rules of `rejection`).
 void drop_faded_findings(const DiagnosisModel& model, ModelFit& fit, const Evidence& evidence,
                          const DiagnoseOptions& options, Diagnosis& d);
 
