@@ -185,6 +185,9 @@ GreyboxFit read_greybox(const Field& root, const std::string& model) {
   fit.setup.settings.output_scale = s.at("output_scale").number(Domain::non_negative());
   // The highest fitted field level (damper; absent in files written before it: no limit).
   if (s.has("field_high")) fit.setup.settings.field_high = s.at("field_high").number();
+  // The offset's level at rest for tared recordings (absent in files written before it, or where
+  // no training recording was tared: the offset does not reach a tared output).
+  if (s.has("rest_reference")) fit.setup.settings.rest_reference = s.at("rest_reference").number();
   const Field list = root.at("parameters");
   fit.params = read_parameters(list);
   const std::vector<lumped::PhenoParam>& expected = lumped::pheno_params(fit.setup.kind);
@@ -302,6 +305,8 @@ json fit_model_json(const GreyboxFit& fit, const lumped::RecordingMeta& meta) {
                   {"output_scale", fit.setup.settings.output_scale}}}};
   if (std::isfinite(fit.setup.settings.field_high))
     j["setup"]["settings"]["field_high"] = fit.setup.settings.field_high;
+  if (std::isfinite(fit.setup.settings.rest_reference))
+    j["setup"]["settings"]["rest_reference"] = fit.setup.settings.rest_reference;
   put_parameters(j, fit.params);
   if (fit.inertance_gain) {
     const int k = lumped::pheno_param_index(fit.setup.kind, "inertance");

@@ -386,6 +386,30 @@ void hold_unseen_inertance(const FitData& data, ParamGuess guess, const GreyboxO
   fit = std::move(held);
 }
 
+/// Where training series are tared at their rest, sets the offset's reference
+/// (PhenoSettings::rest_reference) to their mean level at rest and starts the offset there: the
+/// start is the plain tare, and the fit moves the level in motion away from it where the model
+/// asks. NaN where no series is tared.
+void set_rest_reference(const FitData& data, lumped::GreyboxSetup& setup, ParamGuess& guess) {
+  double sum = 0.0;
+  std::size_t tared = 0;
+  for (std::size_t r = 0; r < data.series.size(); ++r) {
+    const lumped::DriveSeries& s = data.series[r];
+    if (s.mean_removed || s.rest_samples == 0 || data.ranges[r].begin != 0 ||
+        data.ranges[r].end <= s.rest_samples)
+      continue;
+    sum += s.rest_level;
+    ++tared;
+  }
+  setup.settings.rest_reference = std::numeric_limits<double>::quiet_NaN();
+  const int k = lumped::pheno_param_index(setup.kind, "offset");
+  if (tared == 0 || k < 0) return;
+  const double reference = setup.orientation * sum / static_cast<double>(tared);
+  setup.settings.rest_reference = reference;
+  const auto i = static_cast<std::size_t>(k);
+  guess.nominal[i] = std::clamp(reference, guess.lower[i], guess.upper[i]);
+}
+
 /// Fits `fit.setup` (kind and columns set) to `data`: orientation, regularisation widths, guess,
 /// multi-start Ceres fit; fills fit.params and the start counters. `where` names the data.
 void fit_data(const FitData& data, const GreyboxOptions& options, const std::string& where,
@@ -415,6 +439,7 @@ void fit_data(const FitData& data, const GreyboxOptions& options, const std::str
                      " values; expected one per parameter (" + std::to_string(n_params) + ")");
   ParamGuess guess = initial_guess(kind, all, range, fit.setup.orientation,
                                    !fit.setup.field_column.empty(), periodic);
+  set_rest_reference(data, fit.setup, guess);
   apply_holds(kind, fit.model, options.held, where, guess);
   if (!checks_inertance(kind, options)) {
     run_model_fit(data, guess, options, fit);
@@ -441,17 +466,14 @@ std::vector<double> param_values(const GreyboxFit& fit) {
 }
 
 /// Where every training series is fitted whole and compared without its level (its output's mean
-/// removed, or tared at its leading rest), the offset is not identified by the fit and its value
-/// is whatever the optimiser left. Sets it so that the model's raw output has the recordings' own
-/// level: zero mean over a mean-removed series, the measured level over a tared series' rest (a
+/// removed), the offset is not identified by the fit and its value is whatever the optimiser
+/// left. Sets it so that the model's raw output has zero mean over the recordings, as they do (a
 /// model saved and run elsewhere then keeps their level); nothing any comparison with these
-/// recordings sees changes.
+/// recordings sees changes. (A tared series sees the offset through PhenoSettings::rest_reference.)
 void centre_unidentified_offset(const FitData& data, GreyboxFit& fit, double max_substep) {
   for (std::size_t r = 0; r < data.series.size(); ++r) {
     const lumped::DriveSeries& s = data.series[r];
-    if (!(s.mean_removed || s.rest_samples > 0) || data.ranges[r].begin != 0 ||
-        data.ranges[r].end != s.t.size())
-      return;
+    if (!s.mean_removed || data.ranges[r].begin != 0 || data.ranges[r].end != s.t.size()) return;
   }
   const int k = lumped::pheno_param_index(fit.setup.kind, "offset");
   if (k < 0 || fit.params[static_cast<std::size_t>(k)].fixed) return;
@@ -463,11 +485,9 @@ void centre_unidentified_offset(const FitData& data, GreyboxFit& fit, double max
     raw.rest_samples = 0;
     const std::vector<double> y =
         lumped::simulate_for_report(raw, fit.setup, param_values(fit), max_substep);
-    const std::size_t n = series.mean_removed ? y.size() : series.rest_samples;
-    const double level =
-        std::accumulate(y.begin(), y.begin() + static_cast<std::ptrdiff_t>(n), 0.0) /
-        static_cast<double>(n);
-    shift += static_cast<double>(n) * ((series.mean_removed ? 0.0 : series.rest_level) - level);
+    const std::size_t n = y.size();
+    const double level = std::accumulate(y.begin(), y.end(), 0.0) / static_cast<double>(n);
+    shift -= static_cast<double>(n) * level;
     weight += static_cast<double>(n);
   }
   // The output is orientation x (model + offset): shifting the offset by shift/orientation moves

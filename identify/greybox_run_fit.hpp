@@ -53,7 +53,7 @@ struct FitResidual {
     if (!lumped::simulate_rk4(kind, p.data(), *d, settings, range.begin, range.end, max_substep,
                               yhat.data()))
       return false;
-    lumped::process_output(kind, p.data(), *d, range, yhat.data());
+    lumped::process_output(kind, p.data(), *d, settings, orientation, false, range, yhat.data());
     for (std::size_t i = 0; i < range.size(); ++i)
       residual[i] = (yhat[i] - orientation * d->y[range.begin + i]) / y_scale;
     return true;

@@ -80,7 +80,7 @@ void remove_mean(T* y, std::size_t n) {
 
 /// Shifts y[0..n) so that its mean over the first `rest` samples is `level` (a tare; rest <= n).
 template <class T>
-void tare(T* y, std::size_t n, std::size_t rest, double level) {
+void tare(T* y, std::size_t n, std::size_t rest, T level) {
   if (rest == 0 || rest > n) return;
   T sum = T(0.0);
   for (std::size_t i = 0; i < rest; ++i) sum += y[i];

@@ -39,16 +39,25 @@ double stiffest_rate(PhenoKind kind, const T* p, const PhenoDrive& d, const Phen
 /// output_smoothing (the model's last parameter) times the drive's period (nothing without a
 /// periodic drive), then, if the recording's output had its mean removed and `range` is the whole
 /// recording, the output's own mean removed; or, if the recording starts at rest and `range` starts
-/// with it, the output tared to the recording's level at rest (DriveSeries::rest_samples).
+/// with it, the output tared to the recording's level at rest (DriveSeries::rest_samples) plus
+/// orientation (offset - PhenoSettings::rest_reference) where that is set. `out` holds the model
+/// times `orientation` if `oriented`, else the model itself (compared with orientation x output).
 template <class T>
-void process_output(PhenoKind kind, const T* p, const DriveSeries& d, SampleRange range, T* out) {
+void process_output(PhenoKind kind, const T* p, const DriveSeries& d, const PhenoSettings& s,
+                    double orientation, bool oriented, SampleRange range, T* out) {
   if (d.period > 0.0)
     centred_boxcar(&d.t[range.begin], range.size(), T(p[pheno_smoothing_index(kind)] * d.period),
                    out);
-  if (d.mean_removed && range.begin == 0 && range.end == d.t.size())
+  if (d.mean_removed && range.begin == 0 && range.end == d.t.size()) {
     remove_mean(out, range.size());
-  else if (d.rest_samples > 0 && range.begin == 0 && range.end > d.rest_samples)
-    tare(out, range.size(), d.rest_samples, d.rest_level);
+  } else if (d.rest_samples > 0 && range.begin == 0 && range.end > d.rest_samples) {
+    // The level wanted over the rest, in the model's orientation.
+    T level = T(orientation * d.rest_level);
+    if (const int k = pheno_param_index(kind, "offset"); k >= 0 && std::isfinite(s.rest_reference))
+      level += p[k] - s.rest_reference;
+    if (oriented) level *= orientation;
+    tare(out, range.size(), d.rest_samples, level);
+  }
 }
 
 /// Models integrated by their own stiff-stable exponential step (damper_step, bouc_wen_step).

@@ -155,7 +155,8 @@ std::vector<double> simulate_for_report(const DriveSeries& d, const GreyboxSetup
       y = fixed_step(max_substep);
     }
   }
-  process_output(setup.kind, params.data(), d, SampleRange{0, d.t.size()}, y.data());
+  process_output(setup.kind, params.data(), d, setup.settings, setup.orientation, true,
+                 SampleRange{0, d.t.size()}, y.data());
   return y;
 }
 

@@ -54,6 +54,12 @@ struct PhenoSettings {
   /// quadratic's curvature is identified between the levels only. Infinite (no limit) during a
   /// fit and in files written before it.
   double field_high = std::numeric_limits<double>::infinity();
+  /// [Y, model orientation] The offset at which a tared recording (DriveSeries::rest_samples) has
+  /// in motion the level its rest gives: the training recordings' mean level at rest. A tared
+  /// output is shifted by the offset's difference from it, so the level in motion relative to the
+  /// rest is fitted (a model without the device's static forces, e.g. no gas spring, needs it).
+  /// NaN: the offset does not reach a tared output (the tare of model files written before).
+  double rest_reference = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Parses "bingham" | "lugre" | "bouc-wen" | "maxwell" | "dahl" | "bi-viscous" | "tanh" |

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "identify/current_dependent_fit.hpp"
+#include "lumped/phenomenological.hpp"
 #include "lumped/recording_io.hpp"
 
 using namespace rheomag::identify;
@@ -83,4 +84,40 @@ TEST(ShakingTableFamily, HalfTheTestsAtFourLevelsPredictTheOtherHalf) {
       EXPECT_FALSE(p.fixed);
     }
   }
+}
+
+// Reference: the recordings themselves (held-out tests). A LuGre model has no gas spring, and this
+// table's displacement runs from 0 to about 20 mm, so in motion the damper's force sits a gas
+// spring's mean (about 4 500 N/m x 10 mm) above its level at rest. The tare used to pin the model's
+// level in motion to the rest's: the 0 V tests, where that mean is a large part of the force, were
+// predicted at 45.6-51.6 % (median of all 19: 76.4 %; measured 2026-12-06 on the previous build).
+// The offset now sets the level in motion relative to the rest (PhenoSettings::rest_reference):
+// 0 V 77.6-82.8 %, median 81.4 %, the offset 39 N above the rests' level. Tolerances: a few
+// points under the measured values; the previous build fails every one of them.
+TEST(ShakingTableFamily, AModelWithoutAGasSpringKeepsItsLevelInMotion) {
+  const std::vector<Recording> training =
+      read({"0V_test1_1", "0V_test3_1", "0V_test5_1", "0V_test7_1", "0V_test9_1", "0x87V_test1_2",
+            "0x87V_test3_2", "0x87V_test5_2", "0x87V_test7_2", "0x87V_test9_2", "1x98V_test_B_1",
+            "1x98V_test_B_5", "1x98V_test_B_7", "1x98V_test_B_9", "3x21V_test_A_1",
+            "3x21V_test_A_3", "3x21V_test_A_5", "3x21V_test_A_7", "3x21V_test_A_9"});
+  const std::vector<Recording> predicted =
+      read({"0V_test2_1", "0V_test4_1", "0V_test6_1", "0V_test8_1", "0V_test10_1", "0x87V_test2_2",
+            "0x87V_test4_2", "0x87V_test6_2", "0x87V_test8_2", "0x87V_test10_2", "1x98V_test_B_3",
+            "1x98V_test_B_6", "1x98V_test_B_8", "1x98V_test_B_10", "3x21V_test_A_2",
+            "3x21V_test_A_4", "3x21V_test_A_6", "3x21V_test_A_8", "3x21V_test_A_10"});
+  const FamilyFit r = fit_current_dependent(training, "lugre", predicted, FamilyFitOptions{});
+  ASSERT_EQ(r.predicted.size(), predicted.size());
+  std::vector<double> fits;
+  for (const FamilyMember& m : r.predicted) {
+    fits.push_back(m.metrics.fit_percent);
+    if (m.csv_path.find("/0V_") != std::string::npos) {
+      EXPECT_GE(m.metrics.fit_percent, 74.0) << m.csv_path;
+    }
+  }
+  EXPECT_GE(median(fits), 79.0);
+  const auto k = static_cast<std::size_t>(
+      rheomag::lumped::pheno_param_index(rheomag::lumped::PhenoKind::lugre, "offset"));
+  const double above_rest = r.fit.params[k].value - r.fit.setup.settings.rest_reference;
+  EXPECT_GT(above_rest, 25.0);
+  EXPECT_LT(above_rest, 60.0);
 }
