@@ -56,9 +56,10 @@ Recording resting_test(double a, double f, double cycles, double current, double
 // Reference: the truth, with three load-cell zeros (+35, -50 N in training, +80 N predicted).
 // Tared at their 1 s rests, the family fits both training tests and predicts the third at FIT
 // >= 99.5 %. (Without the tare, one shared offset cannot follow the zeros: measured 2026-12-04,
-// training 94.9 / 86.9 %, predicted 85.3 %.) The fit does not see the offset through tared tests,
-// so it is set to the level the recordings show at rest, 20 + (35 - 50) / 2 = 12.5 N (equal
-// rests; tolerance 0.5 N for the rests' 500 vs 501 samples and the fit), and every member reports
+// training 94.9 / 86.9 %, predicted 85.3 %.) The offset sets the level in motion relative to the
+// rests' mean level (PhenoSettings::rest_reference); the model has every force of the truth, so
+// it is that level, 20 + (35 - 50) / 2 = 12.5 N (equal rests; tolerance 0.5 N for the rests' 500
+// vs 501 samples and the fit), and every member reports
 // its tare's length (1 s, to the first moving sample: 0.02 s).
 TEST(RestTare, TestsWithTheirOwnLoadCellZerosAreTaredAtRest) {
   const std::vector<Recording> training = {resting_test(0.02, 0.5, 1.3, 0.0, 35.0),
@@ -100,4 +101,22 @@ TEST(RestTare, ATrainingRangeAfterTheRestIsNotTaredInTheReport) {
   options.train.reset();
   const GreyboxFit whole = fit_greybox(rec, "bingham", options);
   EXPECT_NEAR(whole.tared_rest_seconds, kRest, 0.02);
+}
+
+// Reference: the truth. A force of the opposite sign to the motion (the load cell mounted the other
+// way) is fitted with orientation -1, and the fit compares the model with orientation x force: the
+// tare's level must be taken in that orientation too. (Before 2026-12-06 the fit tared the model to
+// the recording's level itself, the rest's sign flipped, while the report tared it right.) A
+// single test fitted whole, tared at its rest: FIT >= 99.5 %, the model's level at rest the
+// recording's (-(20 + 35) N) within 0.5 N.
+TEST(RestTare, AForceOfTheOppositeSignIsTaredInItsOrientation) {
+  Recording rec = resting_test(0.02, 0.5, 2.3, 0.5, 35.0);
+  for (double& y : rec.columns["force"]) y = -y;
+  GreyboxOptions options;
+  options.starts = 2;
+  const GreyboxFit fit = fit_greybox(rec, "bingham", options);
+  EXPECT_EQ(fit.setup.orientation, -1.0);
+  EXPECT_NEAR(fit.tared_rest_seconds, kRest, 0.02);
+  EXPECT_GE(fit.train.fit_percent, 99.5);
+  EXPECT_NEAR(fit.simulated.front(), -55.0, 0.5);
 }
