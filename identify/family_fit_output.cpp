@@ -210,6 +210,13 @@ void write_family_fit_text(const FamilyFit& r, std::size_t recordings, int decim
     out << format_text(" %s%s\n", p.unit.c_str(),
                        remark.empty() ? "" : (" (" + remark + ")").c_str());
   }
+  if (const std::optional<double> above = level_in_motion_above_rest(r.fit))
+    for (const auto& p : r.fit.params)
+      if (p.name == "offset")
+        out << format_text(
+            "tared recordings: in motion the model's level is %.4g %s above their rest's (the "
+            "offset less their mean level at rest)\n",
+            *above, p.unit.c_str());
   print_members(out, "training recordings:", r.training);
   if (!r.predicted.empty()) {
     print_members(out, "predicted recordings:", r.predicted);

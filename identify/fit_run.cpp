@@ -161,6 +161,9 @@ FitReport fit_grey_box_model(const FitRequest& o, const Recording& rec, const Sa
   report.fitted = fit_model_json(fit, rec.meta);
   put_operating_range(report, drive_columns(fit), rec, train, val);
   report.tared_at_rest_s = fit.tared_rest_seconds;
+  if (const std::optional<double> above = level_in_motion_above_rest(fit))
+    for (const FittedParameter& p : fit.params)
+      if (p.name == "offset") report.level_above_rest = std::make_pair(*above, p.unit);
   if (val.other) {  // simulate_greybox tares a validation recording at its own rest
     const lumped::GreyboxSetup setup = lumped::greybox_setup_for(*val.other, fit.setup.kind);
     if (const std::size_t rest = lumped::tared_rest(*val.other, setup); rest > 0)
@@ -369,6 +372,9 @@ void write_fit_run_text(const FitRun& run, std::ostream& out) {
   };
   line("train " + range_text(train), r.train, r.train_stability);
   tared(r.tared_at_rest_s);
+  if (r.level_above_rest && r.tared_at_rest_s > 0.0)
+    out << format_text("  (in motion its level is %.4g %s above the rest's: the offset)\n",
+                       r.level_above_rest->first, r.level_above_rest->second.c_str());
   repeatability(run.train_repeatability);
   if (r.validation) {
     line("validation " + (val.range ? range_text(*val.range) : o.validate), *r.validation,

@@ -62,6 +62,9 @@ struct FitReport {
   /// [s] grey-box: the leading rest over which the model's output is tared to the training /
   /// validation recording's level (GreyboxFit::tared_rest_seconds); 0 where it is not tared
   double tared_at_rest_s = 0.0, validation_tared_at_rest_s = 0.0;
+  /// grey-box, tared training: the model's level in motion above its rest's, with the output's
+  /// unit (level_in_motion_above_rest)
+  std::optional<std::pair<double, std::string>> level_above_rest;
   /// grey-box and valve-chain: what of the validation part's drive lies beyond the training
   /// part's (identify/operating_range.hpp)
   std::vector<RangeExcess> validation_beyond;

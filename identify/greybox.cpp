@@ -528,6 +528,14 @@ std::string parameter_remark(const FittedParameter& p) {
   return "";
 }
 
+std::optional<double> level_in_motion_above_rest(const GreyboxFit& fit) {
+  const int k = lumped::pheno_param_index(fit.setup.kind, "offset");
+  const double reference = fit.setup.settings.rest_reference;
+  if (k < 0 || !std::isfinite(reference) || static_cast<std::size_t>(k) >= fit.params.size())
+    return std::nullopt;
+  return fit.setup.orientation * (fit.params[static_cast<std::size_t>(k)].value - reference);
+}
+
 const std::vector<std::string>& greybox_model_names() {
   static const std::vector<std::string> names = {"bingham", "lugre",      "bouc-wen", "maxwell",
                                                  "dahl",    "bi-viscous", "tanh",     "damper"};

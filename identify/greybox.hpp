@@ -106,6 +106,10 @@ struct GreyboxFit {
   Eigen::MatrixXd covariance_between_recordings;
 };
 
+/// Tared training recordings: the model's level in motion above the level at rest, in the output's
+/// unit, orientation x (offset - PhenoSettings::rest_reference); empty where none was tared.
+std::optional<double> level_in_motion_above_rest(const GreyboxFit& fit);
+
 /// Names accepted by fit_greybox: bingham, lugre, bouc-wen, maxwell, dahl, bi-viscous, tanh,
 /// damper.
 const std::vector<std::string>& greybox_model_names();

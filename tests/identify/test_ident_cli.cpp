@@ -264,7 +264,10 @@ TEST(FitHelp, NamesTheModesAndTheDefaults) {
 // Reference: UTFPR's 0 V test 10 (tests/data/labcontrol) lies 2.91 s at rest before it moves
 // (its first sample above 5 % of the motion's rms, at 100 Hz) and test 1 1.80 s: `fit` says that
 // it tares the model's output there, in its text and JSON (tolerance: one sample, 0.01 s), and a
-// fit that trains after the rest is not tared (null).
+// fit that trains after the rest is not tared (null). The model file keeps the rest's level the
+// offset is measured from (`rest_reference`): test 10's mean force over its 291 samples at rest,
+// 103.514 N (numpy on the CSV), and the text says how far above it the level in motion is; a fit
+// after the rest has none.
 TEST(FitCliRest, SaysWhereItTaresTheModelAtRest) {
   const std::string data = std::string(RHEOMAG_TEST_DATA) + "/labcontrol/";
   const std::string rec = data + "0V_test10_1.csv", other = data + "0V_test1_1.csv";
@@ -273,12 +276,17 @@ TEST(FitCliRest, SaysWhereItTaresTheModelAtRest) {
   EXPECT_NE(text.out.find("tared to the recording's level over its first 2.91 s, at rest"),
             std::string::npos)
       << text.out;
+  EXPECT_NE(text.out.find("(in motion its level is "), std::string::npos) << text.out;
   const CliRun whole = run_cli(rec + " --model bingham --quiet --json --validate " + other);
   ASSERT_EQ(whole.code, 0) << whole.err;
   const auto j = nlohmann::json::parse(whole.out);
   EXPECT_NEAR(j["train"]["tared_at_rest_s"].get<double>(), 2.91, 0.01);
   EXPECT_NEAR(j["validation"]["tared_at_rest_s"].get<double>(), 1.80, 0.01);
+  ASSERT_TRUE(j["setup"]["settings"].contains("rest_reference")) << whole.out;
+  EXPECT_NEAR(j["setup"]["settings"]["rest_reference"].get<double>(), 103.514, 1e-3);
   const CliRun after = run_cli(rec + " --model bingham --quiet --json --train 1000:");
   ASSERT_EQ(after.code, 0) << after.err;
-  EXPECT_TRUE(nlohmann::json::parse(after.out)["train"]["tared_at_rest_s"].is_null());
+  const auto a = nlohmann::json::parse(after.out);
+  EXPECT_TRUE(a["train"]["tared_at_rest_s"].is_null());
+  EXPECT_FALSE(a["setup"]["settings"].contains("rest_reference")) << after.out;
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "identify/current_dependent_fit.hpp"
+#include "identify/fit_model_json.hpp"
 #include "identify/greybox.hpp"
 #include "lumped/phenomenological.hpp"
 
@@ -119,4 +120,28 @@ TEST(RestTare, AForceOfTheOppositeSignIsTaredInItsOrientation) {
   EXPECT_NEAR(fit.tared_rest_seconds, kRest, 0.02);
   EXPECT_GE(fit.train.fit_percent, 99.5);
   EXPECT_NEAR(fit.simulated.front(), -55.0, 0.5);
+}
+
+// Reference: the fit itself. A model fitted on a test with a rest, whose level in motion differs
+// from its rest's by more than the model can make (the load cell drifted 40 N as the test
+// started), keeps its rest reference through its model file: read back, it simulates a tared
+// recording exactly as the fit did (bit for bit). Its level in motion is one constant shift from
+// the rest's, so it is the least-squares compromise: 40 N x (moving samples / all samples) below
+// the rest (tolerance 1 N).
+TEST(RestTare, TheLevelInMotionSurvivesTheModelFile) {
+  Recording rec = resting_test(0.02, 0.5, 2.3, 0.5, 35.0);
+  std::vector<double>& force = rec.columns["force"];
+  for (std::size_t k = 0; k < force.size(); ++k)
+    if (rec.t[k] >= kRest) force[k] -= 40.0;
+  GreyboxOptions options;
+  options.starts = 2;
+  const GreyboxFit fit = fit_greybox(rec, "bingham", options);
+  ASSERT_TRUE(level_in_motion_above_rest(fit).has_value());
+  // Least squares over the whole test: -40 N on the moving samples, 0 on the rest's.
+  const double moving = static_cast<double>(rec.t.size()) - kRest / kDt;
+  EXPECT_NEAR(*level_in_motion_above_rest(fit), -40.0 * moving / static_cast<double>(rec.t.size()),
+              1.0);
+  const FitModel back = parse_fit_model_json(fit_model_json(fit, rec.meta).dump(2), "model.json");
+  EXPECT_EQ(simulate_fit_model(rec, back), simulate_greybox(rec, fit));
+  EXPECT_EQ(simulate_greybox(rec, fit), fit.simulated);
 }
