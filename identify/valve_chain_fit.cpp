@@ -16,6 +16,7 @@
 #include "identify/multistart_fit.hpp"
 #include "identify/standard_errors.hpp"
 #include "lumped/ode.hpp"
+#include "lumped/pheno_simulation.hpp"
 
 namespace rheomag::identify {
 
@@ -188,12 +189,6 @@ std::vector<double> simulate_series(const ChainSeries& d, const ValveChainSetup&
   return y;
 }
 
-double rms_of(const std::vector<double>& v, lumped::SampleRange r) {
-  double s = 0.0;
-  for (std::size_t i = r.begin; i < r.end; ++i) s += v[i] * v[i];
-  return std::sqrt(s / static_cast<double>(r.size()));
-}
-
 }  // namespace
 
 ValveChainSetup valve_chain_setup_for(const lumped::Recording& rec,
@@ -274,7 +269,7 @@ ValveChainFit fit_valve_chain(const lumped::Recording& rec, const ValveChainFitO
   // Nominal compliance: the pressure builds up over ~0.1 s at the rms flow.
   Normalisation norm;
   const double dp_scale = s.output_column == "force" ? y_scale / s.piston_area : y_scale;
-  norm.c0 = rms_of(d.inflow, range) * 0.1 / dp_scale;
+  norm.c0 = lumped::rms_on(d.inflow, range) * 0.1 / dp_scale;
   // Smallest compliance: the pressure settles within a tenth of a sample at the nominal
   // resistance, indistinguishable from an incompressible rig at this sampling rate (and it keeps
   // the RK4 substeps few).
