@@ -60,7 +60,17 @@ nlohmann::json member_json(const FamilyMember& m) {
       {"beyond_training", range_excess_json(m.beyond)}};
 }
 
-void print_members(std::ostream& out, const char* title, const std::vector<FamilyMember>& members) {
+/// Width of the recording column of every table: the longest name, at least 40 characters, so the
+/// columns after it stay aligned whatever paths the user gave.
+int name_width(const FamilyFit& r) {
+  std::size_t width = 40;
+  for (const auto* members : {&r.training, &r.predicted, &r.held_out})
+    for (const FamilyMember& m : *members) width = std::max(width, m.csv_path.size());
+  return static_cast<int>(width);
+}
+
+void print_members(std::ostream& out, const char* title, const std::vector<FamilyMember>& members,
+                   int width) {
   const bool banded = std::any_of(members.begin(), members.end(),
                                   [](const FamilyMember& m) { return m.band.has_value(); });
   const bool levelled = std::any_of(members.begin(), members.end(),
@@ -68,12 +78,12 @@ void print_members(std::ostream& out, const char* title, const std::vector<Famil
   const bool factored = std::any_of(members.begin(), members.end(), [](const FamilyMember& m) {
     return m.viscosity_factor.has_value();
   });
-  out << format_text("%s\n  %-40s %8s %8s %8s %6s%s%s%s\n", title, "recording", "field", "FIT%",
-                     "RE", "rep%", banded ? "  band%" : "",
+  out << format_text("%s\n  %-*s %8s %8s %8s %6s%s%s%s\n", title, width, "recording", "field",
+                     "FIT%", "RE", "rep%", banded ? "  band%" : "",
                      levelled ? "  after 1st cycle: FIT% pure -> 1 level (gain)" : "",
                      factored ? "  viscosity factor (fitted nuisance; K warmer at 2 %/K)" : "");
   for (const auto& m : members) {
-    out << format_text("  %-40s %8.3g %8.1f %8.3f", m.csv_path.c_str(), m.field,
+    out << format_text("  %-*s %8.3g %8.1f %8.3f", width, m.csv_path.c_str(), m.field,
                        m.metrics.fit_percent, m.metrics.re);
     if (m.repeatability)
       out << format_text(" %6.1f", *m.repeatability);
@@ -102,11 +112,12 @@ void print_members(std::ostream& out, const char* title, const std::vector<Famil
 
 /// One line per member: the share of its residual energy (and of its time) in each regime, and
 /// the mean residual of the settled strokes.
-void print_regimes(std::ostream& out, const char* title, const std::vector<FamilyMember>& members) {
-  out << format_text("%s\n  %-40s %19s %31s %31s\n", title, "recording", "reversals",
+void print_regimes(std::ostream& out, const char* title, const std::vector<FamilyMember>& members,
+                   int width) {
+  out << format_text("%s\n  %-*s %19s %31s %31s\n", title, width, "recording", "reversals",
                      "strokes with motion > 0", "strokes with motion < 0");
   for (const auto& m : members) {
-    out << format_text("  %-40s", m.csv_path.c_str());
+    out << format_text("  %-*s", width, m.csv_path.c_str());
     if (!m.regimes) {
       out << "  - (constant motion)\n";
       continue;
@@ -217,23 +228,24 @@ void write_family_fit_text(const FamilyFit& r, std::size_t recordings, int decim
             "tared recordings: in motion the model's level is %.4g %s above their rest's (the "
             "offset less their mean level at rest)\n",
             *above, p.unit.c_str());
-  print_members(out, "training recordings:", r.training);
+  const int width = name_width(r);
+  print_members(out, "training recordings:", r.training, width);
   if (!r.predicted.empty()) {
-    print_members(out, "predicted recordings:", r.predicted);
+    print_members(out, "predicted recordings:", r.predicted, width);
     print_beyond(out, "beyond the training recordings' drive", r.predicted);
   }
   if (!r.held_out.empty()) {
     print_members(out,
                   "held out (each training recording predicted by the family fitted without it):",
-                  r.held_out);
+                  r.held_out, width);
     print_beyond(out, "beyond the drive of the recordings its refit was fitted on", r.held_out);
     print_held_out_summary(out, r);
   }
   out << "residual by regime (% of the model's residual energy in % of the samples; mean "
          "residual of the settled strokes, model minus measured):\n";
-  print_regimes(out, " training:", r.training);
-  if (!r.predicted.empty()) print_regimes(out, " predicted:", r.predicted);
-  if (!r.held_out.empty()) print_regimes(out, " held out:", r.held_out);
+  print_regimes(out, " training:", r.training, width);
+  if (!r.predicted.empty()) print_regimes(out, " predicted:", r.predicted, width);
+  if (!r.held_out.empty()) print_regimes(out, " held out:", r.held_out, width);
   out << format_text(
       "reversals: from each reversal of the motion until the measured force reaches %.0f %% of "
       "its median over the stroke (pre-yield, compliance, seal presliding, low speed)\n",
