@@ -26,6 +26,23 @@ double value_at(const std::vector<double>& t, const std::vector<double>& y, doub
   return y[j] + w * (y[j + 1] - y[j]);
 }
 
+/// The lower end of the steady cycles' band of drive swings: the band [s, s / 0.98] that holds
+/// the most cycles (ties: the larger swings). The largest swing alone would make a start-up
+/// overshoot (a first cycle a few % above the rest, as a shaking table's) the only steady cycle.
+double steady_band_low(std::vector<double> swings) {
+  std::sort(swings.begin(), swings.end());
+  double best = 0.0;
+  std::ptrdiff_t most = 0;
+  for (auto first = swings.begin(); first != swings.end(); ++first) {
+    const auto last = std::upper_bound(first, swings.end(), *first / 0.98);
+    if (last - first >= most) {  // ties: the later, larger band
+      most = last - first;
+      best = *first;
+    }
+  }
+  return best;
+}
+
 /// The FIT of the steady cycles' leave-one-cycle-out mean on each steady cycle's samples.
 std::optional<double> mean_cycle_fit(const std::vector<double>& t, const std::vector<double>& y,
                                      const std::vector<Cycle>& steady) {
@@ -62,7 +79,6 @@ std::optional<double> repeatability_percent(const std::vector<double>& t,
     return std::nullopt;
   const std::vector<double> crossings = lumped::upward_crossings(t, v);
   std::vector<Cycle> cycles;
-  double largest = 0.0;
   std::vector<double> swings;
   for (std::size_t k = 0; k + 1 < crossings.size(); ++k) {
     Cycle c;
@@ -74,12 +90,12 @@ std::optional<double> repeatability_percent(const std::vector<double>& t,
     const auto [lo, hi] = std::minmax_element(v.begin() + static_cast<std::ptrdiff_t>(c.begin),
                                               v.begin() + static_cast<std::ptrdiff_t>(c.end));
     swings.push_back(*hi - *lo);
-    largest = std::max(largest, swings.back());
     cycles.push_back(c);
   }
+  const double low = steady_band_low(swings);
   std::vector<Cycle> steady;
   for (std::size_t k = 0; k < cycles.size(); ++k)
-    if (swings[k] >= 0.98 * largest) steady.push_back(cycles[k]);
+    if (swings[k] >= low && swings[k] <= low / 0.98) steady.push_back(cycles[k]);
   // Each sample is compared with every other cycle: a long test keeps kMaxCycles of its steady
   // cycles, evenly spread, so the cost stays kMaxCycles x samples.
   constexpr std::size_t kMaxCycles = 64;

@@ -11,7 +11,8 @@ namespace rheomag::identify {
 
 /// FIT % (100 (1 - ||y - y_cycle|| / ||y - mean y||)) of the mean cycle y_cycle on the steady
 /// cycles of y(t) under the drive v(t): cycles between v's upward crossings (upward_crossings)
-/// whose drive swing is within 2 % of the largest; each sample is compared with the other steady
+/// whose drive swings lie within one 2 % band, the band that holds the most cycles (ties: the
+/// larger swings); each sample is compared with the other steady
 /// cycles' mean at its phase (linear interpolation), the squared error scaled by (n-1)/(n-1+2/3)
 /// for the noise that mean carries over n cycles (at most 64 cycles, evenly spread, are used).
 /// Empty without at least 3 steady cycles, for a
