@@ -80,7 +80,7 @@ void print_members(std::ostream& out, const char* title, const std::vector<Famil
   });
   out << format_text("%s\n  %-*s %8s %8s %8s %6s%s%s%s\n", title, width, "recording", "field",
                      "FIT%", "RE", "rep%", banded ? "  band%" : "",
-                     levelled ? "  after 1st cycle: FIT% pure -> 1 level (gain)" : "",
+                     levelled ? "  after 1st steady cycle: FIT% pure -> 1 level (gain)" : "",
                      factored ? "  viscosity factor (fitted nuisance; K warmer at 2 %/K)" : "");
   for (const auto& m : members) {
     out << format_text("  %-*s %8.3g %8.1f %8.3f", width, m.csv_path.c_str(), m.field,
@@ -92,10 +92,10 @@ void print_members(std::ostream& out, const char* title, const std::vector<Famil
     if (banded)
       out << (m.band ? format_text("  %5.1f", m.band->percent) : format_text("  %5s", "-"));
     if (m.level)
-      out << format_text("  %23.1f -> %5.1f (%.3f)", m.level->pure_fit_percent,
+      out << format_text("  %30.1f -> %5.1f (%.3f)", m.level->pure_fit_percent,
                          m.level->fit_percent, m.level->gain);
     else if (levelled)
-      out << format_text("  %23s", "-");
+      out << format_text("  %30s", "-");
     if (m.viscosity_factor)
       out << format_text("  %6.3f (%+.1f K)", *m.viscosity_factor,
                          viscosity_temperature_offset(*m.viscosity_factor));
@@ -257,8 +257,9 @@ void write_family_fit_text(const FamilyFit& r, std::size_t recordings, int decim
   if (!r.predicted.empty() || !r.held_out.empty())
     out << format_text(
         "band%%: the prediction's 1-sigma band from the parameters' spread between recordings; "
-        "after 1st cycle: FIT on the samples after the first drive cycle of the prediction "
-        "itself and with one gain and offset fitted on that cycle (least squares)\n");
+        "after 1st steady cycle: FIT on the samples after the first steady drive cycle (start-up "
+        "cycles left out) of the prediction itself and with one gain and offset fitted on that "
+        "cycle (least squares)\n");
 }
 
 nlohmann::json family_fit_json(const FamilyFit& r, const lumped::RecordingMeta& meta,

@@ -181,8 +181,8 @@ std::string family_report_html(const FamilyFit& r, const std::vector<lumped::Rec
   o << "<h2>FIT per recording</h2>\n<table><tr><th>recording</th><th>role</th><th>field</th>"
        "<th>FIT %</th><th>RMSE %</th><th>RE</th><th>band % (1&sigma;, parameters between "
        "recordings)</th><th>repeatability % (the recording's own mean cycle)</th><th>FIT % after "
-       "the first cycle, pure</th><th>the same with one level (gain, offset on the first "
-       "cycle)</th><th>reversals: % of the residual energy in % of the samples</th><th>mean "
+       "the first steady cycle, pure</th><th>the same with one level (gain, offset on the first "
+       "steady cycle)</th><th>reversals: % of the residual energy in % of the samples</th><th>mean "
        "residual of the settled strokes, motion &gt; 0 / &lt; 0</th></tr>\n";
   const auto rows = [&](const std::vector<FamilyMember>& members, const char* role) {
     for (const FamilyMember& m : members)

@@ -1,4 +1,4 @@
-// Gain and offset of a prediction fitted on a test's first cycle, scored on the rest
+// Gain and offset of a prediction fitted on a test's first steady cycle, scored on the rest
 // (level_calibration.hpp).
 
 #include "identify/level_calibration.hpp"
@@ -7,6 +7,7 @@
 #include <cmath>
 #include <span>
 
+#include "identify/repeatability.hpp"
 #include "lumped/leading_rest.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/output_smoothing.hpp"
@@ -19,11 +20,19 @@ std::optional<LevelCalibration> calibrate_level(const std::vector<double>& t,
                                                 const std::vector<double>& prediction) {
   const std::size_t n = t.size();
   if (n < 4 || v.size() != n || y.size() != n || prediction.size() != n) return std::nullopt;
-  // The window starts where the motion does: a test that starts at rest has no cycle there.
-  const std::size_t start = lumped::motion_start(v);
+  // A test that starts at rest has no cycle there: nothing before the motion's start counts.
+  std::size_t start = lumped::motion_start(v);
   const double period = lumped::drive_period(t, v);
   std::size_t window = 0;  // the window is [start, window)
-  if (period > 0.0) {
+  const std::vector<DriveCycle> steady = steady_cycles(t, v);
+  const auto first = std::find_if(steady.begin(), steady.end(),
+                                  [start](const DriveCycle& c) { return c.begin >= start; });
+  if (first != steady.end()) {
+    // The first steady cycle: a start-up (ramp, overshoot, the part cycle from rest) has a level
+    // of its own.
+    start = first->begin;
+    window = first->end;
+  } else if (period > 0.0) {
     // The samples before the one nearest to t[start] + period (the sampling need not divide it).
     const double end = t[start] + period;
     window = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), end) - t.begin());

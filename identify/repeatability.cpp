@@ -11,12 +11,6 @@ namespace rheomag::identify {
 
 namespace {
 
-/// One cycle of a signal: the samples [begin, end) and the times of its two crossings.
-struct Cycle {
-  std::size_t begin = 0, end = 0;
-  double start = 0.0, stop = 0.0;
-};
-
 /// Linear interpolation of y at time tau (t increasing, t[0] <= tau <= t.back()).
 double value_at(const std::vector<double>& t, const std::vector<double>& y, double tau) {
   const auto it = std::upper_bound(t.begin(), t.end(), tau);
@@ -45,7 +39,7 @@ double steady_band_low(std::vector<double> swings) {
 
 /// The FIT of the steady cycles' leave-one-cycle-out mean on each steady cycle's samples.
 std::optional<double> mean_cycle_fit(const std::vector<double>& t, const std::vector<double>& y,
-                                     const std::vector<Cycle>& steady) {
+                                     const std::vector<DriveCycle>& steady) {
   const std::size_t n = steady.size();
   if (n < 3) return std::nullopt;
   double squared_error = 0.0, sum = 0.0, squares = 0.0, count = 0.0;
@@ -72,16 +66,13 @@ std::optional<double> mean_cycle_fit(const std::vector<double>& t, const std::ve
 
 }  // namespace
 
-std::optional<double> repeatability_percent(const std::vector<double>& t,
-                                            const std::vector<double>& v,
-                                            const std::vector<double>& y) {
-  if (t.size() != v.size() || t.size() != y.size() || !(lumped::drive_period(t, v) > 0.0))
-    return std::nullopt;
+std::vector<DriveCycle> steady_cycles(const std::vector<double>& t, const std::vector<double>& v) {
+  if (t.size() != v.size() || !(lumped::drive_period(t, v) > 0.0)) return {};
   const std::vector<double> crossings = lumped::upward_crossings(t, v);
-  std::vector<Cycle> cycles;
+  std::vector<DriveCycle> cycles;
   std::vector<double> swings;
   for (std::size_t k = 0; k + 1 < crossings.size(); ++k) {
-    Cycle c;
+    DriveCycle c;
     c.start = crossings[k];
     c.stop = crossings[k + 1];
     c.begin = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), c.start) - t.begin());
@@ -93,14 +84,22 @@ std::optional<double> repeatability_percent(const std::vector<double>& t,
     cycles.push_back(c);
   }
   const double low = steady_band_low(swings);
-  std::vector<Cycle> steady;
+  std::vector<DriveCycle> steady;
   for (std::size_t k = 0; k < cycles.size(); ++k)
     if (swings[k] >= low && swings[k] <= low / 0.98) steady.push_back(cycles[k]);
+  return steady;
+}
+
+std::optional<double> repeatability_percent(const std::vector<double>& t,
+                                            const std::vector<double>& v,
+                                            const std::vector<double>& y) {
+  if (t.size() != v.size() || t.size() != y.size()) return std::nullopt;
+  std::vector<DriveCycle> steady = steady_cycles(t, v);
   // Each sample is compared with every other cycle: a long test keeps kMaxCycles of its steady
   // cycles, evenly spread, so the cost stays kMaxCycles x samples.
   constexpr std::size_t kMaxCycles = 64;
   if (steady.size() > kMaxCycles) {
-    std::vector<Cycle> spread;
+    std::vector<DriveCycle> spread;
     for (std::size_t k = 0; k < kMaxCycles; ++k)
       spread.push_back(steady[k * (steady.size() - 1) / (kMaxCycles - 1)]);
     steady = spread;
