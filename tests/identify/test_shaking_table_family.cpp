@@ -60,8 +60,9 @@ std::vector<Recording> even_tests() {
 // so they are tared on that (LeadingRest.AShortRestExactlyStillCounts; 2026-12-05): test 8,
 // whose zero is 160 N below the others', 44.7 -> 91.7 %, A.8 93.5 -> 93.7 %; the predicted median
 // 89.6 -> 90.1 %, lowest 78.9 % (0 V test 10). The level calibrated on
-// each tared test's first moving cycle has a gain of 0.88-1.21 (tolerance 0.8-1.3); on the first
-// cycle from t = 0, which is the rest, it was -0.3 to 1e11. Since the level in motion is fitted
+// each tared test's first steady drive cycle has a gain of 0.90-1.21 (tolerance 0.8-1.3; on its
+// first moving cycle it was 0.88-1.21); on the first cycle from t = 0, which is the rest, it was
+// -0.3 to 1e11. Since the level in motion is fitted
 // relative to the rest (2026-12-06): median 90.4 %, lowest 79.7 % (0.87 V test 10).
 TEST(ShakingTableFamily, HalfTheTestsAtFourLevelsPredictTheOtherHalf) {
   const std::vector<Recording> training = odd_tests();
