@@ -165,6 +165,64 @@ TEST(DiagnoseFittedBaselineChain, NamesAFieldLagInFrontOfAValveChainModel) {
   EXPECT_TRUE(has_map);
 }
 
+/// A recording of the valve-chain model at 2 Hz (50 mm/s) with the current switching between
+/// 0.2 and 0.9 A every `half_period` [s], plus an exact Coulomb step of `friction` [N] (sign(v),
+/// not the diagnosis's tanh) and 10 N of force noise.
+rheomag::lumped::Recording chain_recording_with_friction(double half_period, double friction) {
+  rheomag::lumped::Recording rec;
+  rec.csv_path = "damper.csv";
+  rec.meta.sidecar_path = "damper.toml";
+  rec.meta.drive = {"velocity", "current"};
+  rec.meta.output = "force";
+  rec.meta.rig.kind = rheomag::lumped::RigKind::damper;
+  rec.meta.rig.piston_area = 1e-3;
+  std::vector<double> v, i;
+  for (int k = 0; k < 1000; ++k) {
+    const double t = k * 0.002;
+    rec.t.push_back(t);
+    v.push_back(0.05 * std::sin(2 * M_PI * 2 * t));
+    i.push_back(static_cast<int>(t / half_period) % 2 == 0 ? 0.2 : 0.9);
+  }
+  rec.columns = {{"velocity", v}, {"current", i}, {"force", std::vector<double>(v.size())}};
+  auto force = rheomag::identify::simulate_valve_chain(rec, chain_damper_model());
+  std::mt19937 rng(3);
+  std::normal_distribution<double> noise(0.0, 10.0);
+  for (std::size_t k = 0; k < force.size(); ++k)
+    force[k] += friction * ((v[k] > 0.0) - (v[k] < 0.0)) + noise(rng);
+  rec.columns["force"] = force;
+  return rec;
+}
+
+/// The diagnosis of `rec` against the valve-chain model as its fitted baseline.
+rheomag::diagnose::Diagnosis diagnose_against_chain(const rheomag::lumped::Recording& rec) {
+  const auto model = rheomag::identify::parse_fit_model_json(
+      rheomag::identify::fit_model_json(chain_damper_model(), rec.meta).dump(), "chain.json");
+  const auto d = diagnose_with(rec, {model, "chain.json"});
+  for (const auto& f : d.findings)
+    std::cout << "  " << f.effect->name() << " " << f.params.front() << "\n";
+  return d;
+}
+
+// A Coulomb friction of 60 N (7 % of the force's rms) under a current that switches out of step
+// with the velocity: named alone, within 10 % (measured 59.3 N, 2026-12-06).
+TEST(DiagnoseFittedBaselineChain, NamesAFrictionAloneOnAValveChainModel) {
+  const auto d = diagnose_against_chain(chain_recording_with_friction(0.175, 60.0));
+  ASSERT_EQ(d.findings.size(), 1u);
+  EXPECT_EQ(d.findings.front().effect->name(), "friction");
+  EXPECT_NEAR(d.findings.front().params.front() / 60.0, 1.0, 0.1);
+}
+
+// The same friction when the current switches with the velocity's sign (0.2 A in extension,
+// 0.9 A in compression): the step is then exactly a change of the calibrated output scale and
+// offset (s Y_low + o = Y_low + F, -s Y_high + o = -Y_high - F), so no recording of this drive
+// can tell it from a drift of the level. Nothing is named (measured: friction 14 N, 0.40 noise
+// standard deviations; magnetic hysteresis 0.29; both under the 0.5 bar), in particular not the
+// small magnetic hysteresis docs/diagnosis.md once listed as a known miss beside a friction.
+TEST(DiagnoseFittedBaselineChain, NamesNothingFalseWhenTheCurrentFlipsWithTheVelocity) {
+  const auto d = diagnose_against_chain(chain_recording_with_friction(0.25, 60.0));
+  for (const auto& f : d.findings) ADD_FAILURE() << f.effect->name() << " named";
+}
+
 TEST(DiagnoseFittedBaseline, RefusesAModelOfAnotherRigKind) {
   const auto model = last_months_model();
   auto rec = todays_recording(0.0);
