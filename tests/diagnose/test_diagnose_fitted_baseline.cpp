@@ -119,6 +119,29 @@ rheomag::identify::ValveChainFit chain_damper_model() {
   return fit;
 }
 
+/// An empty recording of a damper with the valve-chain model's drives (velocity, current) and
+/// piston, its force to be simulated; its columns are filled in by the caller.
+rheomag::lumped::Recording chain_damper_recording() {
+  rheomag::lumped::Recording rec;
+  rec.csv_path = "damper.csv";
+  rec.meta.sidecar_path = "damper.toml";
+  rec.meta.drive = {"velocity", "current"};
+  rec.meta.output = "force";
+  rec.meta.rig.kind = rheomag::lumped::RigKind::damper;
+  rec.meta.rig.piston_area = 1e-3;
+  return rec;
+}
+
+/// The diagnosis of `rec` against the valve-chain model as its fitted baseline.
+rheomag::diagnose::Diagnosis diagnose_against_chain(const rheomag::lumped::Recording& rec) {
+  const auto model = rheomag::identify::parse_fit_model_json(
+      rheomag::identify::fit_model_json(chain_damper_model(), rec.meta).dump(), "chain.json");
+  const auto d = diagnose_with(rec, {model, "chain.json"});
+  for (const auto& f : d.findings)
+    std::cout << "  " << f.effect->name() << " " << f.params.front() << "\n";
+  return d;
+}
+
 // The case literally: a recording simulated from a fitted (valve-chain) model plus a
 // concealed effect - a 30 ms field lag in front of the model (the fluid or the core slower than
 // when the model was fitted), 1 % force noise - is diagnosed with that model as its baseline:
@@ -127,13 +150,7 @@ rheomag::identify::ValveChainFit chain_damper_model() {
 // diagnosis's own exact discretisation.
 TEST(DiagnoseFittedBaselineChain, NamesAFieldLagInFrontOfAValveChainModel) {
   const auto fit = chain_damper_model();
-  rheomag::lumped::Recording rec;
-  rec.csv_path = "damper.csv";
-  rec.meta.sidecar_path = "damper.toml";
-  rec.meta.drive = {"velocity", "current"};
-  rec.meta.output = "force";
-  rec.meta.rig.kind = rheomag::lumped::RigKind::damper;
-  rec.meta.rig.piston_area = 1e-3;
+  auto rec = chain_damper_recording();
   const double dt = 0.002, tau = 0.03;
   std::vector<double> v, i, lagged;
   double state = 0.2;
@@ -156,9 +173,7 @@ TEST(DiagnoseFittedBaselineChain, NamesAFieldLagInFrontOfAValveChainModel) {
   for (double& f : force) f += noise(rng);
   rec.columns["force"] = force;
   rec.columns["current"] = i;  // what the recorder saw: the coil current, not the field
-  const auto model = rheomag::identify::parse_fit_model_json(
-      rheomag::identify::fit_model_json(fit, rec.meta).dump(), "chain.json");
-  const auto d = diagnose_with(rec, {model, "chain.json"});
+  const auto d = diagnose_against_chain(rec);
   expect_one_field_lag(d, tau);
   bool has_map = false;
   for (const auto& item : d.includes) has_map |= item.name == "static_map";
@@ -169,13 +184,7 @@ TEST(DiagnoseFittedBaselineChain, NamesAFieldLagInFrontOfAValveChainModel) {
 /// 0.2 and 0.9 A every `half_period` [s], plus an exact Coulomb step of `friction` [N] (sign(v),
 /// not the diagnosis's tanh) and 10 N of force noise.
 rheomag::lumped::Recording chain_recording_with_friction(double half_period, double friction) {
-  rheomag::lumped::Recording rec;
-  rec.csv_path = "damper.csv";
-  rec.meta.sidecar_path = "damper.toml";
-  rec.meta.drive = {"velocity", "current"};
-  rec.meta.output = "force";
-  rec.meta.rig.kind = rheomag::lumped::RigKind::damper;
-  rec.meta.rig.piston_area = 1e-3;
+  auto rec = chain_damper_recording();
   std::vector<double> v, i;
   for (int k = 0; k < 1000; ++k) {
     const double t = k * 0.002;
@@ -191,16 +200,6 @@ rheomag::lumped::Recording chain_recording_with_friction(double half_period, dou
     force[k] += friction * ((v[k] > 0.0) - (v[k] < 0.0)) + noise(rng);
   rec.columns["force"] = force;
   return rec;
-}
-
-/// The diagnosis of `rec` against the valve-chain model as its fitted baseline.
-rheomag::diagnose::Diagnosis diagnose_against_chain(const rheomag::lumped::Recording& rec) {
-  const auto model = rheomag::identify::parse_fit_model_json(
-      rheomag::identify::fit_model_json(chain_damper_model(), rec.meta).dump(), "chain.json");
-  const auto d = diagnose_with(rec, {model, "chain.json"});
-  for (const auto& f : d.findings)
-    std::cout << "  " << f.effect->name() << " " << f.params.front() << "\n";
-  return d;
 }
 
 // A Coulomb friction of 60 N (7 % of the force's rms) under a current that switches out of step
