@@ -178,6 +178,9 @@ GreyboxFit read_greybox(const Field& root, const std::string& model) {
   fit.setup.orientation = setup.at("orientation").number(Domain::between(-1.0, 1.0));
   if (std::abs(fit.setup.orientation) != 1.0)
     setup.at("orientation").fail("expected 1 or -1, got " + std::to_string(fit.setup.orientation));
+  // The motion sensor's lag (absent in files written before it, or 0: the drives as recorded).
+  if (setup.has("motion_lead_s"))
+    fit.setup.motion_lead = setup.at("motion_lead_s").number(Domain::between(-1.0, 1.0, "s"));
   const Field s = setup.at("settings");
   fit.setup.settings.eps = s.at("eps").number(Domain::positive());
   fit.setup.settings.motion_scale = s.at("motion_scale").number(Domain::positive());
@@ -303,6 +306,7 @@ json fit_model_json(const GreyboxFit& fit, const lumped::RecordingMeta& meta) {
                   {"motion_scale", fit.setup.settings.motion_scale},
                   {"position_scale", fit.setup.settings.position_scale},
                   {"output_scale", fit.setup.settings.output_scale}}}};
+  if (fit.setup.motion_lead != 0.0) j["setup"]["motion_lead_s"] = fit.setup.motion_lead;
   if (std::isfinite(fit.setup.settings.field_high))
     j["setup"]["settings"]["field_high"] = fit.setup.settings.field_high;
   if (std::isfinite(fit.setup.settings.rest_reference))

@@ -560,6 +560,7 @@ GreyboxFit fit_greybox(const lumped::Recording& rec, const std::string& model,
   GreyboxFit fit;
   fit.model = lumped::pheno_name(kind);
   fit.setup = lumped::greybox_setup_for(rec, kind);
+  fit.setup.motion_lead = options.motion_lead;
   FitData data;
   data.series.push_back(lumped::drive_series(rec, fit.setup));
   const lumped::DriveSeries& d = data.series.front();
@@ -603,6 +604,7 @@ GreyboxFit fit_greybox_family(const std::vector<lumped::Recording>& recs, const 
   GreyboxFit fit;
   fit.model = lumped::pheno_name(kind);
   fit.setup = lumped::greybox_setup_for(recs.front(), kind);
+  fit.setup.motion_lead = options.motion_lead;
   FitData data;
   for (const lumped::Recording& rec : recs) {
     const lumped::GreyboxSetup setup = lumped::greybox_setup_for(rec, kind);
@@ -648,6 +650,7 @@ std::vector<double> simulate_greybox(const lumped::Recording& rec, const Greybox
                      fit.model + " model was fitted on");
   setup.orientation = fit.setup.orientation;
   setup.settings = fit.setup.settings;
+  setup.motion_lead = fit.setup.motion_lead;
   return lumped::simulate_pheno(rec, setup, param_values(fit));
 }
 

@@ -42,6 +42,8 @@ struct GreyboxOptions {
   double exponential_step = 5e-3;  ///< [s] largest step of the damper model's integrator
   double bouc_wen_step = 1e-3;     ///< [s] largest step of the Bouc-Wen model's integrator
   double eps_fraction = 1e-3;      ///< sign/|.| regularisation width as a fraction of rms motion
+  /// [s] The motion drives are read this much later (lumped::GreyboxSetup::motion_lead).
+  double motion_lead = 0.0;
   /// Family fits: each recording's factor on the viscosity-scaled parameters
   /// (scales_with_viscosity), held during the fit; empty: 1 for every recording.
   std::vector<double> viscous_factors;

@@ -24,6 +24,27 @@ std::vector<double> every(const std::vector<double>& v, std::size_t step) {
   return out;
 }
 
+/// `v` read `lead` later on its time base `t`: v(t_i + lead), linear between samples, the first
+/// and last values held beyond the ends.
+std::vector<double> read_later(const std::vector<double>& t, const std::vector<double>& v,
+                               double lead) {
+  if (lead == 0.0 || v.size() < 2) return v;
+  std::vector<double> out(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const double at = t[i] + lead;
+    const auto it = std::upper_bound(t.begin(), t.end(), at);
+    if (it == t.begin()) {
+      out[i] = v.front();
+    } else if (it == t.end()) {
+      out[i] = v.back();
+    } else {
+      const auto k = static_cast<std::size_t>(it - t.begin()) - 1;
+      out[i] = v[k] + (at - t[k]) / (t[k + 1] - t[k]) * (v[k + 1] - v[k]);
+    }
+  }
+  return out;
+}
+
 /// Rate of `v` on the time base `t`: central differences inside, one-sided at the ends.
 std::vector<double> rate_of(const std::vector<double>& t, const std::vector<double>& v) {
   std::vector<double> r(v.size(), 0.0);
@@ -101,7 +122,7 @@ std::size_t tared_rest(const Recording& rec, const GreyboxSetup& setup) {
 DriveSeries drive_series(const Recording& rec, const GreyboxSetup& setup, std::size_t step) {
   DriveSeries d;
   d.t = every(rec.t, step);
-  d.motion = every(rec.column(setup.motion_column), step);
+  d.motion = every(read_later(rec.t, rec.column(setup.motion_column), setup.motion_lead), step);
   d.y = every(rec.column(setup.output_column), step);
   d.field = setup.field_column.empty() ? std::vector<double>(d.t.size(), 0.0)
                                        : every(rec.column(setup.field_column), step);

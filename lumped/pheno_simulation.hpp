@@ -24,6 +24,11 @@ struct GreyboxSetup {
   std::string field_column;     ///< "command", "current", "current_cmd", or empty
   std::string output_column;    ///< "force" or "pressure"
   double orientation = 1.0;     ///< +1 or -1: model output is multiplied by this
+  /// [s] The motion drive (velocity or flow) is read this much later than recorded, v(t + lead),
+  /// on the recording's own samples (linear interpolation, the end values held beyond the ends),
+  /// while the position, field and output stay as recorded: a velocity column that lags the
+  /// displacement and force (a backward difference, a filter); 0: as recorded.
+  double motion_lead = 0.0;
   PhenoSettings settings;
 };
 

@@ -133,6 +133,32 @@ TEST(FitModelJson, GreyboxRoundTripSimulatesTheSame) {
   }
 }
 
+// A fit whose velocity is read 7.5 ms later (GreyboxOptions::motion_lead) writes the lead
+// (setup.motion_lead_s), reads it back, and the read-back model simulates bit for bit as the fit;
+// the lead is not a no-op (the same parameters without it simulate otherwise).
+TEST(FitModelJson, GreyboxRoundTripCarriesTheMotionLead) {
+  const Recording rec = damper_recording(0.05);
+  GreyboxOptions options;
+  options.starts = 1;
+  options.max_iterations = 20;
+  options.motion_lead = 7.5e-3;
+  const GreyboxFit fit = fit_greybox(rec, "bingham", options);
+  EXPECT_EQ(fit.setup.motion_lead, 7.5e-3);
+  const nlohmann::json j = fit_model_json(fit, rec.meta);
+  EXPECT_EQ(j.at("setup").at("motion_lead_s").get<double>(), 7.5e-3);
+  const FitModel back = parse_fit_model_json(j.dump(2), "model.json");
+  ASSERT_TRUE(back.greybox.has_value());
+  EXPECT_EQ(back.greybox->setup.motion_lead, 7.5e-3);
+  EXPECT_EQ(simulate_fit_model(rec, back), simulate_greybox(rec, fit));
+  GreyboxFit unled = fit;
+  unled.setup.motion_lead = 0.0;
+  EXPECT_NE(simulate_greybox(rec, unled), simulate_greybox(rec, fit));
+  // A lead outside +-1 s is refused with its key.
+  nlohmann::json bad = j;
+  bad["setup"]["motion_lead_s"] = 2.0;
+  EXPECT_NE(refusal(bad.dump()).find("motion_lead_s"), std::string::npos) << refusal(bad.dump());
+}
+
 // A damper model written before the model had field_saturation and output_smoothing (15
 // parameters) reads back with both held at 0 (field linear in the current, output not smoothed)
 // and simulates bit for bit as the same parameters with explicit zeros; a Bingham model written
