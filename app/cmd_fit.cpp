@@ -12,6 +12,7 @@
 #include "app/command.hpp"
 #include "app/progress_lines.hpp"
 #include "identify/fit_run.hpp"
+#include "identify/motion_lead_search.hpp"
 
 namespace {
 
@@ -20,8 +21,9 @@ using namespace rheomag::identify;
 /// The options of `rheomag fit`: the request plus how to print it.
 struct FitOptions {
   FitRequest request;
-  std::vector<std::string> holds;  ///< --hold NAME=VALUE
-  bool keep_inertance = false;     ///< --keep-inertance
+  std::vector<std::string> holds;    ///< --hold NAME=VALUE
+  bool keep_inertance = false;       ///< --keep-inertance
+  std::string motion_lead = "auto";  ///< --motion-lead: "auto" or [s]
   bool json = false;
   bool quiet = false;
 };
@@ -31,6 +33,10 @@ void run_fit_command(const FitOptions& o) {
   request.load_recording = rheomag::app::load_recording;
   request.held = rheomag::app::parse_holds(o.holds);
   request.keep_inertance = o.keep_inertance;
+  if (o.motion_lead == "auto")
+    request.motion_leads = default_motion_leads();
+  else
+    request.motion_lead = std::stod(o.motion_lead);  // checked by add_motion_lead_option
   if (!o.quiet) request.progress = rheomag::app::progress_lines("fit", std::cerr);
   const FitRun run = run_fit(request);
   if (o.json)
@@ -86,6 +92,9 @@ const bool fit_registered = rheomag::app::register_command([](CLI::App& root) {
       ->type_name("simulation|prediction");
   rheomag::app::add_hold_option(cmd, o->holds);
   rheomag::app::add_keep_inertance_flag(cmd, o->keep_inertance);
+  rheomag::app::add_motion_lead_option(
+      cmd, o->motion_lead,
+      "with the best FIT on the training samples (grey-box models; others take 0)");
   cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr (grey-box fits report them)");
   cmd->add_flag("--json", o->json,
                 "Print one JSON object: the fitted model (format, kind, model, rig, drive, output, "

@@ -16,6 +16,7 @@
 #include "identify/current_dependent_fit.hpp"
 #include "identify/family_fit_output.hpp"
 #include "identify/family_report.hpp"
+#include "identify/motion_lead_search.hpp"
 #include "lumped/recording_io.hpp"
 
 namespace {
@@ -36,9 +37,10 @@ struct FamilyOptions {
   bool quiet = false;
   bool cross_validate = false;
   std::string report;
-  std::string viscosity_nuisance;  ///< "LO:HI" or empty
-  std::vector<std::string> holds;  ///< --hold NAME=VALUE
-  bool keep_inertance = false;     ///< --keep-inertance
+  std::string viscosity_nuisance;    ///< "LO:HI" or empty
+  std::vector<std::string> holds;    ///< --hold NAME=VALUE
+  bool keep_inertance = false;       ///< --keep-inertance
+  std::string motion_lead = "auto";  ///< --motion-lead: "auto" or [s]
 };
 
 /// The --viscosity-nuisance bounds "LO:HI" (0 < LO <= 1 <= HI <= 100).
@@ -82,6 +84,10 @@ void run_fit_family(const FamilyOptions& o) {
   options.greybox.held = rheomag::app::parse_holds(o.holds);
   if (o.keep_inertance) options.greybox.min_inertance_gain = 0.0;
   options.decimation = o.decimation;
+  if (o.motion_lead == "auto")
+    options.motion_leads = default_motion_leads();
+  else
+    options.greybox.motion_lead = std::stod(o.motion_lead);  // checked by add_motion_lead_option
   options.greybox.starts = o.starts;
   options.greybox.max_substep = o.max_substep;
   options.greybox.threads = o.threads;
@@ -152,6 +158,11 @@ const bool fit_family_registered = rheomag::app::register_command([](CLI::App& r
                 "training recordings', those its refit was fitted on), mode");
   rheomag::app::add_hold_option(cmd, o->holds);
   rheomag::app::add_keep_inertance_flag(cmd, o->keep_inertance);
+  rheomag::app::add_motion_lead_option(
+      cmd, o->motion_lead,
+      "whose training recordings, simulated at full rate, have the lowest sum of (1 - FIT)^2; with "
+      "--cross-validate each half searches its own and a refit takes the lead of the half it "
+      "starts from");
   cmd->add_flag("--cross-validate", o->cross_validate,
                 "Also refit once without each training recording and predict it (leave one "
                 "recording out): the FIT to expect on a test the fit has not seen. Costs a fit of "

@@ -70,6 +70,31 @@ inline CLI::Option* add_keep_inertance_flag(CLI::App* cmd, bool& keep) {
       "moving mass, and one fitted to them spoils predictions at higher frequencies)");
 }
 
+/// Adds the `--motion-lead auto|SECONDS` option of the grey-box fits (`fit`, `fit-family`):
+/// "auto" or a number of seconds within +-0.1 s (exit 2 otherwise, before any fit).
+inline CLI::Option* add_motion_lead_option(CLI::App* cmd, std::string& lead,
+                                           const std::string& search) {
+  return cmd
+      ->add_option("--motion-lead", lead,
+                   "[s] read the velocity (flow) drive this much later than recorded, v(t + "
+                   "lead), against the displacement and the output, in the fit and in every "
+                   "prediction: a velocity column that lags (a backward difference lags half a "
+                   "sample, a filter more); stored in the model file. auto: the fit is refitted "
+                   "(warm, 30 iterations) at -5 to 15 ms in 2.5 ms steps and the lead " +
+                       search + " is kept")
+      ->capture_default_str()
+      ->check(CLI::Validator(
+          [](std::string& value) {
+            if (value == "auto") return std::string();
+            char* end = nullptr;
+            const double v = std::strtod(value.c_str(), &end);
+            if (end == value.c_str() || *end != '\0')
+              return "expected auto or a lead in seconds, got \"" + value + "\"";
+            return Domain::between(-0.1, 0.1, "s").violation(v);
+          },
+          "auto|SECONDS"));
+}
+
 /// The --hold settings as (name, value) pairs; InputError "--hold: expected NAME=VALUE ..." for
 /// one without '=', an empty name or a value that is not a finite number.
 std::vector<std::pair<std::string, double>> parse_holds(const std::vector<std::string>& holds);

@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "identify/family_cross_validation.hpp"
 #include "identify/fit_model_json.hpp"
+#include "identify/motion_lead_search.hpp"
 #include "identify/multistart_fit.hpp"
 #include "identify/repeatability.hpp"
 #include "lumped/output_smoothing.hpp"
@@ -161,25 +162,26 @@ std::vector<double> fit_with_viscosity_factors(const std::vector<lumped::Recordi
     // Keep the factors inside their bounds after centring: clamp, centre, clamp again.
     centre_viscosity_factors(factors, fit);
     for (double& f : factors) f = std::clamp(f, nuisance.lower, nuisance.upper);
-    GreyboxOptions refit = options.greybox;
-    refit.viscous_factors = factors;
-    refit.start.clear();
-    for (const auto& p : fit.params) refit.start.push_back(p.value);
-    refit.starts = 1;
     // The rounds keep the first fit's decisions: what it held of its own accord stays held.
-    refit.min_inertance_gain = 0.0;
-    for (const auto& p : fit.params)
-      if (p.fixed && !p.held_because.empty()) refit.held.emplace_back(p.name, p.value);
+    GreyboxOptions refit = warm_refit_options(options.greybox, fit, options.greybox.max_iterations);
+    refit.viscous_factors = factors;
+    refit.motion_lead = fit.setup.motion_lead;
     const GreyboxFit before = fit;
     fit = fit_greybox_family(training, fit.model, refit, options.decimation);
-    for (std::size_t k = 0; k < fit.params.size(); ++k)
-      fit.params[k].held_because = before.params[k].held_because;
-    fit.inertance_gain = before.inertance_gain;
+    keep_fit_decisions(before, fit);
   }
   return factors;
 }
 
 }  // namespace
+
+GreyboxFit fit_family(const std::vector<lumped::Recording>& recs, const std::string& model,
+                      const GreyboxOptions& greybox, const FamilyFitOptions& options) {
+  if (options.motion_leads.empty())
+    return fit_greybox_family(recs, model, greybox, options.decimation);
+  return fit_family_searching_motion_lead(recs, model, greybox, options.decimation,
+                                          options.motion_leads);
+}
 
 FamilyFit fit_current_dependent(const std::vector<lumped::Recording>& training,
                                 const std::string& model,
@@ -196,7 +198,7 @@ FamilyFit fit_current_dependent(const std::vector<lumped::Recording>& training,
         fit_threads(options.greybox.threads) > 1 ? std::launch::async : std::launch::deferred,
         [&] { return cross_validate_family(training, model, options); });
   const auto start = std::chrono::steady_clock::now();
-  out.fit = fit_greybox_family(training, model, options.greybox, options.decimation);
+  out.fit = fit_family(training, model, options.greybox, options);
   std::vector<double> factors;
   if (options.viscosity_nuisance) factors = fit_with_viscosity_factors(training, options, out.fit);
   // Each recording simulated at its full rate with the fitted parameters.

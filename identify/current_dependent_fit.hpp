@@ -33,7 +33,17 @@ struct FamilyFitOptions {
   /// Let each training recording's viscosity factor float within these bounds (a fitted
   /// nuisance for an unrecorded fluid temperature, identify/viscosity_nuisance.hpp); empty: off.
   std::optional<ViscosityNuisance> viscosity_nuisance;
+  /// [s] Leads of the motion drive tried besides greybox.motion_lead, the one of lowest training
+  /// cost kept (fit_family_searching_motion_lead; a cross-validation refit takes the lead of the
+  /// half it starts from); empty (the library's default): greybox.motion_lead as given. The CLI
+  /// and Python default to default_motion_leads().
+  std::vector<double> motion_leads;
 };
+
+/// The family fit of `recs` with `greybox` (whose starts, holds and progress may differ from
+/// options.greybox), searching the motion lead where options.motion_leads is not empty.
+GreyboxFit fit_family(const std::vector<lumped::Recording>& recs, const std::string& model,
+                      const GreyboxOptions& greybox, const FamilyFitOptions& options);
 
 /// Metrics of the fitted model on one recording of the family (free run, full rate).
 struct FamilyMember {

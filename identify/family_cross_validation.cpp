@@ -198,7 +198,7 @@ std::vector<FamilyMember> cross_validate_family(const std::vector<lumped::Record
     g.progress = progress.for_fit(n + h, fit_bound,
                                   "cross-validation, fitting half " + std::to_string(h + 1) +
                                       " of 2 (" + std::to_string(parts[h].size()) + " recordings)");
-    half_fit[h] = fit_greybox_family(parts[h], model, g, options.decimation);
+    half_fit[h] = fit_family(parts[h], model, g, options);
   };
 
   // Each test refitted on all the others, started from the fit of the half it is not in.
@@ -210,6 +210,7 @@ std::vector<FamilyMember> cross_validate_family(const std::vector<lumped::Record
       g.start = values_of(*other);
       if (const auto* inertance = held_by_the_fit(*other, "inertance"))
         g.held.emplace_back(inertance->name, inertance->value);
+      g.motion_lead = other->setup.motion_lead;  // chosen without this test
     } else {
       g = single;  // no fit of the other half: the cold refit
     }
@@ -218,7 +219,8 @@ std::vector<FamilyMember> cross_validate_family(const std::vector<lumped::Record
                          "cross-validation, refit " + std::to_string(k + 1) + " of " +
                              std::to_string(n) + " (without " + training[k].csv_path + ")");
     const std::vector<lumped::Recording> rest = without(training, k);
-    const GreyboxFit fit = fit_greybox_family(rest, model, g, options.decimation);
+    const GreyboxFit fit = other ? fit_greybox_family(rest, model, g, options.decimation)
+                                 : fit_family(rest, model, g, options);
     held_out[k] = predict_family_member(training[k], fit);
     held_out[k].beyond = beyond_recordings(rest, training[k], drive_columns(fit));
   };

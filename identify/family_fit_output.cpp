@@ -228,6 +228,9 @@ void write_family_fit_text(const FamilyFit& r, std::size_t recordings, int decim
             "tared recordings: in motion the model's level is %.4g %s above their rest's (the "
             "offset less their mean level at rest)\n",
             *above, p.unit.c_str());
+  if (r.fit.setup.motion_lead != 0.0)
+    out << format_text("motion lead %.1f ms: the %s drive read this much later than recorded\n",
+                       1e3 * r.fit.setup.motion_lead, r.fit.setup.motion_column.c_str());
   const int width = name_width(r);
   print_members(out, "training recordings:", r.training, width);
   if (!r.predicted.empty()) {

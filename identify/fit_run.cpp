@@ -16,6 +16,7 @@
 #include "identify/fit_model_json.hpp"
 #include "identify/fit_plot.hpp"
 #include "identify/greybox.hpp"
+#include "identify/motion_lead_search.hpp"
 #include "identify/repeatability.hpp"
 #include "identify/valve_chain_fit.hpp"
 #include "lumped/recording_excerpt.hpp"
@@ -155,7 +156,10 @@ FitReport fit_grey_box_model(const FitRequest& o, const Recording& rec, const Sa
   options.progress = o.progress;
   options.held = o.held;
   if (o.keep_inertance) options.min_inertance_gain = 0.0;
-  const GreyboxFit fit = fit_greybox(rec, o.model, options);
+  options.motion_lead = o.motion_lead;
+  const GreyboxFit fit = o.motion_leads.empty()
+                             ? fit_greybox(rec, o.model, options)
+                             : fit_searching_motion_lead(rec, o.model, options, o.motion_leads);
   FitReport report = grey_box_report(
       fit, rec, train, val, [&](const Recording& other) { return simulate_greybox(other, fit); });
   report.fitted = fit_model_json(fit, rec.meta);
@@ -268,6 +272,11 @@ FitRun run_fit(const FitRequest& o) {
     throw InputError("--hold: holds a parameter of a grey-box model; '" + o.model +
                      "' is not one (" +
                      (valve_chain ? "the valve-chain fit" : "a black-box model") + ")");
+  if (o.motion_lead != 0.0 && !is_greybox_model(o.model))
+    throw InputError("--motion-lead: a lead of the motion drive applies to grey-box models; '" +
+                     o.model + "' is not one (" +
+                     (valve_chain ? "the valve-chain fit" : "a black-box model") +
+                     "); give auto or 0");
   if (!o.plot.empty() && !gnuplot_available())
     throw InputError("--plot needs gnuplot on PATH (Debian package gnuplot-nox)");
   Recording rec = o.load_recording(o.recording);
@@ -358,6 +367,11 @@ void write_fit_run_text(const FitRun& run, std::ostream& out) {
   out << format_text("model %s (%s mode)\n", r.model.c_str(),
                      o.mode == EvalMode::simulation ? "simulation" : "prediction");
   for (const std::string& note : run.thinning) out << "samples: " << note << "\n";
+  if (const auto setup = r.fitted.find("setup");
+      setup != r.fitted.end() && setup->contains("motion_lead_s"))
+    out << format_text("motion lead %.1f ms: the %s drive read this much later than recorded\n",
+                       1e3 * setup->at("motion_lead_s").get<double>(),
+                       setup->at("motion_column").get<std::string>().c_str());
   const auto repeatability = [&out](const std::optional<double>& rep) {
     if (rep)
       out << format_text("%-34s FIT %7.2f %%   (its own mean cycle: no periodic model beats it)\n",

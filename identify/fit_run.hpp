@@ -36,6 +36,11 @@ struct FitRequest {
   /// Damper model: fit the inertance even where it removes under 10 % of the residual energy
   /// (GreyboxOptions::min_inertance_gain = 0).
   bool keep_inertance = false;
+  /// Grey-box fits: [s] the motion drive read this much later (GreyboxOptions::motion_lead).
+  double motion_lead = 0.0;
+  /// Grey-box fits: leads tried besides, the one of best training FIT kept
+  /// (fit_searching_motion_lead); empty: motion_lead as given.
+  std::vector<double> motion_leads;
   /// Reads a recording (the CLI's reader also reports its warnings).
   std::function<lumped::Recording(const std::string&)> load_recording;
 };

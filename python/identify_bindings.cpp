@@ -1,6 +1,7 @@
 // Python: rheomag.Recording (numpy columns) and fit, fit_family, simulate, diagnose — dicts built
 // by the library functions behind the CLI's --json.
 
+#include <cmath>
 #include <map>
 #include <string>
 #include <utility>
@@ -12,6 +13,7 @@
 #include "identify/family_fit_output.hpp"
 #include "identify/fit_model_json.hpp"
 #include "identify/fit_run.hpp"
+#include "identify/motion_lead_search.hpp"
 #include "identify/simulate_run.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording_excerpt.hpp"
@@ -39,12 +41,29 @@ std::vector<std::pair<std::string, double>> holds(const std::map<std::string, do
   return {hold.begin(), hold.end()};
 }
 
+/// The `motion_lead` argument as --motion-lead: "auto" (the default leads to search) or a lead in
+/// seconds within +-0.1 s.
+void read_motion_lead(const py::object& motion_lead, double& lead, std::vector<double>& leads) {
+  if (py::isinstance<py::str>(motion_lead)) {
+    if (motion_lead.cast<std::string>() != "auto")
+      throw InputError("motion_lead: expected \"auto\" or a lead in seconds, got \"" +
+                       motion_lead.cast<std::string>() + "\"");
+    leads = identify::default_motion_leads();
+    return;
+  }
+  lead = motion_lead.cast<double>();
+  if (!(std::abs(lead) <= 0.1))
+    throw InputError("motion_lead: expected a lead within +-0.1 s, got " + std::to_string(lead));
+}
+
 py::object fit(const std::string& recording, const std::string& model, const std::string& train,
                const std::string& validate, const std::string& mode, const py::object& progress,
-               const std::map<std::string, double>& hold, bool keep_inertance) {
+               const std::map<std::string, double>& hold, bool keep_inertance,
+               const py::object& motion_lead) {
   identify::FitRequest request;
   request.held = holds(hold);
   request.keep_inertance = keep_inertance;
+  read_motion_lead(motion_lead, request.motion_lead, request.motion_leads);
   request.recording = recording;
   request.model = model;
   request.train = train;
@@ -67,7 +86,8 @@ py::object fit(const std::string& recording, const std::string& model, const std
 py::object fit_family(const std::vector<std::string>& recordings, const std::string& model,
                       const std::vector<std::string>& predict, int decimation, int starts,
                       double max_substep, bool cross_validate, const py::object& progress,
-                      const std::map<std::string, double>& hold, bool keep_inertance) {
+                      const std::map<std::string, double>& hold, bool keep_inertance,
+                      const py::object& motion_lead) {
   std::vector<lumped::Recording> training, prediction;
   for (const std::string& f : recordings) training.push_back(load_recording(f));
   for (const std::string& f : predict) prediction.push_back(load_recording(f));
@@ -79,6 +99,7 @@ py::object fit_family(const std::vector<std::string>& recordings, const std::str
   if (keep_inertance) options.greybox.min_inertance_gain = 0.0;
   options.greybox.max_substep = max_substep;
   options.cross_validate = cross_validate;
+  read_motion_lead(motion_lead, options.greybox.motion_lead, options.motion_leads);
   options.greybox.progress = progress_to_python(progress);
   nlohmann::json j;
   {
@@ -158,16 +179,19 @@ void bind_identify(py::module_& m) {
   m.def("fit", &fit, py::arg("recording"), py::arg("model"), py::arg("train") = "",
         py::arg("validate") = "", py::arg("mode") = "simulation", py::arg("progress") = py::none(),
         py::arg("hold") = std::map<std::string, double>{}, py::arg("keep_inertance") = false,
+        py::arg("motion_lead") = "auto",
         "Fits `model` to the recording CSV (as `rheomag fit REC --model M --json`); the dict of "
         "that JSON. progress(event: dict) is called during grey-box fits; hold {name: SI value} "
-        "holds grey-box parameters (as --hold); keep_inertance as --keep-inertance.");
+        "holds grey-box parameters (as --hold); keep_inertance as --keep-inertance; "
+        "motion_lead \"auto\" or seconds as --motion-lead.");
   m.def("fit_family", &fit_family, py::arg("recordings"), py::arg("model"),
         py::arg("predict") = std::vector<std::string>{}, py::arg("decimation") = 4,
         py::arg("starts") = 2, py::arg("max_substep") = 2e-3, py::arg("cross_validate") = false,
         py::arg("progress") = py::none(), py::arg("hold") = std::map<std::string, double>{},
-        py::arg("keep_inertance") = false,
+        py::arg("keep_inertance") = false, py::arg("motion_lead") = "auto",
         "One grey-box fit over several recordings (as `rheomag fit-family ... --json`); hold "
-        "{name: SI value} holds parameters (as --hold); keep_inertance as --keep-inertance.");
+        "{name: SI value} holds parameters (as --hold); keep_inertance as --keep-inertance; "
+        "motion_lead \"auto\" or seconds as --motion-lead.");
   m.def("simulate", &simulate, py::arg("spec"), py::arg("input") = "",
         py::arg("signals") = std::vector<std::string>{}, py::arg("duration") = 10.0,
         py::arg("rate") = 1000.0, py::arg("out") = "",

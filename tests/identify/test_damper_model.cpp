@@ -18,6 +18,7 @@
 #include "lumped/metrics.hpp"
 #include "lumped/output_smoothing.hpp"
 #include "lumped/phenomenological.hpp"
+#include "tests/identify/damper_family_truth.hpp"
 
 using namespace rheomag::lumped;
 using namespace rheomag::identify;
@@ -413,22 +414,7 @@ namespace {
 
 /// Parameters of the simulated families below, with `set` on top.
 std::vector<double> family_truth(std::vector<std::pair<std::string, double>> set) {
-  std::vector<std::pair<std::string, double>> all = {{"yield", 60.0},
-                                                     {"yield_per_field", 900.0},
-                                                     {"yield_per_field2", -200.0},
-                                                     {"consistency", 1500.0},
-                                                     {"consistency_per_field", 3000.0},
-                                                     {"flow_index", 0.5},
-                                                     {"pre_yield_viscous", 1e5},
-                                                     {"compliance_stiffness", 3e5},
-                                                     {"stiffening", 500.0},
-                                                     {"seal_friction", 30.0},
-                                                     {"seal_presliding", 5e-4},
-                                                     {"inertance", 5.0},
-                                                     {"gas_stiffness", 800.0},
-                                                     {"field_time_constant", 0.01}};
-  all.insert(all.end(), set.begin(), set.end());
-  return damper_params(all);
+  return rheomag::test::damper_family_truth(set);
 }
 
 /// The damper model fitted jointly (every 2nd sample) on a family simulated with `truth`: 20 mm /

@@ -136,6 +136,28 @@ TEST(FitFamilyCli, RejectsBadViscosityNuisanceBounds) {
   fs::remove_all(dir);
 }
 
+// --motion-lead takes auto or a number of seconds within +-0.1 s; anything else exits 2 naming
+// the option and what it expects, before any fit. A given lead is stored in the model
+// (setup.motion_lead_s) and named in the text output.
+TEST(FitFamilyCli, MotionLeadIsAutoOrSecondsAndIsStored) {
+  const fs::path dir = fresh_dir("lead");
+  const std::string a = write_recording_at(dir, "a.csv", 0.0);
+  const std::string b = write_recording_at(dir, "b.csv", 1.0);
+  for (const char* lead : {"fast", "0.5", "-0.2", "5ms", "nan"}) {
+    const CliRun r = run_fit_family(a + " " + b + " --model bingham --motion-lead " + lead);
+    EXPECT_EQ(r.code, 2) << lead;
+    EXPECT_NE(r.err.find("--motion-lead"), std::string::npos) << r.err;
+  }
+  const CliRun j =
+      run_fit_family(a + " " + b + " --model bingham --quiet --json --motion-lead 0.005");
+  ASSERT_EQ(j.code, 0) << j.err;
+  EXPECT_EQ(nlohmann::json::parse(j.out).at("setup").at("motion_lead_s").get<double>(), 0.005);
+  const CliRun text = run_fit_family(a + " " + b + " --model bingham --quiet --motion-lead 0.005");
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("motion lead 5.0 ms"), std::string::npos) << text.out;
+  fs::remove_all(dir);
+}
+
 // --hold NAME=VALUE: a Bingham family with its viscous force and transition held at the truth
 // (100, 800, 2000, 5000, 0.005, 0 simulated) fits the other terms to it (reference: the truth,
 // 1 %) and reports the held ones as held with no standard error; a hold without '=', a name the

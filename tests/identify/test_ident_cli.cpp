@@ -203,6 +203,21 @@ TEST_F(FitCli, HoldsAGreyBoxParameter) {
       << arx.err;
 }
 
+// --motion-lead on one recording: a given lead is stored in the model (setup.motion_lead_s); a
+// nonzero lead for a black-box model exits 2 naming the option, and auto (the default) leaves a
+// black-box fit as it was.
+TEST_F(FitCli, MotionLeadIsAGreyBoxSetting) {
+  const CliRun r = run_cli(csv + " --model bingham --motion-lead 0.004 --json --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["setup"]["motion_lead_s"].get<double>(), 0.004);
+  const CliRun arx = run_cli(csv + " --model arx:1,1,1 --motion-lead 0.004");
+  EXPECT_EQ(arx.code, 2);
+  EXPECT_NE(arx.err.find("--motion-lead: a lead of the motion drive applies to grey-box models"),
+            std::string::npos)
+      << arx.err;
+  EXPECT_EQ(run_cli(csv + " --model arx:1,1,1 --quiet").code, 0);
+}
+
 // The damper's inertance check on a real slow sine (UTFSM 25 mm / 0.5 Hz / 0 A, validated on
 // 10 mm / 1 Hz / 0 A; measured 2026-12-05): by default the inertance removes 4.5 % of the residual
 // energy, is held at 0 with the reason in the JSON, and the faster test is predicted at 92.1 %;
