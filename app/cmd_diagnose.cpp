@@ -29,6 +29,7 @@ struct DiagnoseCliOptions {
   std::string out;
   std::string samples;
   std::string baseline;
+  std::string reference;
   bool json = false;
   bool quiet = false;
 };
@@ -89,6 +90,7 @@ void run(const DiagnoseCliOptions& o) {
   if (!o.baseline.empty())
     options.baseline_model =
         diagnose::ModelBaseline{identify::read_fit_model_json(o.baseline), o.baseline};
+  if (!o.reference.empty()) options.reference = rheomag::app::load_recording(o.reference);
   if (!o.quiet) options.progress = rheomag::app::progress_lines("diagnose", std::cerr);
   const auto d = diagnose::diagnose(rec, options);
   if (!o.out.empty()) diagnose::write_diagnosis_outputs(d, o.out);
@@ -132,6 +134,12 @@ const bool diagnose_registered = app::register_command([](CLI::App& root) {
                   "valve-chain) to use as the baseline instead of the sidecar's rig: its output "
                   "is the baseline, its parameters are held, its output scale and offset "
                   "calibrated; candidates act on its inputs and output")
+      ->check(rheomag::app::non_empty());
+  cmd->add_option("--reference", o->reference,
+                  "A recording of the same device from before (its sidecar beside it), diagnosed "
+                  "against the same --baseline model: the report adds each effect's change from "
+                  "it (friction, fluid_inertia, gas_spring: today's size minus the reference's, "
+                  "so what the model already missed on this device is not counted as a change)")
       ->check(rheomag::app::non_empty());
   cmd->add_option("--out", o->out, "Folder for diagnosis.json, report.html and traces.csv")
       ->check(rheomag::app::non_empty());

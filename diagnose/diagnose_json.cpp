@@ -146,6 +146,27 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
   }
   if (d.selection.size() > 0)
     out["selection_samples"] = {{"begin", d.selection.begin}, {"end", d.selection.end}};
+  if (d.reference) {
+    json changes = json::array();
+    for (const EffectChange& e : d.reference->changes) {
+      json row = {{"name", e.effect->name()},
+                  {"param", e.param},
+                  {"unit", e.unit},
+                  {"today", e.today},
+                  {"named_today", e.named_today},
+                  {"reference", e.reference},
+                  {"named_reference", e.named_reference},
+                  {"change", e.change}};
+      for (const DerivedParam& q : e.derived_change)
+        row["derived_change"][q.name] = {{"change", q.value}, {"unit", q.unit}};
+      changes.push_back(std::move(row));
+    }
+    out["reference"] = {{"recording", d.reference->recording},
+                        {"baseline_fit_percent", d.reference->baseline_fit_percent},
+                        {"missing_physics", d.reference->findings},
+                        {"changes", std::move(changes)},
+                        {"sized_on_one_only", d.reference->sized_on_one}};
+  }
   out["notes"] = d.notes;
   return out;
 }

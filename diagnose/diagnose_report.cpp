@@ -15,6 +15,7 @@
 #include "core/output_set.hpp"
 #include "core/version.hpp"
 #include "diagnose/candidate.hpp"
+#include "diagnose/diagnose_change.hpp"
 #include "diagnose/diagnose_findings.hpp"
 
 namespace rheomag::diagnose {
@@ -150,6 +151,11 @@ std::string diagnosis_text(const Diagnosis& d) {
     if (!signed_header) o << "signed sizes against the baseline (" << kSignedSizeStage << "):\n";
     signed_header = true;
     o << "  " << c.effect->name() << ": " << signed_size_text(c) << "\n";
+  }
+  if (d.reference) {
+    o << reference_heading(*d.reference) << ":\n";
+    if (d.reference->changes.empty()) o << "  no effect sized on both\n";
+    for (const EffectChange& e : d.reference->changes) o << "  " << change_text(e) << "\n";
   }
   o << "final FIT " << percent_text(d.final_fit_percent) << " (" << kFinalStage << ")\n";
   o << "  nuisance (" << kFinalStage << "): " << nuisance_text(d.final_nuisance) << "\n";
@@ -322,6 +328,13 @@ std::string diagnosis_html(const Diagnosis& d) {
       << html_number(c.delta_bic, 4) << "</td><td>" << html_escape(candidate_outcome(c, d))
       << "</td><td>" << html_escape(signed_size_text(c)) << "</td></tr>\n";
   o << "</table>\n";
+  if (d.reference) {
+    o << "<h2>Change against the reference recording</h2>\n<p>"
+      << html_escape(reference_heading(*d.reference)) << ".</p>\n<ul>";
+    for (const EffectChange& e : d.reference->changes)
+      o << "<li>" << html_escape(change_text(e)) << "</li>";
+    o << "</ul>\n";
+  }
   if (!d.notes.empty()) {
     o << "<h2>Notes</h2><ul>";
     for (const auto& note : d.notes) o << "<li>" << html_escape(note) << "</li>";

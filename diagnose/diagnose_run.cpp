@@ -7,11 +7,13 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <string>
 #include <utility>
 
 #include "core/error.hpp"
 #include "diagnose/candidate.hpp"
 #include "diagnose/candidate_registry.hpp"
+#include "diagnose/diagnose_change.hpp"
 #include "diagnose/diagnose_clock.hpp"
 #include "diagnose/diagnose_evidence.hpp"
 #include "diagnose/diagnose_findings.hpp"
@@ -19,6 +21,7 @@
 #include "diagnose/diagnose_nuisances.hpp"
 #include "diagnose/diagnose_rejection.hpp"
 #include "diagnose/diagnose_selection.hpp"
+#include "diagnose/diagnose_signed_size.hpp"
 #include "diagnose/diagnose_ties.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording_excerpt.hpp"
@@ -119,9 +122,10 @@ std::string fitted_model_note() {
          " sit inside the rig's hydraulic or electric loop and are not candidates on it";
 }
 
-}  // namespace
-
-Diagnosis diagnose(const lumped::Recording& recording, const DiagnoseOptions& options) {
+/// Diagnoses one recording (DiagnoseOptions::reference aside); with `for_comparison`, also the
+/// linear candidates' signed sizes beside its findings.
+Diagnosis diagnose_one(const lumped::Recording& recording, const DiagnoseOptions& options,
+                       bool for_comparison) {
   Clock clock(options.progress);
   // Memory and time grow with the samples: a recording too long is thinned, and says so.
   const std::size_t factor = lumped::thinning_factor(recording.t.size());
@@ -244,6 +248,10 @@ Diagnosis diagnose(const lumped::Recording& recording, const DiagnoseOptions& op
   d.final_mismatch = locate_mismatch(model.recording(), residual);
   d.unexplained = unexplained_of(residual, d.baseline.sse, sigma);
   d.final_nuisance = nuisance_of(model, current);
+  if (for_comparison && !d.findings.empty()) {
+    d.signed_beside_findings = signed_sizes_beside(model, current, options);
+    clock.stage("signed sizes beside the findings");
+  }
   d.final_nuisance.sampling_fit_gain = d.nuisance.sampling_fit_gain;
   std::size_t offset = model.static_params().size();
   for (auto& f : d.findings) {
@@ -278,6 +286,42 @@ Diagnosis diagnose(const lumped::Recording& recording, const DiagnoseOptions& op
     d.notes.push_back("the recording has no coil input: the field is taken as constant");
   if (d.findings.empty() && !d.baseline_stats.white)
     d.notes.push_back("the residual is not white but no candidate explains it significantly");
+  return d;
+}
+
+/// `options` for the reference recording: without a reference, progress stages prefixed.
+DiagnoseOptions reference_options(const DiagnoseOptions& options) {
+  DiagnoseOptions r = options;
+  r.reference.reset();
+  if (options.progress)
+    r.progress = [progress = options.progress](const ProgressEvent& e) {
+      ProgressEvent named = e;
+      named.stage = "reference: " + e.stage;
+      progress(named);
+    };
+  return r;
+}
+
+}  // namespace
+
+Diagnosis diagnose(const lumped::Recording& recording, const DiagnoseOptions& options) {
+  if (options.reference && !options.baseline_model)
+    throw InputError(
+        "--reference: a reference recording is compared through its effects' sizes against a "
+        "fitted model, so it needs one as the baseline: --baseline MODEL.json (from 'rheomag "
+        "fit --json' or 'fit-family --json')");
+  const bool compare = options.reference.has_value();
+  Diagnosis d = diagnose_one(recording, options, compare);
+  if (compare) {
+    const Diagnosis before = diagnose_one(*options.reference, reference_options(options), true);
+    d.reference = compare_with_reference(d, before);
+    std::string one_sided;
+    for (const std::string& name : d.reference->sized_on_one)
+      one_sided += (one_sided.empty() ? "" : ", ") + name;
+    if (!one_sided.empty())
+      d.notes.push_back("not compared with the reference (sized on only one of the two): " +
+                        one_sided);
+  }
   return d;
 }
 

@@ -14,6 +14,7 @@
 #include "diagnose/diagnose_fit.hpp"
 #include "diagnose/diagnose_locate.hpp"
 #include "diagnose/diagnose_model.hpp"
+#include "diagnose/reference_comparison.hpp"
 #include "identify/operating_range.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording.hpp"
@@ -50,6 +51,10 @@ struct DiagnoseOptions {
   bool current_path = true;
   /// A fitted model as the baseline instead of the sidecar's rig (`--baseline MODEL.json`).
   std::optional<ModelBaseline> baseline_model;
+  /// A recording of the same device to compare with (`--reference`): diagnosed against the same
+  /// fitted-model baseline, and each effect linear in its size differenced (Diagnosis::reference).
+  /// Needs `baseline_model`.
+  std::optional<lumped::Recording> reference;
 };
 
 /// One candidate tried at one step of forward selection.
@@ -147,11 +152,18 @@ struct Diagnosis {
   /// A fitted-model baseline: what of the recording's drive lies beyond the drive it was fitted
   /// on (identify/operating_range.hpp); empty otherwise.
   std::vector<identify::RangeExcess> beyond_training;
+  /// With DiagnoseOptions::reference: the reference's diagnosis summarised and the change of
+  /// each linear effect from it to this recording.
+  std::optional<ReferenceComparison> reference;
+  /// With DiagnoseOptions::reference and a finding: each linear candidate not named, sized with
+  /// its sign free beside the findings (diagnose_signed_size.hpp), what the comparison uses.
+  std::vector<CandidateScore> signed_beside_findings;
   std::vector<std::string> notes;
 };
 
-/// Diagnoses `rec` (its sidecar gives the baseline). Throws InputError for a recording too short
-/// or too flat to say anything, or a sidecar lacking what the baseline needs.
+/// Diagnoses `rec` (its sidecar gives the baseline), and `options.reference` when given. Throws
+/// InputError for a recording too short or too flat to say anything, a sidecar lacking what the
+/// baseline needs, or a reference without a fitted-model baseline.
 Diagnosis diagnose(const lumped::Recording& rec, const DiagnoseOptions& options = {});
 
 /// The diagnosis in the fixed JSON format (shared/docs/recording-format.md) plus details.

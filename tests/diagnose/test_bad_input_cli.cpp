@@ -347,3 +347,40 @@ TEST_F(BadInputCli, FittedModelBaselineNamesADriveBeyondItsTraining) {
   ASSERT_EQ(same.code, 0) << same.err;
   EXPECT_TRUE(nlohmann::json::parse(same.out).at("baseline").at("beyond_training").empty());
 }
+
+// `diagnose --reference`: compared through the effects' sizes against a fitted model, so without
+// --baseline it is refused (exit 2 naming both options); a reference that does not exist is
+// named. With the Bingham model of rec.csv, a recording with 40 N of seal friction added
+// (F_c tanh(v / 1 mm/s), a tenth of the 400 N force) diagnosed against rec.csv as reference gives
+// the friction's change within 10 % (the real-recording protocol's differential tolerance), in
+// the JSON and in the text.
+TEST_F(BadInputCli, ReferenceRecordingIsDifferencedAgainstAFittedModel) {
+  fitted_model();
+  const CliRun bare = run_in(dir, "diagnose rec.csv --reference rec.csv --quiet");
+  EXPECT_EQ(bare.code, 2) << bare.err;
+  EXPECT_NE(bare.err.find("--reference: "), std::string::npos) << bare.err;
+  EXPECT_NE(bare.err.find("--baseline MODEL.json"), std::string::npos) << bare.err;
+  const CliRun missing =
+      run_in(dir, "diagnose rec.csv --baseline model.json --reference gone.csv --quiet");
+  EXPECT_EQ(missing.code, 2) << missing.err;
+  EXPECT_NE(missing.err.find("gone.csv"), std::string::npos) << missing.err;
+
+  recording("rubbing", damper_sidecar("1.0e-3"), [](int k) {
+    return sine_force(k) + 40.0 * std::tanh(0.05 * std::sin(0.1 * k) / 1e-3);
+  });
+  const CliRun r =
+      run_in(dir, "diagnose rubbing.csv --baseline model.json --reference rec.csv --json --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("reference").at("recording"), "rec.csv");
+  double change = 0.0;
+  for (const auto& e : j.at("reference").at("changes"))
+    if (e.at("name") == "friction") change = e.at("change").get<double>();
+  EXPECT_NEAR(change / 40.0, 1.0, 0.1) << j.at("reference");
+  const CliRun text = run_in(dir,
+                             "diagnose rubbing.csv --baseline model.json --reference rec.csv "
+                             "--quiet");
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("change against the reference rec.csv"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("friction: coulomb_force"), std::string::npos) << text.out;
+}

@@ -103,6 +103,23 @@ def test_diagnose_equals_cli(two_currents):
     assert events  # each stage is reported
 
 
+def test_diagnose_against_a_reference_equals_cli(two_currents, tmp_path):
+    # The 1 A recording against a Bingham model of both, with the 0 A recording as the reference
+    # (`--reference`): the same comparison from both, each linear effect's change today minus
+    # the reference's size.
+    model = tmp_path / "both.json"
+    model.write_text(json.dumps(cli_json("fit-family", *two_currents, "--model", "bingham",
+                                         "--quiet")))
+    py = rheomag.diagnose(two_currents[1], baseline=str(model), reference=two_currents[0])
+    cli = cli_json("diagnose", two_currents[1], "--baseline", str(model), "--reference",
+                   two_currents[0], "--quiet")
+    assert without_timing(py) == without_timing(cli)
+    ref = py["reference"]
+    assert ref["recording"] == two_currents[0]
+    for e in ref["changes"]:
+        assert e["change"] == e["today"] - e["reference"]
+
+
 def test_simulate_beyond_the_fitted_drive_warns_as_the_cli_notes(two_currents, tmp_path):
     # A model fitted at 0 A only, run on the 1 A recording: its field lies beyond the fitted
     # drive. Python warns (UserWarning) with the text of the CLI's stderr note; within the drive
