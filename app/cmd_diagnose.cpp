@@ -138,8 +138,11 @@ const bool diagnose_registered = app::register_command([](CLI::App& root) {
   cmd->add_option("--reference", o->reference,
                   "A recording of the same device from before (its sidecar beside it), diagnosed "
                   "against the same --baseline model: the report adds each effect's change from "
-                  "it (friction, fluid_inertia, gas_spring: today's size minus the reference's, "
-                  "so what the model already missed on this device is not counted as a change)")
+                  "it (friction, fluid_inertia, gas_spring: both recordings fitted with what "
+                  "either named and these three, today's output delay held at the reference's; "
+                  "today's size minus the reference's, so what the model already missed on this "
+                  "device is not counted as a change; effects the drive cannot tell apart, a "
+                  "mass and a spring on one sinusoid, also given together)")
       ->check(rheomag::app::non_empty());
   cmd->add_option("--out", o->out, "Folder for diagnosis.json, report.html and traces.csv")
       ->check(rheomag::app::non_empty());

@@ -142,11 +142,19 @@ ModelFit fit_model(const DiagnosisModel& model, const std::vector<const Candidat
   fit.layout = model.layout(effects);
   const std::size_t p = fit.layout.size();
   if (start.size() != p) throw InputError("diagnose: internal parameter count mismatch");
-  if (settings.signed_last_size && !effects.empty()) {
-    ParamDef& size = fit.layout[p - effects.back()->params(model).size()];
+  const auto sign_free = [](ParamDef& size) {
     size.log_scale = false;
     size.typical = size.nominal;
     size.lower = -size.upper;
+  };
+  if (settings.signed_last_size && !effects.empty())
+    sign_free(fit.layout[p - effects.back()->params(model).size()]);
+  if (settings.signed_linear_sizes) {
+    std::size_t first = model.static_params().size();
+    for (const Candidate* c : effects) {
+      if (c->linear_in_size(model)) sign_free(fit.layout[first]);
+      first += c->params(model).size();
+    }
   }
   std::vector<double> z(p), lo(p), hi(p);
   for (std::size_t j = 0; j < p; ++j) {

@@ -36,6 +36,8 @@ struct FitSettings {
   /// Fit the last effect's size (its first parameter) on a linear scale within +-its upper
   /// bound: its sign free (Candidate::linear_in_size).
   bool signed_last_size = false;
+  /// The same for every effect linear in its size (a reference comparison's joint fit).
+  bool signed_linear_sizes = false;
 };
 
 /// Fits `effects` on top of the baseline, starting from `start` (SI values in the order of

@@ -159,10 +159,19 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
                   {"change", e.change}};
       for (const DerivedParam& q : e.derived_change)
         row["derived_change"][q.name] = {{"change", q.value}, {"unit", q.unit}};
+      for (const SameForce& same : e.same_force) {
+        json one = {{"name", same.effect->name()},
+                    {"correlation", same.correlation},
+                    {"combined_change", same.combined_change}};
+        for (const DerivedParam& q : same.combined_derived)
+          one["combined_derived"][q.name] = {{"change", q.value}, {"unit", q.unit}};
+        row["one_force_with"].push_back(std::move(one));
+      }
       changes.push_back(std::move(row));
     }
     out["reference"] = {{"recording", d.reference->recording},
                         {"baseline_fit_percent", d.reference->baseline_fit_percent},
+                        {"delay", d.reference->reference_delay},
                         {"missing_physics", d.reference->findings},
                         {"changes", std::move(changes)},
                         {"sized_on_one_only", d.reference->sized_on_one}};

@@ -21,7 +21,6 @@
 #include "diagnose/diagnose_nuisances.hpp"
 #include "diagnose/diagnose_rejection.hpp"
 #include "diagnose/diagnose_selection.hpp"
-#include "diagnose/diagnose_signed_size.hpp"
 #include "diagnose/diagnose_ties.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording_excerpt.hpp"
@@ -122,10 +121,14 @@ std::string fitted_model_note() {
          " sit inside the rig's hydraulic or electric loop and are not candidates on it";
 }
 
-/// Diagnoses one recording (DiagnoseOptions::reference aside); with `for_comparison`, also the
-/// linear candidates' signed sizes beside its findings.
-Diagnosis diagnose_one(const lumped::Recording& recording, const DiagnoseOptions& options,
-                       bool for_comparison) {
+/// One recording's diagnosis and the model it was made on (kept for a reference comparison).
+struct OneDiagnosis {
+  Diagnosis d;
+  std::unique_ptr<DiagnosisModel> model;
+};
+
+/// Diagnoses one recording (DiagnoseOptions::reference aside).
+OneDiagnosis diagnose_one(const lumped::Recording& recording, const DiagnoseOptions& options) {
   Clock clock(options.progress);
   // Memory and time grow with the samples: a recording too long is thinned, and says so.
   const std::size_t factor = lumped::thinning_factor(recording.t.size());
@@ -248,10 +251,6 @@ Diagnosis diagnose_one(const lumped::Recording& recording, const DiagnoseOptions
   d.final_mismatch = locate_mismatch(model.recording(), residual);
   d.unexplained = unexplained_of(residual, d.baseline.sse, sigma);
   d.final_nuisance = nuisance_of(model, current);
-  if (for_comparison && !d.findings.empty()) {
-    d.signed_beside_findings = signed_sizes_beside(model, current, options);
-    clock.stage("signed sizes beside the findings");
-  }
   d.final_nuisance.sampling_fit_gain = d.nuisance.sampling_fit_gain;
   std::size_t offset = model.static_params().size();
   for (auto& f : d.findings) {
@@ -286,7 +285,7 @@ Diagnosis diagnose_one(const lumped::Recording& recording, const DiagnoseOptions
     d.notes.push_back("the recording has no coil input: the field is taken as constant");
   if (d.findings.empty() && !d.baseline_stats.white)
     d.notes.push_back("the residual is not white but no candidate explains it significantly");
-  return d;
+  return {std::move(d), std::move(chosen)};
 }
 
 /// `options` for the reference recording: without a reference, progress stages prefixed.
@@ -310,11 +309,13 @@ Diagnosis diagnose(const lumped::Recording& recording, const DiagnoseOptions& op
         "--reference: a reference recording is compared through its effects' sizes against a "
         "fitted model, so it needs one as the baseline: --baseline MODEL.json (from 'rheomag "
         "fit --json' or 'fit-family --json')");
-  const bool compare = options.reference.has_value();
-  Diagnosis d = diagnose_one(recording, options, compare);
-  if (compare) {
-    const Diagnosis before = diagnose_one(*options.reference, reference_options(options), true);
-    d.reference = compare_with_reference(d, before);
+  OneDiagnosis today = diagnose_one(recording, options);
+  if (options.reference) {
+    const OneDiagnosis before = diagnose_one(*options.reference, reference_options(options));
+    Clock clock(options.progress);
+    Diagnosis& d = today.d;
+    d.reference = compare_with_reference(*today.model, d, *before.model, before.d, options);
+    clock.stage("comparison with the reference");
     std::string one_sided;
     for (const std::string& name : d.reference->sized_on_one)
       one_sided += (one_sided.empty() ? "" : ", ") + name;
@@ -322,7 +323,7 @@ Diagnosis diagnose(const lumped::Recording& recording, const DiagnoseOptions& op
       d.notes.push_back("not compared with the reference (sized on only one of the two): " +
                         one_sided);
   }
-  return d;
+  return std::move(today.d);
 }
 
 }  // namespace rheomag::diagnose

@@ -155,9 +155,6 @@ struct Diagnosis {
   /// With DiagnoseOptions::reference: the reference's diagnosis summarised and the change of
   /// each linear effect from it to this recording.
   std::optional<ReferenceComparison> reference;
-  /// With DiagnoseOptions::reference and a finding: each linear candidate not named, sized with
-  /// its sign free beside the findings (diagnose_signed_size.hpp), what the comparison uses.
-  std::vector<CandidateScore> signed_beside_findings;
   std::vector<std::string> notes;
 };
 

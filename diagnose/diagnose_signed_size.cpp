@@ -2,11 +2,8 @@
 
 #include "diagnose/diagnose_signed_size.hpp"
 
-#include <algorithm>
-
 #include "core/error.hpp"
 #include "diagnose/candidate.hpp"
-#include "diagnose/candidate_registry.hpp"
 #include "diagnose/diagnose_nuisances.hpp"
 
 namespace rheomag::diagnose {
@@ -52,8 +49,6 @@ void add_signed_size(const DiagnosisModel& model, const ModelFit& current,
     start.push_back(0.0);
     auto s = settings;
     s.fixed = held_in_candidates(model, effects, current.values);
-    for (std::size_t j = 0; j < settings.fixed.size() && j < s.fixed.size(); ++j)
-      if (settings.fixed[j]) s.fixed[j] = true;  // held by the caller as well
     try {
       const ModelFit fit = signed_fit(model, effects, start, s);
       score.signed_params.assign(fit.values.end() - 1, fit.values.end());
@@ -62,32 +57,6 @@ void add_signed_size(const DiagnosisModel& model, const ModelFit& current,
     }
   }
   score.signed_derived = c->derived_params(model, score.signed_params);
-}
-
-std::vector<CandidateScore> signed_sizes_beside(const DiagnosisModel& model,
-                                                const ModelFit& final_fit,
-                                                const DiagnoseOptions& options) {
-  FitSettings settings;  // as forward selection fits its candidates
-  settings.max_iterations = options.max_iterations;
-  settings.threads = options.threads;
-  settings.standard_errors = false;
-  // The named effects held at their final values: on one sinusoid a spring and a mass are one
-  // force, so beside a free mass a spring's size would be wherever the fit left the valley.
-  settings.fixed.assign(final_fit.values.size(), false);
-  for (std::size_t j = model.static_params().size(); j < final_fit.values.size(); ++j)
-    settings.fixed[j] = true;
-  std::vector<CandidateScore> scores;
-  for (const Candidate* c : applicable_candidates(model)) {
-    const auto& held = final_fit.effects;
-    if (!c->linear_in_size(model) || std::find(held.begin(), held.end(), c) != held.end()) continue;
-    CandidateScore score;
-    score.effect = c;
-    score.step = -1;
-    score.screened = true;  // sized from 0 with the sign free, not from a fit of this step
-    add_signed_size(model, final_fit, settings, score);
-    if (!score.signed_params.empty()) scores.push_back(std::move(score));
-  }
-  return scores;
 }
 
 }  // namespace rheomag::diagnose

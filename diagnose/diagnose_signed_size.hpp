@@ -15,17 +15,8 @@ namespace rheomag::diagnose {
 /// bounds keeps its fitted size (the sign is not what held it); one screened out or fitted at its
 /// lower bound is fitted again with the size on a linear scale within +-its upper bound, from
 /// 0, the other parameters free or held as in `settings` (a delay held at its bound is also
-/// tried free, the lower error kept; what `settings.fixed` holds stays held). A fit that cannot be
-/// simulated leaves them empty.
+/// tried free, the lower error kept). A fit that cannot be simulated leaves them empty.
 void add_signed_size(const DiagnosisModel& model, const ModelFit& current,
                      const FitSettings& settings, CandidateScore& score);
-
-/// The signed size of each applicable candidate linear in its size that `final_fit` does not
-/// hold, fitted with its sign free on top of `final_fit` (its named effects held, the nuisances
-/// as in a forward step): what the recording carries of it besides what was named. One score
-/// each (step -1, screened); none whose fit cannot be simulated.
-std::vector<CandidateScore> signed_sizes_beside(const DiagnosisModel& model,
-                                                const ModelFit& final_fit,
-                                                const DiagnoseOptions& options);
 
 }  // namespace rheomag::diagnose

@@ -34,6 +34,7 @@
 #include <filesystem>
 #include <iostream>
 #include <numeric>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -351,12 +352,13 @@ TEST(DiagnoseRealInjection, EffectsBelowTheNamingBarAreSizedWithTheirSignFree) {
 
 // The same differencing done by the diagnosis itself (`diagnose --reference`): the held-out
 // 0.25 A test with a seal friction and a moving mass of a tenth of its force rms added, diagnosed
-// against its family with the unmodified test as the reference. Reference: the injected sizes,
-// within 10 % (the protocol's differential tolerance, as above; measured +1.1 % for the friction
-// and +2.4 % for the mass, docs/diagnosis.md "Against a reference recording"); the spring, not
-// injected, changes by less than a tenth of a spring of a tenth of the force (measured 2 % of
-// it; -22 % while the named mass was left free beside it: on one sinusoid a spring and a mass
-// are one force); and the reference's own diagnosis summarised (nothing named on it, as above).
+// against its family with the unmodified test as the reference (both fitted with one set of
+// effects, today's output delay held at the reference's). Reference: the injected sizes, within
+// 10 % (the protocol's differential tolerance, as above; measured -2.1 % for the friction and
+// -0.2 % for the mass, docs/diagnosis.md "Against a reference recording"), also the mass taken
+// together with the spring it cannot be told from on this drive; the spring, not injected,
+// changes by less than a tenth of a spring of a tenth of the force (measured 0.5 % of it); and
+// the reference's own diagnosis summarised (nothing named on it, as above).
 TEST(DiagnoseRealInjection, TheChangeFromAReferenceRecordingIsTheEffect) {
   const std::string test = "10mm1Hz0x25A";
   if (!std::filesystem::exists(kDir + test + ".csv")) GTEST_SKIP() << "shared data absent";
@@ -383,6 +385,8 @@ TEST(DiagnoseRealInjection, TheChangeFromAReferenceRecordingIsTheEffect) {
     if (e.effect->name() == "fluid_inertia") {
       ASSERT_EQ(e.derived_change.size(), 1u);
       m_change = e.derived_change[0].value;  // the moving mass [kg]
+      for (const auto& same : e.same_force)
+        EXPECT_NEAR(same.combined_derived.at(0).value / mass, 1.0, 0.1) << same.effect->name();
     }
   }
   std::cout << "friction: injected " << coulomb << " N, change " << f_change
@@ -394,6 +398,63 @@ TEST(DiagnoseRealInjection, TheChangeFromAReferenceRecordingIsTheEffect) {
                         rms_about_mean(original.column("displacement"));  // [N/m]
   EXPECT_LT(std::abs(k_change), 0.1 * spring) << "a spring changed that was not injected";
   EXPECT_EQ(d.reference->sized_on_one.size(), 0u);
+}
+
+// On one sinusoid a mass and a spring are one force (m a = -m w^2 x). The family of the 0.5 A
+// test run on a 2 mm / 5 Hz sinusoid at 1 kHz (0.5 A, velocity the backward difference of the
+// displacement, 0.3 % force noise) is the reference; the same with a mass of a tenth of the force
+// rms is today's recording, both against that family. Reference: the injected mass within 10 %
+// when taken together with the spring the drive cannot tell it from (measured +0.1 %; the mass
+// alone lies anywhere along the two's valley, here -6.9 kg against 88.5 injected), and the two
+// forces' shapes correlating at |r| >= 0.99 (measured -0.9999).
+TEST(DiagnoseRealInjection, AMassOnASinusoidIsOneForceWithASpring) {
+  const std::string test = "10mm1Hz0x5A";
+  if (!std::filesystem::exists(kDir + test + ".csv")) GTEST_SKIP() << "shared data absent";
+  const ModelBaseline model = family_without(test);
+  Recording reference = held_out(test);
+  constexpr double kRate = 1000.0, kStroke = 2e-3, kFrequency = 5.0;  // [Hz, m, Hz]
+  const std::size_t n = 4000;
+  reference.t.resize(n);
+  std::vector<double> x(n), v(n), a(n, 0.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    reference.t[k] = static_cast<double>(k) / kRate;
+    x[k] = 0.5 * kStroke * std::sin(2.0 * M_PI * kFrequency * reference.t[k]);
+    v[k] = k == 0 ? 0.0 : (x[k] - x[k - 1]) * kRate;
+  }
+  v[0] = v[1];
+  for (std::size_t k = 1; k + 1 < n; ++k) a[k] = (x[k + 1] - 2.0 * x[k] + x[k - 1]) * kRate * kRate;
+  a[0] = a[1], a[n - 1] = a[n - 2];
+  reference.columns = {{"displacement", x},
+                       {"velocity", v},
+                       {"current", std::vector<double>(n, 0.5)},
+                       {"force", std::vector<double>(n, 0.0)}};
+  reference.columns["force"] = rheomag::identify::simulate_fit_model(reference, model.model);
+  const double force_rms = rms_about_mean(reference.column("force"));
+  std::mt19937 random(7);
+  std::normal_distribution<double> noise(0.0, 0.003 * force_rms);
+  for (double& f : reference.columns["force"]) f += noise(random);
+  const double mass = 0.1 * force_rms / rms_about_mean(a);  // [kg]
+  Recording heavier = reference;
+  for (std::size_t k = 0; k < n; ++k)
+    heavier.columns["force"][k] += model_sign(reference) * mass * a[k];
+  rheomag::diagnose::DiagnoseOptions options;
+  options.baseline_model = model;
+  options.reference = reference;
+  const Diagnosis d = rheomag::diagnose::diagnose(heavier, options);
+  print("2 mm / 5 Hz with " + std::to_string(mass) + " kg, against it without", d);
+  ASSERT_TRUE(d.reference.has_value());
+  bool one_force = false;
+  for (const auto& e : d.reference->changes) {
+    std::cout << "  " << rheomag::diagnose::change_text(e) << "\n";
+    if (e.effect->name() != "fluid_inertia") continue;
+    for (const auto& same : e.same_force) {
+      if (same.effect->name() != "gas_spring") continue;
+      one_force = true;
+      EXPECT_GE(std::abs(same.correlation), 0.99);
+      EXPECT_NEAR(same.combined_derived.at(0).value / mass, 1.0, 0.1);
+    }
+  }
+  EXPECT_TRUE(one_force) << "the mass is not reported as one force with the spring";
 }
 
 const std::string kDyke = std::string(RHEOMAG_SHARED_DIR) + "/data/dyke1996/ranran_50.csv";
