@@ -115,8 +115,8 @@ py::object fit_family(const std::vector<std::string>& recordings, const std::str
 }
 
 py::object diagnose_recording(const std::string& recording, const std::string& samples,
-                              const std::string& baseline, const std::string& reference,
-                              const std::string& out, const py::object& progress) {
+                              const std::string& baseline, const std::string& out,
+                              const py::object& progress, const std::string& reference) {
   lumped::Recording rec = load_recording(recording);
   diagnose::DiagnoseOptions options;
   if (!reference.empty()) options.reference = load_recording(reference);  // holds the GIL
@@ -200,8 +200,8 @@ void bind_identify(py::module_& m) {
         "generated `signals` (duration [s], rate [Hz]), as `rheomag simulate`; returns the "
         "simulated Recording (and writes it to `out`, CSV + sidecar, when given).");
   m.def("diagnose", &diagnose_recording, py::arg("recording"), py::arg("samples") = "",
-        py::arg("baseline") = "", py::arg("reference") = "", py::arg("out") = "",
-        py::arg("progress") = py::none(),
+        py::arg("baseline") = "", py::arg("out") = "", py::arg("progress") = py::none(),
+        py::arg("reference") = "",
         "The physics a recording shows and its baseline model leaves out (as `rheomag diagnose "
         "REC --json`; samples 'a:b', baseline a fitted-model JSON, reference an earlier "
         "recording of the device to difference the effects' sizes against, out a folder for "
