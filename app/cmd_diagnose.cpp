@@ -120,8 +120,11 @@ const bool diagnose_registered = app::register_command([](CLI::App& root) {
       "   above one sample and a size parameter known to 50 %, has parameters its candidate\n"
       "   finds plausible (also after the joint re-fit), and cuts the error on held-out time\n"
       "   blocks by > 3 %;\n"
-      "   forward selection, then a joint re-fit. Candidates that explain the data equally are\n"
-      "   reported together.\n"
+      "   forward selection, then a joint re-fit (the output delay held at 0 there where BIC\n"
+      "   does not require it). Candidates that explain the data equally are reported\n"
+      "   together; each size linear in its effect (mass, friction, spring) comes with its trade\n"
+      "   per ms of output delay and the effects of its shape on the drive ('size:' lines,\n"
+      "   JSON size_sensitivity): what one recording cannot tell it from.\n"
       "Exit 2 for bad input (recording format, missing sidecar keys, a [valve] case that does not\n"
       "exist or solve, a --baseline model of another rig or other columns, recording too\n"
       "short/flat).");

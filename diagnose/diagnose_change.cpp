@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "diagnose/candidate_registry.hpp"
 #include "diagnose/diagnose_findings.hpp"
+#include "diagnose/size_sensitivity.hpp"
 
 namespace rheomag::diagnose {
 
@@ -90,52 +91,17 @@ double size_in(const DiagnosisModel& model, const ModelFit& fit, const Candidate
   throw InputError("diagnose: internal: " + c->name() + " is not in the comparison fit");
 }
 
-/// The output of `fit`'s model per unit size of its linear effect `c` (the model is linear in
-/// it): two evaluations, at its fitted size and a tenth of its bound more; mean removed.
-std::vector<double> shape_of(const DiagnosisModel& model, const ModelFit& fit, const Candidate* c,
-                             const DiagnoseOptions& options) {
-  std::size_t at = model.static_params().size();
-  for (const Candidate* e : fit.effects) {
-    if (e == c) break;
-    at += e->params(model).size();
-  }
-  const double step = 0.1 * c->params(model).front().upper;
-  auto moved = fit.values;
-  moved[at] += step;
-  FitSettings evaluate;
-  evaluate.max_iterations = 0;
-  evaluate.threads = options.threads;
-  evaluate.standard_errors = false;
-  evaluate.signed_linear_sizes = true;
-  const ModelFit there = fit_model(model, fit.effects, moved, evaluate);
-  std::vector<double> shape(there.prediction.size());
-  double mean = 0.0;
-  for (std::size_t k = 0; k < shape.size(); ++k) {
-    shape[k] = (there.prediction[k] - fit.prediction[k]) / step;
-    mean += shape[k] / static_cast<double>(shape.size());
-  }
-  for (double& v : shape) v -= mean;
-  return shape;
-}
-
-double dot(const std::vector<double>& a, const std::vector<double>& b) {
-  double s = 0.0;
-  for (std::size_t k = 0; k < a.size(); ++k) s += a[k] * b[k];
-  return s;
-}
-
 /// Pairs of changes whose forces have one shape on today's drive: each gets the other's change
 /// added, expressed in its own size.
 void add_same_forces(const DiagnosisModel& model, const ModelFit& fit,
-                     const DiagnoseOptions& options, std::vector<EffectChange>& changes) {
-  constexpr double kOneForce = 0.99;  // |correlation| from which the drive cannot tell them apart
+                     std::vector<EffectChange>& changes) {
   std::vector<std::vector<double>> shapes;
-  for (const EffectChange& e : changes) shapes.push_back(shape_of(model, fit, e.effect, options));
+  for (const EffectChange& e : changes) shapes.push_back(unit_output_shape(model, fit, e.effect));
   for (std::size_t i = 0; i < changes.size(); ++i)
     for (std::size_t j = 0; j < changes.size(); ++j) {
-      const double ii = dot(shapes[i], shapes[i]), jj = dot(shapes[j], shapes[j]);
+      const double ii = shape_dot(shapes[i], shapes[i]), jj = shape_dot(shapes[j], shapes[j]);
       if (i == j || !(ii > 0.0) || !(jj > 0.0)) continue;
-      const double ij = dot(shapes[i], shapes[j]);
+      const double ij = shape_dot(shapes[i], shapes[j]);
       const double correlation = ij / std::sqrt(ii * jj);
       if (std::abs(correlation) < kOneForce) continue;
       SameForce same;
@@ -203,7 +169,7 @@ ReferenceComparison compare_with_reference(const DiagnosisModel& today_model,
         if (q.name == r.name) e.derived_change.push_back({q.name, q.value - r.value, q.unit});
     out.changes.push_back(std::move(e));
   }
-  add_same_forces(today_model, now, options, out.changes);
+  add_same_forces(today_model, now, out.changes);
   return out;
 }
 

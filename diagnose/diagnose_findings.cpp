@@ -81,6 +81,46 @@ std::string parameter_text(const Finding& f, std::size_t j, const std::string& p
   return text;
 }
 
+namespace {
+
+/// `size` of finding `f` as its first derived quantity when it has one (a moving mass rather
+/// than an inertance), else in its size's unit; `derived` the derived quantities at `size`.
+std::string size_text(const Finding& f, double size, const std::vector<DerivedParam>& derived) {
+  if (!derived.empty()) return value_text(derived.front().value, derived.front().unit);
+  return value_text(size, f.param_units.empty() ? "" : f.param_units.front());
+}
+
+}  // namespace
+
+std::vector<std::string> sensitivity_lines(const Finding& f) {
+  std::vector<std::string> lines;
+  const SizeSensitivity& s = f.sensitivity;
+  if (std::isfinite(s.per_delay) && !f.params.empty()) {
+    const double per_ms = 1e-3 * s.per_delay;
+    std::vector<DerivedParam> derived = s.derived_per_delay;
+    for (auto& q : derived) q.value *= 1e-3;
+    const double share = f.params.front() != 0.0 ? std::abs(per_ms / f.params.front()) : 0.0;
+    lines.push_back(std::string(per_ms >= 0.0 ? "+" : "") + size_text(f, per_ms, derived) +
+                    " per ms of output delay (" + percent_text(100.0 * share) +
+                    " of it): the model's timing error at this drive's frequency lands in the "
+                    "size, not in its standard error");
+  }
+  for (const ShapeTwin& twin : s.twins) {
+    if (!std::isfinite(twin.same_force_at)) continue;
+    char correlation[32];
+    std::snprintf(correlation, sizeof correlation, "%+.4f", twin.correlation);
+    std::string derived;
+    for (const DerivedParam& q : twin.same_force_derived)
+      derived += ", " + q.name + " = " + value_text(q.value, q.unit);
+    lines.push_back("one force with " + twin.effect->name() + " on this drive (correlation " +
+                    correlation + "): the same force as " + twin.param + " = " +
+                    value_text(twin.same_force_at, twin.unit) + derived +
+                    "; one recording of this drive cannot tell them apart (a reference "
+                    "recording, --reference, sizes the change of the two together)");
+  }
+  return lines;
+}
+
 std::string output_unit(const Diagnosis& d) {
   return d.output_column == "force" ? "N" : d.output_column == "current" ? "A" : "Pa";
 }

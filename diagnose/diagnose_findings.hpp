@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "diagnose/candidate.hpp"
 #include "diagnose/diagnose_fit.hpp"
@@ -43,6 +44,11 @@ std::string value_text(double value, const std::string& unit);
 /// "+10 ms (+2.00 samples, output behind the drives)", "-8.64 ms (-1.73 samples, output ahead of
 /// the drives)", or "... output and drives aligned" within a quarter sample.
 std::string delay_text(const Nuisance& u);
+
+/// What one recording cannot tell finding `f`'s size from (Finding::sensitivity), one sentence
+/// each: "+24.1 kg per ms of output delay (38 % of it): ..."; "one force with gas_spring on this
+/// drive (correlation -1.000): ..."; none for an effect not linear in its size.
+std::vector<std::string> sensitivity_lines(const Finding& f);
 
 /// "coulomb_force = 9.80 N +- 0.30 N" (standard error with 2 digits, or "(standard error
 /// unbounded)") for parameter `j` of finding `f`; `plus_minus` spells the sign ("+-" or HTML's).

@@ -29,6 +29,36 @@ nlohmann::json nuisance_json(const Nuisance& u) {
   return j;
 }
 
+/// A finding's size sensitivity (Finding::sensitivity): per ms of output delay, in its size's
+/// parameter and derived quantities, and the linear effects of the same shape on this drive.
+nlohmann::json sensitivity_json(const Finding& f) {
+  using json = nlohmann::json;
+  const SizeSensitivity& s = f.sensitivity;
+  json out = json::object();
+  if (std::isfinite(s.per_delay) && !f.param_names.empty()) {
+    json per = {{f.param_names.front(), 1e-3 * s.per_delay}};
+    for (const auto& q : s.derived_per_delay) per[q.name] = 1e-3 * q.value;
+    out["per_ms_of_output_delay"] = std::move(per);
+  }
+  out["one_force_with"] = json::array();
+  for (const ShapeTwin& twin : s.twins) {
+    json same = {{"name", twin.effect->name()},
+                 {"correlation", twin.correlation},
+                 {"param", twin.param},
+                 {"unit", twin.unit}};
+    if (std::isfinite(twin.same_force_at)) {
+      json at = {{twin.param, twin.same_force_at}};
+      for (const auto& q : twin.same_force_derived) at[q.name] = q.value;
+      same["same_force_at"] = std::move(at);
+    }
+    json per = {{f.param_names.front(), twin.size_per_unit}};
+    for (const auto& q : twin.derived_per_unit) per[q.name] = q.value;
+    same["per_unit_of_it"] = std::move(per);
+    out["one_force_with"].push_back(std::move(same));
+  }
+  return out;
+}
+
 }  // namespace
 
 nlohmann::json diagnosis_json(const Diagnosis& d) {
@@ -78,6 +108,8 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
               {"heldout_gain", f.heldout_gain},
               {"share_of_residual_above_noise", f.share},
               {"evidence", f.evidence}};
+    if (std::isfinite(f.sensitivity.per_delay) || !f.sensitivity.twins.empty())
+      e["size_sensitivity"] = sensitivity_json(f);
     if (!f.ruled_out_by_current.empty()) {
       e["ruled_out_by_measured_current"] = json::array();
       for (const Candidate* a : f.ruled_out_by_current)

@@ -54,6 +54,34 @@ bool keep_better_with_free_delay(const DiagnosisModel& model,
   }
 }
 
+bool align_unrequired_delay(const DiagnosisModel& model, ModelFit& fit,
+                            const FitSettings& settings) {
+  const std::size_t j = model.delay_index();
+  const double n = static_cast<double>(fit.samples);
+  if (fit.values[j] == 0.0 || !(n > 1.0) || !(fit.sse > 0.0) || !std::isfinite(fit.sse))
+    return false;
+  auto s = settings;
+  s.fixed.assign(fit.values.size(), false);
+  s.fixed[j] = true;
+  auto start = fit.values;
+  start[j] = 0.0;
+  try {
+    auto aligned = fit_model(model, fit.effects, start, s);
+    if (aligned.sse < fit.sse) {
+      // The delayed fit stopped short of its optimum: free the delay again from the aligned fit.
+      auto refit = fit_model(model, fit.effects, aligned.values, settings);
+      if (refit.sse < fit.sse) fit = std::move(refit);
+    }
+    // BIC of the delay: what its free fit gains against the one parameter it costs.
+    const double delta_bic = n * std::log(aligned.sse / fit.sse) - std::log(n);
+    if (!(delta_bic <= 0.0)) return false;
+    fit = std::move(aligned);
+    return true;
+  } catch (const ConvergenceError&) {
+    return false;  // the delayed fit stands
+  }
+}
+
 void recalibrate_nuisances(const DiagnosisModel& model, ModelFit& fit, const FitSettings& base) {
   auto free = held_in_candidates(model, fit.effects, fit.values);
   bool any = false;

@@ -140,6 +140,7 @@ std::string diagnosis_text(const Diagnosis& d) {
     }
     for (const auto& q : f.derived)
       o << "    derived: " << q.name << " = " << value_text(q.value, q.unit) << "\n";
+    for (const std::string& line : sensitivity_lines(f)) o << "    size: " << line << "\n";
     o << "    " << f.evidence << "\n";
     if (!f.ambiguous_with.empty())
       o << "    " << ambiguity_text(f, d) << "\n    to separate them: " << f.separating_measurement
@@ -215,6 +216,8 @@ std::string diagnosis_html(const Diagnosis& d) {
       for (const auto& q : f.derived)
         o << "<i>derived:</i> " << html_escape(q.name + " = " + value_text(q.value, q.unit))
           << "<br>";
+      for (const std::string& line : sensitivity_lines(f))
+        o << "<i>size:</i> " << html_escape(line) << "<br>";
       o << "</td><td>" << selection_stage(f.step) << "; " << percent_text(f.fit_percent)
         << "</td><td>" << html_escape(f.evidence);
       if (!f.ambiguous_with.empty())

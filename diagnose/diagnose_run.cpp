@@ -57,6 +57,21 @@ void check_informative(const DiagnosisModel& model) {
                      "diagnose");
 }
 
+/// Each finding linear in its size gets its size's trade with the output delay and the
+/// applicable linear candidates of the same shape, measured on the final fit `fit`.
+void add_size_sensitivities(const DiagnosisModel& model, const ModelFit& fit,
+                            const DiagnoseOptions& options, std::vector<Finding>& findings) {
+  if (findings.empty()) return;
+  std::vector<const Candidate*> linear;
+  for (const Candidate* c : applicable_candidates(model))
+    if (c->linear_in_size(model)) linear.push_back(c);
+  const auto sensitivities =
+      size_sensitivities(model, fit, linear, options.max_iterations, options.threads);
+  for (Finding& f : findings)
+    for (std::size_t i = 0; i < fit.effects.size(); ++i)
+      if (fit.effects[i] == f.effect) f.sensitivity = sensitivities[i];
+}
+
 /// Share of the residual energy above the white-noise floor n sigma^2.
 Unexplained unexplained_of(const std::vector<double>& residual, double baseline_sse, double sigma) {
   Unexplained u;
@@ -242,6 +257,14 @@ OneDiagnosis diagnose_one(const lumped::Recording& recording, const DiagnoseOpti
     final_settings.max_iterations = 2 * options.max_iterations;
     revisit_ties(model, current, final_settings, options.bic_margin, d);
     drop_faded_findings(model, current, evidence, options, d);
+    const double delay = current.values[model.delay_index()];
+    if (options.align_delay && !d.findings.empty() &&
+        align_unrequired_delay(model, current, final_settings))
+      d.notes.push_back(
+          "output delay held at 0 in the final fit: the " + value_text(1e3 * delay, "ms") +
+          " it was fitted with were not required by the data (with the channels aligned BIC is "
+          "no higher); where the delay and a finding are one force on this drive, the "
+          "finding's size takes what the delay held (see its size line)");
   }
   clock.stage("joint re-fit");
   d.final_fit = current;
@@ -264,6 +287,8 @@ OneDiagnosis diagnose_one(const lumped::Recording& recording, const DiagnoseOpti
     f.derived = f.effect->derived_params(model, f.params);
     f.evidence = finding_evidence(f, d, current);
   }
+  add_size_sensitivities(model, current, options, d.findings);
+  if (!d.findings.empty()) clock.stage("size sensitivities");
   const bool chamber_finding = std::any_of(d.findings.begin(), d.findings.end(), [](const auto& f) {
     return f.effect->uses_chamber_volume();
   });

@@ -15,6 +15,7 @@
 #include "diagnose/diagnose_locate.hpp"
 #include "diagnose/diagnose_model.hpp"
 #include "diagnose/reference_comparison.hpp"
+#include "diagnose/size_sensitivity.hpp"
 #include "identify/operating_range.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording.hpp"
@@ -49,6 +50,11 @@ struct DiagnoseOptions {
   /// Drive the states that remember the current's path (the Duhem candidate) by a noisy
   /// current's path estimate (current_path.hpp); false: by its samples (for comparison).
   bool current_path = true;
+  /// Hold the output delay at 0 in the final fit where the data do not require it (BIC), so that
+  /// an effect that is one force with the delay on the drive takes its whole size
+  /// (diagnose_nuisances.hpp, align_unrequired_delay); false: the fitted delay kept (for
+  /// comparison).
+  bool align_delay = true;
   /// A fitted model as the baseline instead of the sidecar's rig (`--baseline MODEL.json`).
   std::optional<ModelBaseline> baseline_model;
   /// A recording of the same device to compare with (`--reference`): diagnosed against the same
@@ -98,6 +104,9 @@ struct Finding {
   std::string separating_measurement;  ///< what would tell them apart
   /// candidates that fit the output as well but not the measured coil current
   std::vector<const Candidate*> ruled_out_by_current;
+  /// For an effect linear in its size: how its size trades with the output delay and with
+  /// effects of the same shape on this drive (systematic, not in the standard error).
+  SizeSensitivity sensitivity;
 };
 
 /// The nuisances calibrated in the baseline (never named as physics).
