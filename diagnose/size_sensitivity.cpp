@@ -27,9 +27,9 @@ std::size_t first_param_of(const DiagnosisModel& model,
 std::vector<DerivedParam> derived_at(const DiagnosisModel& model, const ModelFit& fit,
                                      const Candidate* c, double size) {
   const std::size_t at = first_param_of(model, fit.effects, c);
-  std::vector<double> params(fit.values.begin() + static_cast<std::ptrdiff_t>(at),
-                             fit.values.begin() +
-                                 static_cast<std::ptrdiff_t>(at + c->params(model).size()));
+  std::vector<double> params(
+      fit.values.begin() + static_cast<std::ptrdiff_t>(at),
+      fit.values.begin() + static_cast<std::ptrdiff_t>(at + c->params(model).size()));
   params.front() = size;
   return c->derived_params(model, params);
 }
@@ -117,8 +117,8 @@ std::vector<SizeSensitivity> size_sensitivities(
   for (const Candidate* c : linear_candidates) shapes.push_back(unit_output_shape(model, fit, c));
   for (const std::size_t i : linear) {
     const Candidate* c = fit.effects[i];
-    const auto own =
-        std::find(linear_candidates.begin(), linear_candidates.end(), c) - linear_candidates.begin();
+    const auto own = std::find(linear_candidates.begin(), linear_candidates.end(), c) -
+                     linear_candidates.begin();
     if (static_cast<std::size_t>(own) == linear_candidates.size()) continue;
     const auto& a = shapes[static_cast<std::size_t>(own)];
     const double aa = shape_dot(a, a);
@@ -136,8 +136,7 @@ std::vector<SizeSensitivity> size_sensitivities(
       twin.size_per_unit = ab / aa;
       twin.derived_per_unit = derived_at(model, fit, c, twin.size_per_unit);
       if (twin.size_per_unit != 0.0) {
-        twin.same_force_at =
-            fit.values[first_param_of(model, fit.effects, c)] / twin.size_per_unit;
+        twin.same_force_at = fit.values[first_param_of(model, fit.effects, c)] / twin.size_per_unit;
         twin.same_force_derived = twin.effect->derived_params(model, {twin.same_force_at});
       }
       out[i].twins.push_back(std::move(twin));

@@ -50,28 +50,28 @@ double viscous_coefficient() {
 }  // namespace
 
 TEST(DiagnoseSizeSensitivity, AMassOnASinusoidTradesWithTheDelayAndIsOneForceWithASpring) {
-  const auto last_month = make_recording(viscous_damper(0.0),
-                                         drive(3.0, 500.0,
-                                               {"displacement=sine:amplitude=0.01,frequency=2",
-                                                "current=constant:value=0"}),
-                                         2.0, 3);
+  const auto last_month = make_recording(
+      viscous_damper(0.0),
+      drive(3.0, 500.0,
+            {"displacement=sine:amplitude=0.01,frequency=2", "current=constant:value=0"}),
+      2.0, 3);
   const auto fit = rheomag::identify::fit_greybox(last_month.noisy, "bingham");
   const std::string text = rheomag::identify::fit_model_json(fit, last_month.noisy.meta).dump();
   rheomag::diagnose::DiagnoseOptions options;
   options.baseline_model = rheomag::diagnose::ModelBaseline{
       rheomag::identify::parse_fit_model_json(text, "model.json"), "model.json"};
 
-  const auto today = make_recording(viscous_damper(kMass),
-                                    drive(2.0, 1000.0,
-                                          {"displacement=sine:amplitude=0.005,frequency=5",
-                                           "current=constant:value=0"}),
-                                    2.0, 5);
+  const auto today = make_recording(
+      viscous_damper(kMass),
+      drive(2.0, 1000.0,
+            {"displacement=sine:amplitude=0.005,frequency=5", "current=constant:value=0"}),
+      2.0, 5);
   const auto d = rheomag::diagnose::diagnose(today.noisy, options);
   const rheomag::diagnose::Finding* mass = nullptr;
   for (const auto& f : d.findings) {
     std::cout << f.effect->name() << " " << f.params.front() << "\n";
-    for (const auto& line : rheomag::diagnose::sensitivity_lines(f)) std::cout << "  " << line
-                                                                                << "\n";
+    for (const auto& line : rheomag::diagnose::sensitivity_lines(f))
+      std::cout << "  " << line << "\n";
     if (f.effect->name() == "fluid_inertia") mass = &f;
   }
   ASSERT_NE(mass, nullptr) << "the moving mass is not named";
