@@ -20,7 +20,8 @@ nlohmann::json nuisance_json(const Nuisance& u) {
        std::isfinite(u.sampling_fit_gain) ? nlohmann::json(u.sampling_fit_gain) : nlohmann::json()},
       {"drive_noise", u.drive_noise},
       {"velocity_filter_bandwidth", u.velocity_filter_bandwidth},
-      {"current_reversal_band", u.current_reversal_band}};
+      {"current_reversal_band", u.current_reversal_band},
+      {"motion_glitches", u.motion_glitches}};
   if (u.preyield_flow > 0.0) {
     j["preyield_flow"] = u.preyield_flow;
     j["preyield_fraction_of_peak_flow"] = u.preyield_fraction;

@@ -205,9 +205,30 @@ double DiagnosisModel::spread(const std::vector<double>& y) {
   return std::max(std::sqrt(var / static_cast<double>(y.size())), 1e-300);
 }
 
+void DiagnosisModel::repair_motion_glitches(const std::vector<std::string>& drives) {
+  // A motion cannot leave its path for one sample and return: such a sample is the acquisition's
+  // (a dropped or corrupted value), and an inertia reads it as a force spike thousands of times
+  // its size, which pulls the inertia's fit towards 0. Repaired before noise and filter.
+  for (const auto& c : drives) {
+    if (!lumped::is_motion_column(c) || !rec_.columns.count(c)) continue;
+    const auto x = rec_.columns.find("displacement");
+    const bool velocity = c == "velocity" && x != rec_.columns.end();
+    auto glitches =
+        lumped::find_motion_glitches(rec_.column(c), rec_.t, velocity ? &x->second : nullptr);
+    if (glitches.samples.empty()) continue;
+    motion_glitch_notes_.push_back(
+        lumped::describe_glitches(c, glitches, rec_.t) +
+        "; each replaced by its neighbours' path before the diagnosis (the baseline and every "
+        "candidate read the repaired motion)");
+    rec_.columns[c] = lumped::without_glitches(rec_.column(c), glitches);
+    motion_glitches_[c] = std::move(glitches);
+  }
+}
+
 void DiagnosisModel::drive_noise_and_filter() {
   const std::vector<std::string> columns =
       fitted_ ? rec_.meta.drive : lumped::rig_drive_columns(base_);
+  repair_motion_glitches(columns);
   for (const auto& c : columns) {
     const auto& u = rec_.column(c);
     if (!constant_field_ || c != "current") drive_noise_[c] = noise_sigma(u);

@@ -12,6 +12,7 @@
 
 #include "core/enum_names.hpp"
 #include "identify/fit_model_json.hpp"
+#include "lumped/motion_glitches.hpp"
 #include "lumped/recording.hpp"
 #include "lumped/rig_model.hpp"
 
@@ -198,6 +199,13 @@ class DiagnosisModel {
   bool current_path_wanted() const { return current_path_wanted_; }
   /// [A] Smallest swing of the measured current taken as a reversal (0: clean current).
   double current_reversal_band() const { return current_reversal_band_; }
+  /// Motion drives whose single-sample acquisition glitches were repaired before the model saw
+  /// them (lumped/motion_glitches.hpp): column -> the glitches found.
+  const std::map<std::string, lumped::MotionGlitches>& motion_glitches() const {
+    return motion_glitches_;
+  }
+  /// One line per repaired motion drive, for the diagnosis' notes.
+  const std::vector<std::string>& motion_glitch_notes() const { return motion_glitch_notes_; }
 
  private:
   lumped::Recording rec_;
@@ -225,9 +233,13 @@ class DiagnosisModel {
   double model_sign_ = 1.0;   ///< fitted baseline: sign of its output's correlation with velocity
   std::vector<BaselineItem> includes_;
   std::map<std::string, double> drive_noise_;
-  bool current_path_wanted_ = true;     ///< see current_path_wanted()
-  std::vector<double> current_path_;    ///< see current_path()
-  double current_reversal_band_ = 0.0;  ///< see current_reversal_band()
+  bool current_path_wanted_ = true;                                ///< see current_path_wanted()
+  std::vector<double> current_path_;                               ///< see current_path()
+  double current_reversal_band_ = 0.0;                             ///< see current_reversal_band()
+  std::map<std::string, lumped::MotionGlitches> motion_glitches_;  ///< see motion_glitches()
+  std::vector<std::string> motion_glitch_notes_;                   ///< see motion_glitch_notes()
+  /// Replaces the motion drives' single-sample glitches by their neighbours' path.
+  void repair_motion_glitches(const std::vector<std::string>& drives);
   /// Estimates the path of a noisy coil current (current_path.hpp) for current_path().
   void noisy_current_path();
   /// The rig of `effects` with `values` simulated on the recording, its current replaced by the

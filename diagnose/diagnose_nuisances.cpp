@@ -132,6 +132,8 @@ Nuisance nuisance_of(const DiagnosisModel& model, const ModelFit& fit) {
   u.drive_noise = model.drive_noise();
   u.velocity_filter_bandwidth = model.velocity_filter_bandwidth();
   u.current_reversal_band = model.current_reversal_band();
+  for (const auto& [column, glitches] : model.motion_glitches())
+    u.motion_glitches[column] = glitches.samples.size();
   for (std::size_t j = 0; j < model.static_params().size(); ++j) {
     if (fit.layout[j].name == "delay") u.delay = fit.values[j];
     if (fit.layout[j].name == "preyield_flow") u.preyield_flow = fit.values[j];

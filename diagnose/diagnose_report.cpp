@@ -266,6 +266,10 @@ std::string diagnosis_html(const Diagnosis& d) {
     o << "<tr><td>noisy current: the Duhem candidate follows its path (reversals beyond the "
          "noise)</td><td>reversal band "
       << html_escape(value_text(u.current_reversal_band, "A")) << "</td></tr>\n";
+  for (const auto& [column, count] : u.motion_glitches)
+    o << "<tr><td>single-sample glitches of drive " << html_escape(column)
+      << " replaced by their neighbours' path</td><td>" << count
+      << (count == 1 ? " sample" : " samples") << "</td></tr>\n";
   for (const auto& [column, sigma] : u.drive_noise)
     o << "<tr><td>noise on drive " << html_escape(column) << "</td><td>" << html_number(sigma)
       << " (rms, SI)</td></tr>\n";

@@ -298,6 +298,7 @@ OneDiagnosis diagnose_one(const lumped::Recording& recording, const DiagnoseOpti
         "per chamber");
   if (factor > 1)
     d.notes.push_back("recording thinned to " + lumped::thinning_note(recording.t.size(), factor));
+  for (const std::string& glitch : model.motion_glitch_notes()) d.notes.push_back(glitch);
   if (model.fitted_baseline()) d.notes.push_back(fitted_model_note());
   if (fitted)  // beyond its training drive the baseline extrapolates: its mismatch is suspect
     d.beyond_training = identify::beyond_fitted_range(fitted->model, recording);

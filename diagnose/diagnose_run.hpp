@@ -126,6 +126,8 @@ struct Nuisance {
   /// [A] smallest swing of a noisy current that the Duhem candidate's path takes as a reversal
   /// (current_path.hpp; 0: the current as recorded)
   double current_reversal_band = 0.0;
+  /// Motion drives repaired for single-sample acquisition glitches: column -> samples replaced
+  std::map<std::string, std::size_t> motion_glitches;
 };
 
 /// What the residual of the final model still holds that no candidate explains.

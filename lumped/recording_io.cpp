@@ -22,6 +22,7 @@
 #include "core/input_file.hpp"
 #include "core/output_set.hpp"
 #include "core/quantity_domain.hpp"
+#include "lumped/motion_glitches.hpp"
 
 namespace rheomag::lumped {
 
@@ -412,6 +413,17 @@ Recording read_recording(const std::string& csv_path) {
   for (const auto& d : rec.meta.drive)
     if (!rec.columns.count(d)) missing("drive", d);
   if (!rec.columns.count(rec.meta.output)) missing("output", rec.meta.output);
+  const auto displacement = rec.columns.find("displacement");
+  for (const auto& d : rec.meta.drive) {
+    if (!is_motion_column(d)) continue;
+    const bool velocity = d == "velocity" && displacement != rec.columns.end();
+    const MotionGlitches glitches =
+        find_motion_glitches(rec.columns.at(d), rec.t, velocity ? &displacement->second : nullptr);
+    if (!glitches.samples.empty())
+      rec.warnings.push_back(csv_path + ": " + describe_glitches(d, glitches, rec.t) +
+                             "; diagnose replaces each by its neighbours' path, fit and simulate "
+                             "read them as recorded");
+  }
   return rec;
 }
 

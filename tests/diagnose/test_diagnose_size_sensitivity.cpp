@@ -20,52 +20,18 @@
 
 #include "diagnose/diagnose_findings.hpp"
 #include "diagnose/diagnose_run.hpp"
-#include "identify/fit_model_json.hpp"
-#include "identify/greybox.hpp"
-#include "test_diagnose_fixture.hpp"
+#include "viscous_damper_fixture.hpp"
 
 namespace {
-
-using rheomag::test::bypass_rig;
-using rheomag::test::drive;
-using rheomag::test::make_recording;
 
 constexpr double kFrequency = 5.0;  // [Hz] of the diagnosed sinusoid
 constexpr double kMass = 10.0;      // [kg] moving mass of the diagnosed recording
 
-/// The bypass rig's valve as a damper at 0 A, with `mass` [kg] moving with the piston.
-rheomag::lumped::RigSpec viscous_damper(double mass) {
-  auto rig = bypass_rig();
-  rig.kind = rheomag::lumped::RigKind::damper;
-  if (mass > 0.0) rig.inertance = mass / (rig.piston_area * rig.piston_area);
-  return rig;
-}
-
-/// The damper's force coefficient c = R A^2 [N s/m].
-double viscous_coefficient() {
-  const auto rig = viscous_damper(0.0);
-  return rig.valve.viscous_resistance * rig.piston_area * rig.piston_area;
-}
-
 }  // namespace
 
 TEST(DiagnoseSizeSensitivity, AMassOnASinusoidTradesWithTheDelayAndIsOneForceWithASpring) {
-  const auto last_month = make_recording(
-      viscous_damper(0.0),
-      drive(3.0, 500.0,
-            {"displacement=sine:amplitude=0.01,frequency=2", "current=constant:value=0"}),
-      2.0, 3);
-  const auto fit = rheomag::identify::fit_greybox(last_month.noisy, "bingham");
-  const std::string text = rheomag::identify::fit_model_json(fit, last_month.noisy.meta).dump();
-  rheomag::diagnose::DiagnoseOptions options;
-  options.baseline_model = rheomag::diagnose::ModelBaseline{
-      rheomag::identify::parse_fit_model_json(text, "model.json"), "model.json"};
-
-  const auto today = make_recording(
-      viscous_damper(kMass),
-      drive(2.0, 1000.0,
-            {"displacement=sine:amplitude=0.005,frequency=5", "current=constant:value=0"}),
-      2.0, 5);
+  const auto options = rheomag::test::viscous_damper_baseline();
+  const auto today = rheomag::test::viscous_damper_at_five_hertz(kMass);
   const auto d = rheomag::diagnose::diagnose(today.noisy, options);
   const rheomag::diagnose::Finding* mass = nullptr;
   for (const auto& f : d.findings) {
@@ -82,7 +48,7 @@ TEST(DiagnoseSizeSensitivity, AMassOnASinusoidTradesWithTheDelayAndIsOneForceWit
   ASSERT_FALSE(mass->sensitivity.derived_per_delay.empty());
   const auto& per_delay = mass->sensitivity.derived_per_delay.front();
   EXPECT_EQ(per_delay.name, "moving_mass");
-  EXPECT_NEAR(per_delay.value / viscous_coefficient(), 1.0, 0.1);
+  EXPECT_NEAR(per_delay.value / rheomag::test::viscous_coefficient(), 1.0, 0.1);
 
   // Shape: one force with a spring, -1/w^2 of mass per N/m.
   const double w = 2.0 * M_PI * kFrequency;
