@@ -18,7 +18,8 @@ struct ProgressEvent {
   bool total_is_bound = false;  ///< `total` is an upper bound (e.g. an iteration limit)
 };
 
-/// Receives progress reports; an empty callback means nobody listens.
+/// Receives progress reports; an empty callback means nobody listens. Never called from two
+/// threads at once (parallel work serialises its reports), so it need not be thread-safe.
 using ProgressCallback = std::function<void(const ProgressEvent&)>;
 
 }  // namespace rheomag

@@ -13,6 +13,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <mutex>
 #include <random>
 
 #include "core/error.hpp"
@@ -61,12 +62,16 @@ struct FitResidual {
 };
 
 /// Reports each Levenberg-Marquardt iteration of a start as progress: the iterations of every
-/// start so far out of their bound.
+/// start so far out of their bound. The starts run on several threads; `serial` makes the
+/// caller's callback run for one of them at a time (it appends to a list, prints a line or
+/// calls into Python, none of which may be entered twice at once).
 class IterationReport : public ceres::IterationCallback {
  public:
-  IterationReport(const ProgressCallback& progress, std::atomic<int>& iterations,
-                  std::chrono::steady_clock::time_point start, std::string stage, int bound)
+  IterationReport(const ProgressCallback& progress, std::mutex& serial,
+                  std::atomic<int>& iterations, std::chrono::steady_clock::time_point start,
+                  std::string stage, int bound)
       : progress_(progress),
+        serial_(serial),
         iterations_(iterations),
         start_(start),
         stage_(std::move(stage)),
@@ -79,12 +84,14 @@ class IterationReport : public ceres::IterationCallback {
     e.total = bound_;
     e.total_is_bound = true;
     e.elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const std::lock_guard<std::mutex> lock(serial_);
     progress_(e);
     return ceres::SOLVER_CONTINUE;
   }
 
  private:
   const ProgressCallback& progress_;
+  std::mutex& serial_;
   std::atomic<int>& iterations_;
   std::chrono::steady_clock::time_point start_;
   std::string stage_;
@@ -156,6 +163,7 @@ void run_fit(const FitData& data, const lumped::GreyboxSetup& setup, const Param
       static_cast<int>(threads / std::min<unsigned>(threads, static_cast<unsigned>(starts)));
   std::vector<ceres::Solver::Summary> summaries(static_cast<std::size_t>(starts));
   std::atomic<int> iterations{0};  // over all starts, for the progress report
+  std::mutex progress_serial;      // one start at a time in the caller's progress callback
   const auto clock_start = std::chrono::steady_clock::now();
   const auto solve_start = [&](std::size_t start) {
     std::array<double, NF>& theta = thetas[start];
@@ -175,8 +183,8 @@ void run_fit(const FitData& data, const lumped::GreyboxSetup& setup, const Param
     ceres::Solver::Options so =
         greybox_solver_options(options.max_iterations, 50);  // trial steps into unstable regions
     so.num_threads = threads_per_start;
-    IterationReport report(options.progress, iterations, clock_start, "fitting " + fit.model,
-                           starts * options.max_iterations);
+    IterationReport report(options.progress, progress_serial, iterations, clock_start,
+                           "fitting " + fit.model, starts * options.max_iterations);
     if (options.progress) so.callbacks.push_back(&report);
     ceres::Solve(so, &problem, &summaries[start]);
   };
