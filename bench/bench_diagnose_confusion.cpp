@@ -13,11 +13,12 @@
 // Not a Google Benchmark (it takes minutes):
 //   bench_diagnose_confusion [--draws N] [--seed S] [--threads T] [--only NAME] [--index I]
 //                            [--csv FILE] [--nuisances 0|1] [--visible 0|1] [--ringing-start 0|1]
-//                            [--current-path 0|1] [--align-delay 0|1]
+//                            [--current-path 0|1] [--align-delay 0|1] [--align-margin M]
 // --current-path 0 drives the Duhem candidate by the noisy current's samples instead of its path
 // estimate (DiagnoseOptions::current_path), to compare the two on the same draws.
 // --align-delay 0 keeps the final fit's output delay where the data do not require it
-// (DiagnoseOptions::align_delay; for comparison).
+// (DiagnoseOptions::align_delay; for comparison); --align-margin M keeps it only where it
+// lowers BIC by more than M (DiagnoseOptions::align_delay_margin, default 2).
 // --ringing-start 0 starts the fluid_inertia candidate from its decade grid alone, without the
 // inertances the residual's ringing gives (DiagnoseOptions::ringing_start; for comparison).
 // --visible 1 (the default) makes every concealed effect at least barely visible: the part of
@@ -678,6 +679,8 @@ int main(int argc, char** argv) {
       options.current_path = std::atoi(v.c_str()) != 0;
     else if (a == "--align-delay")
       options.align_delay = std::atoi(v.c_str()) != 0;
+    else if (a == "--align-margin")
+      options.align_delay_margin = std::atof(v.c_str());
     else {
       std::cerr << "unknown option " << a << "\n";
       return 2;

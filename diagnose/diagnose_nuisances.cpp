@@ -54,12 +54,12 @@ bool keep_better_with_free_delay(const DiagnosisModel& model,
   }
 }
 
-bool align_unrequired_delay(const DiagnosisModel& model, ModelFit& fit,
-                            const FitSettings& settings) {
+DelayAlignment align_unrequired_delay(const DiagnosisModel& model, ModelFit& fit,
+                                      const FitSettings& settings, double margin) {
+  DelayAlignment a;
   const std::size_t j = model.delay_index();
   const double n = static_cast<double>(fit.samples);
-  if (fit.values[j] == 0.0 || !(n > 1.0) || !(fit.sse > 0.0) || !std::isfinite(fit.sse))
-    return false;
+  if (fit.values[j] == 0.0 || !(n > 1.0) || !(fit.sse > 0.0) || !std::isfinite(fit.sse)) return a;
   auto s = settings;
   s.fixed.assign(fit.values.size(), false);
   s.fixed[j] = true;
@@ -72,14 +72,15 @@ bool align_unrequired_delay(const DiagnosisModel& model, ModelFit& fit,
       auto refit = fit_model(model, fit.effects, aligned.values, settings);
       if (refit.sse < fit.sse) fit = std::move(refit);
     }
-    // BIC of the delay: what its free fit gains against the one parameter it costs.
-    const double delta_bic = n * std::log(aligned.sse / fit.sse) - std::log(n);
-    if (!(delta_bic <= 0.0)) return false;
-    fit = std::move(aligned);
-    return true;
+    a.tried = true;
+    a.delay = fit.values[j];
+    a.delta_bic = n * std::log(aligned.sse / fit.sse) - std::log(n);
+    a.aligned = a.delta_bic <= margin;
+    if (a.aligned) fit = std::move(aligned);
   } catch (const ConvergenceError&) {
-    return false;  // the delayed fit stands
+    // the delayed fit stands
   }
+  return a;
 }
 
 void recalibrate_nuisances(const DiagnosisModel& model, ModelFit& fit, const FitSettings& base) {

@@ -37,17 +37,26 @@ bool keep_better_with_free_delay(const DiagnosisModel& model,
                                  const std::vector<double>& nominal, const FitSettings& held,
                                  const std::vector<double>& starts, int threads, ModelFit& fit);
 
+/// What holding the output delay at 0 in the final fit decided (align_unrequired_delay).
+struct DelayAlignment {
+  bool tried = false;      ///< the fitted delay was not 0 and the aligned fit could be simulated
+  bool aligned = false;    ///< the aligned fit was kept
+  double delay = 0.0;      ///< [s] the delay of the delayed fit it was compared with
+  double delta_bic = 0.0;  ///< BIC the free delay lowers: n ln(SSE aligned / SSE delayed) - ln n
+};
+
 /// Holds `fit`'s output delay at 0 (the recording's channels aligned) and refits the rest from
-/// `fit`'s values with `settings`, keeping that fit where the free delay does not lower BIC
-/// (n ln(SSE ratio) against ln n for its one parameter, the diagnosis's criterion): the data do
-/// not require it. Where the delay and an effect are one force on the drive (a viscous force's
-/// shift and a mass on a sinusoid) the fit can end anywhere along their valley, and the delay,
-/// calibrated before any candidate, takes what its bounds allow of the effect. Where the aligned
-/// fit is better than `fit`, `fit` stopped short of its optimum and is first refitted from the
-/// aligned one with the delay free. Returns whether the aligned fit was kept (else `fit` is the
-/// better of the two delayed fits); one that cannot be simulated leaves `fit` as it was.
-bool align_unrequired_delay(const DiagnosisModel& model, ModelFit& fit,
-                            const FitSettings& settings);
+/// `fit`'s values with `settings`, keeping that fit unless the free delay lowers BIC by more than
+/// `margin` (n ln(SSE ratio) against ln n for its one parameter, the diagnosis's criterion): the
+/// data do not require it. Where the delay and an effect are one force on the drive (a viscous
+/// force's shift and a mass on a sinusoid) the fit can end anywhere along their valley, and the
+/// delay, calibrated before any candidate, takes what its bounds allow of the effect; a margin
+/// of a few units keeps a noise-sized BIC difference from choosing the valley's end. Where the
+/// aligned fit is better than `fit`, `fit` stopped short of its optimum and is first refitted
+/// from the aligned one with the delay free. If not aligned, `fit` is the better of the two
+/// delayed fits; one that cannot be simulated leaves `fit` as it was (`tried` false).
+DelayAlignment align_unrequired_delay(const DiagnosisModel& model, ModelFit& fit,
+                                      const FitSettings& settings, double margin);
 
 /// Re-calibrates the nuisances of `fit` that are not at a bound with everything else held (after
 /// an accepted effect the pre-yield smoothing and delay it was compared with may no longer be

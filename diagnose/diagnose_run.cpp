@@ -21,6 +21,7 @@
 #include "diagnose/diagnose_nuisances.hpp"
 #include "diagnose/diagnose_rejection.hpp"
 #include "diagnose/diagnose_selection.hpp"
+#include "diagnose/diagnose_text.hpp"
 #include "diagnose/diagnose_ties.hpp"
 #include "lumped/metrics.hpp"
 #include "lumped/recording_excerpt.hpp"
@@ -55,6 +56,20 @@ void check_informative(const DiagnosisModel& model) {
     throw InputError(name +
                      ": every drive column is constant; the recording is too flat to "
                      "diagnose");
+}
+
+/// The note on the final fit's output delay: held at 0 where the data do not require it, or kept.
+std::string delay_alignment_note(const DelayAlignment& a, double margin) {
+  const std::string delay = value_text(1e3 * a.delay, "ms");
+  if (!a.aligned)
+    return "output delay kept at " + delay + " in the final fit: free, it lowers BIC by " +
+           fmt(a.delta_bic) + " against the channels aligned (more than the margin " + fmt(margin) +
+           ")";
+  return "output delay held at 0 in the final fit: the data do not require it (the fitted " +
+         delay + " delay lowers BIC by " + fmt(a.delta_bic) + ", not more than the margin " +
+         fmt(margin) +
+         "); where the delay and a finding are one force on this drive, the "
+         "finding's size takes what the delay held (see its size line)";
 }
 
 /// Each finding linear in its size gets its size's trade with the output delay and the
@@ -257,14 +272,11 @@ OneDiagnosis diagnose_one(const lumped::Recording& recording, const DiagnoseOpti
     final_settings.max_iterations = 2 * options.max_iterations;
     revisit_ties(model, current, final_settings, options.bic_margin, d);
     drop_faded_findings(model, current, evidence, options, d);
-    const double delay = current.values[model.delay_index()];
-    if (options.align_delay && !d.findings.empty() &&
-        align_unrequired_delay(model, current, final_settings))
-      d.notes.push_back(
-          "output delay held at 0 in the final fit: the " + value_text(1e3 * delay, "ms") +
-          " it was fitted with were not required by the data (with the channels aligned BIC is "
-          "no higher); where the delay and a finding are one force on this drive, the "
-          "finding's size takes what the delay held (see its size line)");
+    if (options.align_delay && !d.findings.empty()) {
+      const auto a =
+          align_unrequired_delay(model, current, final_settings, options.align_delay_margin);
+      if (a.tried) d.notes.push_back(delay_alignment_note(a, options.align_delay_margin));
+    }
   }
   clock.stage("joint re-fit");
   d.final_fit = current;

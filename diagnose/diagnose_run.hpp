@@ -55,6 +55,9 @@ struct DiagnoseOptions {
   /// (diagnose_nuisances.hpp, align_unrequired_delay); false: the fitted delay kept (for
   /// comparison).
   bool align_delay = true;
+  /// ... unless the free delay lowers BIC by more than this (2: "positive evidence" on Kass and
+  /// Raftery's scale; a difference within the noise does not pick the end of a delay-effect valley)
+  double align_delay_margin = 2.0;
   /// A fitted model as the baseline instead of the sidecar's rig (`--baseline MODEL.json`).
   std::optional<ModelBaseline> baseline_model;
   /// A recording of the same device to compare with (`--reference`): diagnosed against the same
