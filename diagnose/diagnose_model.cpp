@@ -210,11 +210,8 @@ void DiagnosisModel::repair_motion_glitches(const std::vector<std::string>& driv
   // (a dropped or corrupted value), and an inertia reads it as a force spike thousands of times
   // its size, which pulls the inertia's fit towards 0. Repaired before noise and filter.
   for (const auto& c : drives) {
-    if (!lumped::is_motion_column(c) || !rec_.columns.count(c)) continue;
-    const auto x = rec_.columns.find("displacement");
-    const bool velocity = c == "velocity" && x != rec_.columns.end();
-    auto glitches =
-        lumped::find_motion_glitches(rec_.column(c), rec_.t, velocity ? &x->second : nullptr);
+    if (!rec_.columns.count(c)) continue;
+    auto glitches = lumped::find_motion_glitches(rec_, c);
     if (glitches.samples.empty()) continue;
     motion_glitch_notes_.push_back(
         lumped::describe_glitches(c, glitches, rec_.t) +

@@ -15,6 +15,7 @@
 #include "identify/motion_lead_search.hpp"
 #include "identify/multistart_fit.hpp"
 #include "identify/repeatability.hpp"
+#include "lumped/motion_glitches.hpp"
 #include "lumped/output_smoothing.hpp"
 
 namespace rheomag::identify {
@@ -31,17 +32,17 @@ FamilyMember evaluate_family_member(const lumped::Recording& rec, const GreyboxF
   if (const std::size_t rest = lumped::tared_rest(rec, fit.setup); rest > 0)
     m.rest_seconds = rec.t[rest] - rec.t.front();
   m.metrics = lumped::compute_metrics(rec.column(fit.setup.output_column), m.simulated);
-  m.repeatability = repeatability_percent(rec.t, rec.column(fit.setup.motion_column),
-                                          rec.column(fit.setup.output_column));
-  m.regimes = residual_regimes(rec.column(fit.setup.motion_column),
-                               rec.column(fit.setup.output_column), m.simulated);
+  // The motion as the model read it (a glitch would cut a cycle or a stroke in two).
+  const std::vector<double> motion = lumped::column_without_glitches(rec, fit.setup.motion_column);
+  m.repeatability = repeatability_percent(rec.t, motion, rec.column(fit.setup.output_column));
+  m.regimes = residual_regimes(motion, rec.column(fit.setup.output_column), m.simulated);
   return m;
 }
 
 FamilyMember predict_family_member(const lumped::Recording& rec, const GreyboxFit& fit) {
   FamilyMember m = evaluate_family_member(rec, fit);
   m.band = prediction_band(rec, fit);
-  m.level = calibrate_level(rec.t, rec.column(fit.setup.motion_column),
+  m.level = calibrate_level(rec.t, lumped::column_without_glitches(rec, fit.setup.motion_column),
                             rec.column(fit.setup.output_column), m.simulated);
   return m;
 }

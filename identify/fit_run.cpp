@@ -19,6 +19,7 @@
 #include "identify/motion_lead_search.hpp"
 #include "identify/repeatability.hpp"
 #include "identify/valve_chain_fit.hpp"
+#include "lumped/motion_glitches.hpp"
 #include "lumped/recording_excerpt.hpp"
 
 namespace rheomag::identify {
@@ -217,7 +218,7 @@ std::optional<double> repeatability_of(const Recording& rec, const SampleRange& 
     if (drive.empty() && rec.columns.count(c)) drive = c;
   if (drive.empty() && !rec.meta.drive.empty()) drive = rec.meta.drive.front();
   if (drive.empty() || !rec.columns.count(drive)) return std::nullopt;
-  return repeatability_percent(part(rec.t, r), part(rec.column(drive), r),
+  return repeatability_percent(part(rec.t, r), part(lumped::column_without_glitches(rec, drive), r),
                                part(rec.column(rec.meta.output), r));
 }
 

@@ -78,6 +78,19 @@ MotionGlitches find_motion_glitches(const std::vector<double>& u, const std::vec
   return found;
 }
 
+MotionGlitches find_motion_glitches(const Recording& rec, const std::string& column) {
+  if (!is_motion_column(column)) return {};
+  const auto x = rec.columns.find("displacement");
+  const bool velocity = column == "velocity" && x != rec.columns.end();
+  return find_motion_glitches(rec.column(column), rec.t, velocity ? &x->second : nullptr);
+}
+
+std::vector<double> column_without_glitches(const Recording& rec, const std::string& column) {
+  const MotionGlitches glitches = find_motion_glitches(rec, column);
+  if (glitches.samples.empty()) return rec.column(column);
+  return without_glitches(rec.column(column), glitches);
+}
+
 std::vector<double> without_glitches(std::vector<double> u, const MotionGlitches& glitches) {
   const std::size_t n = u.size();
   for (std::size_t k : glitches.samples) {

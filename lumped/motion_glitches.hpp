@@ -10,6 +10,8 @@
 
 namespace rheomag::lumped {
 
+struct Recording;
+
 /// A single sample is a glitch when it is off the mean of its two neighbours by more than this
 /// many robust standard deviations of that difference over the whole column ...
 inline constexpr double kGlitchDeviations = 12.0;
@@ -38,6 +40,14 @@ bool is_motion_column(const std::string& column);
 /// happened (a table's jerk), not a glitch.
 MotionGlitches find_motion_glitches(const std::vector<double>& u, const std::vector<double>& t,
                                     const std::vector<double>* displacement = nullptr);
+
+/// The glitches of `rec`'s column `column`: a motion's (a velocity checked against the
+/// recording's displacement where it has one), none for any other column.
+MotionGlitches find_motion_glitches(const Recording& rec, const std::string& column);
+
+/// `rec`'s column `column` as a model reads it: a motion's glitches replaced by its neighbours'
+/// path (without_glitches), any other column as recorded.
+std::vector<double> column_without_glitches(const Recording& rec, const std::string& column);
 
 /// `u` with each glitched sample replaced by the mean of its neighbours (at an end: the straight
 /// line through its next two).

@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "lumped/leading_rest.hpp"
+#include "lumped/motion_glitches.hpp"
 #include "lumped/ode.hpp"
 #include "lumped/output_smoothing.hpp"
 #include "lumped/pheno_free_run.hpp"
@@ -109,20 +110,29 @@ std::vector<double> simulate_stiff(const DriveSeries& d, const GreyboxSetup& set
   return y;
 }
 
-}  // namespace
-
-std::size_t tared_rest(const Recording& rec, const GreyboxSetup& setup) {
+/// The rest before `motion` (the recording's motion as the model reads it) to tare the output to.
+std::size_t rest_before(const Recording& rec, const GreyboxSetup& setup,
+                        const std::vector<double>& motion) {
   const std::vector<double>& y = rec.column(setup.output_column);
   const auto [lo, hi] = std::minmax_element(y.begin(), y.end());
   // A constant output column is a placeholder, not a measurement to tare to.
   if (y.empty() || !(*hi > *lo) || output_mean_removed(y)) return 0;
-  return leading_rest(rec.t, rec.column(setup.motion_column));
+  return leading_rest(rec.t, motion);
+}
+
+}  // namespace
+
+std::size_t tared_rest(const Recording& rec, const GreyboxSetup& setup) {
+  return rest_before(rec, setup, column_without_glitches(rec, setup.motion_column));
 }
 
 DriveSeries drive_series(const Recording& rec, const GreyboxSetup& setup, std::size_t step) {
   DriveSeries d;
   d.t = every(rec.t, step);
-  d.motion = every(read_later(rec.t, rec.column(setup.motion_column), setup.motion_lead), step);
+  // A motion's single-sample acquisition glitches are not motion: an inertia would read each as
+  // an acceleration spike (motion_glitches.hpp).
+  const std::vector<double> motion = column_without_glitches(rec, setup.motion_column);
+  d.motion = every(read_later(rec.t, motion, setup.motion_lead), step);
   d.y = every(rec.column(setup.output_column), step);
   d.field = setup.field_column.empty() ? std::vector<double>(d.t.size(), 0.0)
                                        : every(rec.column(setup.field_column), step);
@@ -130,13 +140,13 @@ DriveSeries drive_series(const Recording& rec, const GreyboxSetup& setup, std::s
   d.period = drive_period(d.t, d.motion);
   d.mean_removed = output_mean_removed(rec.column(setup.output_column));
   // The rest of the full recording, in kept samples (0, step, 2 step, ... below it).
-  const std::size_t rest = tared_rest(rec, setup);
+  const std::size_t rest = rest_before(rec, setup, motion);
   d.rest_samples = step > 0 ? (rest + step - 1) / step : 0;
   if (d.rest_samples >= d.t.size()) d.rest_samples = 0;
   for (std::size_t i = 0; i < d.rest_samples; ++i) d.rest_level += d.y[i];
   if (d.rest_samples > 0) d.rest_level /= static_cast<double>(d.rest_samples);
   if (!setup.position_column.empty()) {
-    d.position = every(rec.column(setup.position_column), step);
+    d.position = every(column_without_glitches(rec, setup.position_column), step);
   } else {
     // Trapezoidal integral of the motion, mean removed (the absolute position is unknown).
     d.position.assign(d.t.size(), 0.0);

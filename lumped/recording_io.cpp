@@ -413,16 +413,13 @@ Recording read_recording(const std::string& csv_path) {
   for (const auto& d : rec.meta.drive)
     if (!rec.columns.count(d)) missing("drive", d);
   if (!rec.columns.count(rec.meta.output)) missing("output", rec.meta.output);
-  const auto displacement = rec.columns.find("displacement");
   for (const auto& d : rec.meta.drive) {
-    if (!is_motion_column(d)) continue;
-    const bool velocity = d == "velocity" && displacement != rec.columns.end();
-    const MotionGlitches glitches =
-        find_motion_glitches(rec.columns.at(d), rec.t, velocity ? &displacement->second : nullptr);
+    const MotionGlitches glitches = find_motion_glitches(rec, d);
     if (!glitches.samples.empty())
       rec.warnings.push_back(csv_path + ": " + describe_glitches(d, glitches, rec.t) +
-                             "; diagnose replaces each by its neighbours' path, fit and simulate "
-                             "read them as recorded");
+                             "; diagnose and the grey-box models (fit, fit-family, simulate) "
+                             "replace each by its neighbours' path, the other models read "
+                             "them as recorded");
   }
   return rec;
 }

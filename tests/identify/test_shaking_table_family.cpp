@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -124,4 +126,50 @@ TEST(ShakingTableFamily, AModelWithoutAGasSpringKeepsItsLevelInMotion) {
   const double above_rest = r.fit.params[k].value - r.fit.setup.settings.rest_reference;
   EXPECT_GT(above_rest, 25.0);
   EXPECT_LT(above_rest, 60.0);
+}
+
+// A motion drive's single-sample acquisition glitches (lumped/motion_glitches.hpp) are read
+// repaired by the grey-box models: five velocity samples of each training test dropped to 0 at
+// its fastest strokes (a 0.1 m/s sample lost at 100 Hz is a 10 m/s^2 spike to the inertance).
+// Reference: the same family fitted on the tests as published; the inertance within 2 % and each
+// training FIT within 0.2 point, the repeatability given where it is given without the glitches.
+// Measured 2026-12-07 (motion lead 0): 77.08 against 76.98 kg, the FITs to 0.1 point; before the
+// repair 58.7 kg and 0 V test 1 at 85.5 % against 88.7 %.
+TEST(ShakingTableFamily, VelocityDropoutsInTheTrainingTestsLeaveTheFamilyAsWithoutThem) {
+  const std::vector<Recording> clean =
+      read({"0V_test1_1", "0x87V_test1_2", "1x98V_test_B_1", "3x21V_test_A_1"});
+  std::vector<Recording> glitched = clean;
+  for (Recording& rec : glitched) {
+    std::vector<double>& v = rec.columns.at("velocity");
+    std::vector<std::size_t> order(v.size());
+    for (std::size_t k = 0; k < v.size(); ++k) order[k] = k;
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return std::abs(v[a]) > std::abs(v[b]); });
+    std::vector<std::size_t> dropped;
+    for (std::size_t k : order) {
+      const bool apart = std::all_of(dropped.begin(), dropped.end(),
+                                     [&](std::size_t d) { return (k > d ? k - d : d - k) > 50; });
+      if (apart) dropped.push_back(k);
+      if (dropped.size() == 5) break;
+    }
+    for (std::size_t k : dropped) v[k] = 0.0;
+  }
+  const FamilyFit a = fit_current_dependent(clean, "damper", {}, FamilyFitOptions{});
+  const FamilyFit b = fit_current_dependent(glitched, "damper", {}, FamilyFitOptions{});
+  const auto inertance = [](const FamilyFit& r) {
+    for (const FittedParameter& p : r.fit.params)
+      if (p.name == "inertance") return p.value;
+    return 0.0;
+  };
+  std::cout << "inertance: " << inertance(a) << " kg as published, " << inertance(b)
+            << " kg with the dropouts\n";
+  ASSERT_GT(inertance(a), 0.0);
+  EXPECT_NEAR(inertance(b) / inertance(a), 1.0, 0.02);
+  ASSERT_EQ(a.training.size(), b.training.size());
+  for (std::size_t i = 0; i < a.training.size(); ++i) {
+    EXPECT_NEAR(b.training[i].metrics.fit_percent, a.training[i].metrics.fit_percent, 0.2)
+        << a.training[i].csv_path;
+    EXPECT_EQ(b.training[i].repeatability.has_value(), a.training[i].repeatability.has_value())
+        << a.training[i].csv_path;
+  }
 }
