@@ -81,7 +81,9 @@ lumped::Recording load_recording(const std::string& csv_path) {
 }
 
 cases::Case load_case(const std::string& path, const std::vector<std::string>& settings) {
-  return cases::with_settings(cases::load_case(path), settings, "--set");
+  cases::Case c = cases::with_settings(cases::load_case(path), settings, "--set");
+  for (const std::string& w : c.problem.warnings) std::cerr << "rheomag: warning: " << w << "\n";
+  return c;
 }
 
 std::vector<std::pair<std::string, double>> parse_holds(const std::vector<std::string>& holds) {

@@ -14,6 +14,7 @@
 #include <sstream>
 #include <vector>
 
+#include "case/femm_bh_smoothing.hpp"
 #include "case/magnet_direction.hpp"
 #include "case/material_library.hpp"
 #include "case/region_outline.hpp"
@@ -108,8 +109,11 @@ class FemReader {
     }
   }
 
+  /// "file:line", the prefix of every message about that line.
+  std::string where(int line) const { return source_ + ":" + std::to_string(line); }
+
   [[noreturn]] void fail(int line, const std::string& message) const {
-    throw InputError(source_ + ":" + std::to_string(line) + ": " + message);
+    throw InputError(where(line) + ": " + message);
   }
 
   bool next(std::string_view& line) {
@@ -496,9 +500,11 @@ FemFile read_file(std::string_view text, FemReader& reader) {
 }
 
 /// The material of one FEMM block as FEMM's magnetostatic solver uses it: lamination fill of
-/// in-plane laminations folded into mu_r or the B-H curve, wire types (LamType >= 3) as mu_r = 1,
-/// linear magnets with H_c; every other combination refused by name.
-Material femm_material(const FemBlock& block, const std::string& source, const FemReader& reader) {
+/// in-plane laminations folded into mu_r or the B-H curve (smoothed as FEMM does where its spline
+/// turns back; a note is added to `warnings`), wire types (LamType >= 3) as mu_r = 1, linear and
+/// nonlinear magnets with H_c; every other combination refused by name.
+Material femm_material(const FemBlock& block, const std::string& source, const FemReader& reader,
+                       std::vector<std::string>& warnings) {
   const std::string name = "block '" + block.name + "'";
   auto fail = [&](const std::string& message) { reader.fail(block.line, name + ": " + message); };
   Material m;
@@ -528,15 +534,37 @@ Material femm_material(const FemBlock& block, const std::string& source, const F
     fail("laminations parallel to x or y (LamType " + std::to_string(block.lam_type) +
          ") with LamFill < 1 make the material anisotropic, which is not supported");
   if (!block.bh.empty()) {
-    if (block.h_c != 0.0)
-      fail(
-          "a nonlinear magnet (B-H curve with H_c not 0) is not supported; give a linear "
-          "magnet (Mu_x = recoil permeability, no B-H points)");
-    // In-plane laminations (LamType 0) with fill f: FEMM's apparent curve
-    // B' = f B(H) + (1 - f) mu0 H at the table's H values.
-    std::vector<std::pair<double, double>> table = block.bh;
-    for (auto& [b, h] : table) b = fill * b + (1.0 - fill) * kMu0 * h;
-    m.bh = checked_bh_table(table, source + ":" + std::to_string(block.line) + ": " + name);
+    // FEMM smooths a table whose spline turns back (femm_bh_smoothing.hpp), then applies the
+    // fill of in-plane laminations (LamType 0), B' = f B(H) + (1 - f) mu0 H at the table's H
+    // (FEMM's apparent curve), and checks the result again.
+    const std::string where = source + ":" + std::to_string(block.line) + ": " + name;
+    FemmSmoothedTable smoothed = femm_smoothed_bh_table(block.bh);
+    int passes = smoothed.passes;
+    if (fill != 1.0) {
+      for (auto& [b, h] : smoothed.points) b = fill * b + (1.0 - fill) * kMu0 * h;
+      smoothed = femm_smoothed_bh_table(std::move(smoothed.points));
+      passes += smoothed.passes;
+    }
+    if (passes > 0) {
+      std::string what = "the spline FEMM fits through the B-H table turns back (dH/dB < 0)";
+      for (std::size_t i = 1; i < block.bh.size(); ++i)
+        if (!(block.bh[i].first > block.bh[i - 1].first &&
+              block.bh[i].second > block.bh[i - 1].second)) {
+          what = "the B-H table does not increase at point " + std::to_string(i + 1) + " [" +
+                 format_number(block.bh[i].first) + ", " + format_number(block.bh[i].second) + "]";
+          break;
+        }
+      warnings.push_back(where + ": " + what +
+                         "; smoothed as FEMM does: every interior point averaged with its two "
+                         "neighbours, " +
+                         std::to_string(passes) + (passes == 1 ? " pass" : " passes") +
+                         ", until FEMM's spline rises throughout");
+      m.source += " (B-H table smoothed as FEMM does, " + std::to_string(passes) + " passes)";
+    }
+    m.bh = checked_bh_table(smoothed.points, where);
+    // A nonlinear magnet: FEMM's table is the magnet's curve shifted by H_c to start at (0, 0),
+    // H = H_curve(|B|) B/|B| - H_c m; the magnet's load is the linear magnet's.
+    m.coercivity = block.h_c;
     return m;
   }
   if (block.mu_x != block.mu_y) fail("anisotropic permeability (Mu_x != Mu_y) is not supported");
@@ -592,6 +620,13 @@ PeriodicEdges pair_periodic_edges(const FemFile& file, Problem& problem, FemRead
                              " boundary '" + bdry.name + "' (BdryType " +
                              std::to_string(bdry.type) + ", defined at line " +
                              std::to_string(bdry.line) + ")";
+    if (use.size() == 1) {
+      // FEMM's mesher drops a property that pairs nothing; the edge gets no condition.
+      problem.warnings.push_back(reader.where(use[0].line) + ": " + name +
+                                 " is used by this edge only; it pairs nothing, so the edge gets "
+                                 "no condition, as in FEMM (which drops such a property)");
+      continue;
+    }
     if (use.size() != 2) {
       std::string lines;
       for (const Use& u : use) lines += (lines.empty() ? "" : ", ") + std::to_string(u.line);
@@ -711,7 +746,7 @@ Problem parse_femm(std::string_view text, const std::string& source) {
                         "a mixed (asymptotic) boundary or rheomag's automatic open boundary");
       case 4:
       case 5:
-        break;  // paired by pair_periodic_edges
+        return -1;  // pair_periodic_edges gives each paired edge its condition, others none
       case 6:
       case 7:
         reader.fail(line, name + ": " + (b.type == 6 ? "periodic" : "antiperiodic") +
@@ -857,7 +892,7 @@ Problem parse_femm(std::string_view text, const std::string& source) {
     if (found == material_of_block.end()) {
       found =
           material_of_block.emplace(l.block - 1, static_cast<int>(problem.materials.size())).first;
-      problem.materials.push_back(femm_material(block, source, reader));
+      problem.materials.push_back(femm_material(block, source, reader, problem.warnings));
     }
     data.current_density = block.j * 1e6;  // MA/m^2 -> A/m^2
     if (block.h_c != 0.0) {

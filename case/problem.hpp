@@ -35,7 +35,9 @@ struct Material {
   std::vector<BhPoint> bh;             ///< B-H table, B ascending from (0, 0); empty = linear
   std::optional<double> conductivity;  ///< electrical conductivity [S/m]; empty: not stated
   std::string source;                  ///< where the data come from
-  double coercivity = 0.0;             ///< permanent magnet: H_c [A/m], B = mu0 mu_r (H + H_c m)
+  /// Permanent magnet: H_c [A/m], B = mu0 mu_r (H + H_c m); with a B-H table (its curve shifted
+  /// by H_c to start at (0, 0), as FEMM gives it) H = H_table(|B|) B/|B| - H_c m.
+  double coercivity = 0.0;
   bool fluid = false;  ///< an MR fluid of the materials library: a medium a body moves through
   /// Thermal data; empty: the material is outside the thermal model (surroundings, e.g. air).
   std::optional<ThermalProperties> thermal{};
@@ -119,6 +121,9 @@ struct Problem {
   double outer_radius_factor = 5.0;  ///< automatic outer radius = factor * bounding radius
   int min_gap_elements = 4;          ///< elements across every fluid gap
   int order = 2;                     ///< Lagrange order, 1 or 2
+  /// What reading the input changed to solve it as its own tool would (e.g. a FEMM B-H table
+  /// smoothed as FEMM does), one sentence each, for the user.
+  std::vector<std::string> warnings;
 };
 
 }  // namespace rheomag::cases

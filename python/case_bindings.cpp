@@ -33,9 +33,17 @@ py::object si_value(const cases::KeyValue& value, const cases::CaseKey& key) {
   return py::str(std::get<std::string>(value));
 }
 
+/// Reads a case or FEMM model and passes the reader's warnings (e.g. a B-H table smoothed as
+/// FEMM does) to Python's warnings module.
 CaseHandle load(const std::string& path) {
-  py::gil_scoped_release release;
-  return {std::make_shared<const cases::Case>(cases::load_case(path)), path};
+  std::shared_ptr<const cases::Case> c;
+  {
+    py::gil_scoped_release release;
+    c = std::make_shared<const cases::Case>(cases::load_case(path));
+  }
+  for (const std::string& w : c->problem.warnings)
+    PyErr_WarnEx(PyExc_UserWarning, ("rheomag: " + w).c_str(), 1);
+  return {c, path};
 }
 
 /// Case.with_: edits given in SI for template lengths (divided by the case's length unit here),
@@ -84,7 +92,8 @@ py::class_<CaseHandle> bind_case(py::module_& m) {
              "A rheomag case (TOML case file or FEMM .fem model), immutable; edits "
              "return a new Case.")
       .def_static("load", &load, py::arg("path"),
-                  "Reads a case file (.toml) or FEMM model (.fem); ValueError on bad input.")
+                  "Reads a case file (.toml) or FEMM model (.fem); ValueError on bad input, a "
+                  "UserWarning for what the reader changed (a B-H table smoothed as FEMM does).")
       .def_property_readonly("name", [](const CaseHandle& h) { return h.c->name; })
       .def_property_readonly("description", [](const CaseHandle& h) { return h.c->description; })
       .def_property_readonly("path", [](const CaseHandle& h) { return h.path; })

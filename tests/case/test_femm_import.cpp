@@ -173,22 +173,19 @@ TEST(FemmImport, UnsupportedFeaturesAreRejectedClearly) {
   EXPECT_THAT(error_of(with("<BdryType> = 0", "<BdryType> = 1")), HasSubstr("small skin depth"));
   EXPECT_THAT(error_of(with("<BdryType> = 0", "<BdryType> = 3")),
               HasSubstr("strategic dual image"));
-  // A (anti)periodic property on one edge cannot be paired (test_femm_periodic.cpp solves pairs).
-  EXPECT_THAT(error_of(with("<BdryType> = 0", "<BdryType> = 4")),
-              HasSubstr("bad.fem:167: periodic boundary 'A=0' (BdryType 4, defined at line 16) is "
-                        "used by 1 edge(s)"));
-  EXPECT_THAT(error_of(with("<BdryType> = 0", "<BdryType> = 5")),
-              HasSubstr("antiperiodic boundary 'A=0' (BdryType 5"));
+  // A (anti)periodic property on three edges cannot be paired (test_femm_periodic.cpp solves
+  // pairs; a property on one edge is dropped, as FEMM does: FemmImport.UnpairedPeriodicEdge...).
+  std::string three = with("<BdryType> = 0", "<BdryType> = 4");
+  for (const std::string segment : {"\n11\t10\t-1\t0", "\n12\t13\t-1\t0"})
+    three.replace(three.find(segment), segment.size(), segment.substr(0, segment.size() - 1) + "1");
+  EXPECT_THAT(error_of(three),
+              HasSubstr("periodic boundary 'A=0' (BdryType 4, defined at line 16) is used by 3 "
+                        "edge(s) (lines 164, 165, 167)"));
   EXPECT_THAT(error_of(with("<BdryType> = 0", "<BdryType> = 6")),
               HasSubstr("periodic air-gap elements (BdryType 6)"));
   EXPECT_THAT(error_of(with("<BdryType> = 0", "<BdryType> = 7")),
               HasSubstr("antiperiodic air-gap elements (BdryType 7)"));
   EXPECT_THAT(error_of(with("<A_1> = 0", "<A_1> = 0.5")), HasSubstr("A_1, A_2 not 0"));
-  // H_c of the iron block (the second block, a B-H curve) -> a nonlinear magnet: refused.
-  std::string magnet = pot_core_text();
-  const std::size_t iron = magnet.find("<BlockName> = \"AISI 1010\"");
-  magnet.replace(magnet.find("<H_c> = 0", iron), 9, "<H_c> = 9e5");
-  EXPECT_THAT(error_of(magnet), HasSubstr("block 'AISI 1010': a nonlinear magnet"));
   EXPECT_THAT(error_of(with("<H_cAngle> = 0", "<H_cAngle> = 10")), HasSubstr("H_cAngle = 10"));
   std::string across = with("<LamType> = 0", "<LamType> = 1");
   across.replace(across.find("<LamFill> = 1"), 13, "<LamFill> = 0.9");
@@ -231,10 +228,61 @@ TEST(FemmImport, MalformedOrTruncatedFiles) {
               HasSubstr("arc angle must be in (0, 180]"));
 }
 
+// FEMM's mesher drops an (anti)periodic property that only one edge carries (xfemm 35baec4,
+// fmesher/writepoly.cpp); the edge then has no condition, and the user is told.
+TEST(FemmImport, UnpairedPeriodicEdgeHasNoConditionAsInFemm) {
+  for (const char* type : {"<BdryType> = 4", "<BdryType> = 5"}) {
+    const Problem p = parse_femm(with("<BdryType> = 0", type), "one.fem");
+    for (const auto& segment : p.geometry.segments) EXPECT_EQ(segment.boundary, -1) << type;
+    ASSERT_EQ(p.warnings.size(), 1u) << type;
+    EXPECT_THAT(p.warnings[0], HasSubstr("one.fem:167: "));
+    EXPECT_THAT(p.warnings[0], HasSubstr("is used by this edge only; it pairs nothing, so the "
+                                         "edge gets no condition, as in FEMM"));
+  }
+}
+
+// A magnet with a B-H table (FEMM's curve shifted by H_c): the table and H_c both kept
+// (FemmModels.NonlinearMagnetIsExact solves one).
+TEST(FemmImport, NonlinearMagnetKeepsItsCurveAndCoercivity) {
+  std::string magnet = pot_core_text();
+  const std::size_t iron = magnet.find("<BlockName> = \"AISI 1010\"");
+  magnet.replace(magnet.find("<H_c> = 0", iron), 9, "<H_c> = 9e5");
+  const Problem p = parse_femm(magnet, "magnet.fem");
+  const auto found = std::find_if(p.materials.begin(), p.materials.end(),
+                                  [](const Material& m) { return m.name == "AISI 1010"; });
+  ASSERT_NE(found, p.materials.end());
+  EXPECT_EQ(found->coercivity, 9e5);
+  EXPECT_EQ(found->bh.size(), 38u);
+  EXPECT_TRUE(p.warnings.empty());
+}
+
 TEST(FemmImport, BhTablesAreChecked) {
-  // Swap two B values of the iron curve: not monotone.
-  EXPECT_THAT(error_of(with("0.265665\t100.1821", "0.1\t100.1821")),
-              HasSubstr("block 'AISI 1010': B-H table is not monotone at point 3"));
+  // Swap two H values of the iron curve: smoothed as FEMM does (one pass here), with a warning
+  // naming the block and the point, and the table rises.
+  std::string swapped = pot_core_text();
+  swapped.replace(swapped.find("1.51721\t1587.7793"), 17, "1.51721\t1998.8957");
+  swapped.replace(swapped.find("1.54452\t1998.8957"), 17, "1.54452\t1587.7793");
+  const Problem p = parse_femm(swapped, "swapped.fem");
+  ASSERT_EQ(p.warnings.size(), 1u);
+  EXPECT_THAT(p.warnings[0],
+              HasSubstr("swapped.fem:50: block 'AISI 1010': the B-H table does not increase at "
+                        "point 16 [1.54452, 1587.7793]; smoothed as FEMM does: every interior "
+                        "point averaged with its two neighbours, 1 pass"));
+  const auto iron = std::find_if(p.materials.begin(), p.materials.end(),
+                                 [](const Material& m) { return m.name == "AISI 1010"; });
+  ASSERT_NE(iron, p.materials.end());
+  const auto& bh = iron->bh;
+  ASSERT_EQ(bh.size(), 38u);
+  for (std::size_t i = 1; i < bh.size(); ++i) {
+    EXPECT_GT(bh[i].b, bh[i - 1].b) << i;
+    EXPECT_GT(bh[i].h, bh[i - 1].h) << i;
+  }
+  // The smoothed curve is FEMM's: the mean of each point and its neighbours (point 2).
+  EXPECT_NEAR(bh[1].b, (0.0 + 0.211862 + 0.265665) / 3.0, 1e-15);
+  // A table no rising curve can follow (its last B back at 0) is refused.
+  std::string back = pot_core_text();
+  back.replace(back.find("2.47124\t316803.62"), 17, "0.0\t316803.62");
+  EXPECT_THAT(error_of(back), HasSubstr("block 'AISI 1010': B-H table is not monotone"));
   // A one-point table.
   std::string one = pot_core_text();
   const std::size_t start = one.find("<BHPoints> = 38");

@@ -151,6 +151,29 @@ TEST(FemmModels, UniformMagnetIsExact) {
   }
 }
 
+// A nonlinear magnet filling the box: FEMM gives its curve shifted by H_c, H = H_table(|B|) B/|B|
+// - H_c m. H = 0 again satisfies every equation, so |B| is the table's B at H = H_c, here a table
+// point (1.2 T), along the magnetisation. The Newton solve must find it from A = 0.
+TEST(FemmModels, NonlinearMagnetIsExact) {
+  FemText f;
+  f.blocks = {
+      "<BeginBlock>\n<BlockName> = \"N\"\n<Mu_x> = 1\n<Mu_y> = 1\n<H_c> = 900000\n<J_re> = 0\n"
+      "<Sigma> = 0\n<LamType> = 0\n<LamFill> = 1\n<BHPoints> = 5\n0 0\n0.45 300000\n"
+      "0.85 600000\n1.2 900000\n1.45 1200000\n<EndBlock>"};
+  f.points = {"0 0 0 0", "0.02 0 0 0", "0.02 0.01 0 0", "0 0.01 0 0"};
+  f.segments = {"0 1 -1 0 0 0", "1 2 -1 0 0 0", "2 3 -1 0 0 0", "3 0 -1 0 0 0"};
+  f.labels = {"0.01 0.005 1 0.002 0 30 0 1 0"};
+  const cases::Problem problem = cases::parse_femm(f.str(), "model.fem");
+  EXPECT_TRUE(problem.warnings.empty());  // the table's spline rises: used as given
+  const SolveResult s = solve_problem(problem);
+  for (const mesh::Point p : {mesh::Point{0.003, 0.002}, mesh::Point{0.015, 0.008}}) {
+    std::array<double, 2> field{};
+    ASSERT_TRUE(flux_density_at(*s.solver, s.solution, p, -1, field));
+    EXPECT_NEAR(field[0], 1.2 * std::cos(std::numbers::pi / 6), 1e-6);
+    EXPECT_NEAR(field[1], 1.2 * std::sin(std::numbers::pi / 6), 1e-6);
+  }
+}
+
 // A point current I at the centre of a circle of radius R with A = 0 on it: B = mu0 I / (2 pi r).
 // The FE field of a point source converges away from the point; at r = R/2 on a 2 mm mesh the
 // P2 error is below 0.5 % (tolerance 1 %).

@@ -6,13 +6,14 @@ in the last printed digit fails).
 """
 
 import math
+import os
 import threading
 
 import numpy as np
 import pytest
 
 import rheomag
-from conftest import VALVE, cli_error, cli_json, run_cli, without_timing
+from conftest import SOURCE, VALVE, cli_error, cli_json, run_cli, without_timing
 
 
 def test_solve_equals_cli(valve_case):
@@ -100,6 +101,23 @@ def test_input_error_has_the_cli_message(tmp_path):
     with pytest.raises(ValueError) as e:
         rheomag.Case.load(str(bad))
     assert str(e.value) == cli_error("solve", str(bad))
+
+
+def test_a_femm_table_smoothed_as_femm_does_warns_as_the_cli_does(tmp_path):
+    # pot_core.fem with two H values of its iron table swapped: FEMM smooths the table, and so
+    # does the reader; Python gets the CLI's stderr warning as a UserWarning.
+    text = open(os.path.join(SOURCE, "tests", "data", "pot_core.fem"), newline="").read()
+    text = text.replace("1.51721\t1587.7793", "1.51721\tSWAP").replace(
+        "1.54452\t1998.8957", "1.54452\t1587.7793").replace("1.51721\tSWAP", "1.51721\t1998.8957")
+    model = tmp_path / "swapped.fem"
+    model.write_text(text, newline="")
+    with pytest.warns(UserWarning) as caught:
+        rheomag.Case.load(str(model))
+    messages = [str(w.message) for w in caught]
+    assert len(messages) == 1 and "smoothed as FEMM does" in messages[0], messages
+    code, _, err = run_cli("mesh", str(model))
+    assert code == 0, err
+    assert "rheomag: warning: " + messages[0][len("rheomag: "):] in err
 
 
 def test_two_threads_equal_sequential(valve_case):
