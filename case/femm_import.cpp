@@ -214,6 +214,8 @@ struct FemFile {
   double depth = 1.0;
   int depth_line = 0;
   bool axisymmetric = false;
+  double ext_zo = 0.0, ext_ro = 0.0, ext_ri = 0.0;  // Kelvin exterior, file units
+  int ext_line = 0;
   std::vector<FemBoundary> boundaries;
   std::vector<FemBlock> blocks;
   std::vector<FemCircuit> circuits;
@@ -336,8 +338,8 @@ FemFile read_file(std::string_view text, FemReader& reader) {
   bool frequency_seen = false;
   std::string_view line;
   static const std::vector<std::string> ignored{
-      "format",   "precision", "minangle", "dosmartmesh",  "smartmesh", "coordinates", "acsolver",
-      "prevtype", "prevsoln",  "comment",  "forcemaxmesh", "extzo",     "extro",       "extri"};
+      "format",   "precision", "minangle", "dosmartmesh", "smartmesh",   "coordinates",
+      "acsolver", "prevtype",  "prevsoln", "comment",     "forcemaxmesh"};
   (void)text;
   while (reader.next(line)) {
     const int at = reader.line_number();
@@ -365,6 +367,10 @@ FemFile read_file(std::string_view text, FemReader& reader) {
     } else if (key == "depth") {
       file.depth = reader.number(value, "[Depth]");
       file.depth_line = at;
+    } else if (key == "extzo" || key == "extro" || key == "extri") {
+      const double v = reader.number(value, "[" + key + "]");
+      (key == "extzo" ? file.ext_zo : key == "extro" ? file.ext_ro : file.ext_ri) = v;
+      file.ext_line = at;
     } else if (key == "lengthunits") {
       file.unit = length_unit(value, reader);
     } else if (key == "problemtype") {
@@ -673,6 +679,7 @@ PeriodicEdges pair_periodic_edges(const FemFile& file, Problem& problem, FemRead
     }
     BoundaryCondition& first = problem.boundaries[b];
     first.kind = bdry.type == 4 ? BoundaryKind::periodic : BoundaryKind::antiperiodic;
+    first.pairs_by_angle = use[0].arc;  // FEMM pairs arcs of one angle, whatever their radii
     BoundaryCondition second = first;
     second.partner = b;
     first.partner = static_cast<int>(problem.boundaries.size());
@@ -881,12 +888,25 @@ Problem parse_femm(std::string_view text, const std::string& source) {
     // FEMM's external region (Kelvin transformation) is a disk standing for the outside of a
     // circle, joined to it by a periodic pair. The planar map is conformal: the field equation
     // and the energy density keep their form, and FEMM's planar solver treats the region as any
-    // other. Axisymmetric external regions scale the permeability with position.
-    if ((l.external & 1) != 0 && file.axisymmetric)
-      fail(l.line,
-           "block label in an axisymmetric external region (Kelvin transformation, the "
-           "permeability varies with position) is not supported; use a mixed (asymptotic) "
-           "boundary or rheomag's automatic open boundary");
+    // other. Axisymmetric external regions scale the permeability with position
+    // (KelvinExterior), from the header's [extRo], [extRi] and [extZo].
+    const FemBlock& external_block = file.blocks[l.block - 1];
+    if ((l.external & 1) != 0 && file.axisymmetric) {
+      if (!(file.ext_ro > 0.0 && file.ext_ri > 0.0))
+        fail(file.ext_line > 0 ? file.ext_line : l.line,
+             "block label in an axisymmetric external region needs [extRo] > 0 and [extRi] > 0 "
+             "(the radii of the external disk and of the domain's boundary); got extRo = " +
+                 format_number(file.ext_ro) + ", extRi = " + format_number(file.ext_ri));
+      if (!external_block.bh.empty() || external_block.h_c != 0.0 || external_block.j != 0.0 ||
+          l.circuit > 0)
+        fail(l.line, "block '" + external_block.name +
+                         "' in an axisymmetric external region must be a linear material "
+                         "without magnet, current or circuit (the region stands for the space "
+                         "outside the model)");
+      problem.kelvin =
+          KelvinExterior{file.ext_ri * file.unit, file.ext_ro * file.unit, file.ext_zo * file.unit};
+      data.kelvin_exterior = true;
+    }
     const FemBlock& block = file.blocks[l.block - 1];
     auto found = material_of_block.find(l.block - 1);
     if (found == material_of_block.end()) {

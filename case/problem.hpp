@@ -69,6 +69,9 @@ struct BoundaryCondition {
   /// As in FEMM, both edges are followed with the meshed domain on their left, and the start of
   /// the first pairs with the end of the second (a translation or a rotation of the domain).
   int partner = -1;
+  /// (Anti)periodic arcs of one angle: paired by the fraction of their angle, so their radii
+  /// (and lengths) may differ, as FEMM's Kelvin open boundary joins a circle to a smaller disk.
+  bool pairs_by_angle = false;
 };
 
 /// Direction of magnetisation m of a permanent-magnet region, measured from the r (x) axis:
@@ -87,6 +90,24 @@ struct RegionData {
   double turns = 0.0;            ///< coil turns in this region (sign gives the winding direction)
   double current_density = 0.0;  ///< fixed source current density J [A/m^2] (FEMM block J)
   MagnetDirection magnetisation{};  ///< direction of H_c when the material is a magnet
+  /// A region of FEMM's axisymmetric external disk: its permeability scaled by Problem::kelvin.
+  bool kelvin_exterior = false;
+};
+
+/// FEMM's axisymmetric open boundary (Kelvin transformation, [extRo], [extRi], [extZo]): the
+/// space outside the sphere of radius `domain_radius` (extRi) about the origin is mapped into a
+/// disk of radius `disk_radius` (extRo) centred on the axis at z = `disk_centre_z` (extZo),
+/// joined to the sphere's boundary by a periodic pair of arcs. In the disk's regions mu is
+/// divided by (r^2 + (z - z_c)^2) R_i / R_o^3 at each triangle's centroid, as in FEMM.
+struct KelvinExterior {
+  double domain_radius = 0.0;  ///< R_i [m], FEMM's extRi
+  double disk_radius = 0.0;    ///< R_o [m], FEMM's extRo
+  double disk_centre_z = 0.0;  ///< z_c [m], FEMM's extZo
+  /// The factor nu is multiplied by at (r, z) in the disk.
+  double reluctivity_factor(double r, double z) const {
+    const double dz = z - disk_centre_z;
+    return (r * r + dz * dz) * domain_radius / (disk_radius * disk_radius * disk_radius);
+  }
 };
 
 /// A prescribed value of A or a concentrated current at one geometry point (FEMM point
@@ -121,6 +142,8 @@ struct Problem {
   double outer_radius_factor = 5.0;  ///< automatic outer radius = factor * bounding radius
   int min_gap_elements = 4;          ///< elements across every fluid gap
   int order = 2;                     ///< Lagrange order, 1 or 2
+  /// FEMM's axisymmetric external region, when a region has RegionData::kelvin_exterior.
+  std::optional<KelvinExterior> kelvin;
   /// What reading the input changed to solve it as its own tool would (e.g. a FEMM B-H table
   /// smoothed as FEMM does), one sentence each, for the user.
   std::vector<std::string> warnings;

@@ -65,6 +65,15 @@ Assembler::Assembler(const cases::Problem& problem, const mesh::Mesh& mesh, cons
     material_of_element_[e] = material;
     const auto v = vertices(mesh, e);
     region_area_[region] += mesh::triangle_area(v[0], v[1], v[2]);
+    if (problem.regions[region].kelvin_exterior && problem.kelvin) {
+      // FEMM's axisymmetric external disk: mu divided by the Kelvin factor at the centroid,
+      // a law of the triangle's own (the material is linear: the importer checks).
+      const mesh::Point c = mesh::triangle_centroid(v[0], v[1], v[2]);
+      cases::Material scaled = problem.materials[material];
+      scaled.mu_r /= problem.kelvin->reluctivity_factor(c.r, c.z);
+      material_of_element_[e] = static_cast<int>(laws_.size());
+      laws_.emplace_back(scaled);
+    }
   }
   for (const mesh::BoundaryEdge& edge : mesh.boundary_edges) {
     if (edge.boundary < 0 || edge.boundary >= static_cast<int>(problem.boundaries.size())) continue;

@@ -161,7 +161,8 @@ PeriodicConstraints periodic_constraints(const mesh::Mesh& mesh, const cases::Pr
       throw InputError(boundary_name(problem, m) + " has no partner edge");
     const Path master = boundary_path(mesh, problem, m);
     const Path slave = boundary_path(mesh, problem, bc.partner);
-    if (std::abs(master.length - slave.length) > 1e-6 * std::max(master.length, slave.length))
+    if (!bc.pairs_by_angle &&
+        std::abs(master.length - slave.length) > 1e-6 * std::max(master.length, slave.length))
       throw InputError(boundary_name(problem, m) + ": the paired edges have different lengths (" +
                        std::to_string(master.length) + " and " + std::to_string(slave.length) +
                        " m); periodic edges must be congruent");

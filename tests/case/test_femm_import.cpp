@@ -196,8 +196,9 @@ TEST(FemmImport, UnsupportedFeaturesAreRejectedClearly) {
               HasSubstr("parallel circuit 'coil' (CircuitType 0) with 200 turns"));
   EXPECT_THAT(error_of(with("<Mu_x> = 1\r\n    <Mu_y> = 1", "<Mu_x> = 1\r\n    <Mu_y> = 2")),
               HasSubstr("anisotropic"));
+  // An axisymmetric external region needs the header's radii (FemmModels.AxisymmetricKelvin...).
   EXPECT_THAT(error_of(with("60\t0\t1\t-1\t0\t0\t0\t1\t0", "60\t0\t1\t-1\t0\t0\t0\t1\t1")),
-              HasSubstr("axisymmetric external region (Kelvin transformation"));
+              HasSubstr("needs [extRo] > 0 and [extRi] > 0"));
 }
 
 TEST(FemmImport, MalformedOrTruncatedFiles) {

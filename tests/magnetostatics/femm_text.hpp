@@ -14,11 +14,13 @@ struct FemText {
   double depth = 1.0;
   std::vector<std::string> point_props, boundaries, blocks, circuits;
   std::vector<std::string> points, segments, arcs, labels;
+  std::string header;  ///< extra "[Key] = value" lines after [ProblemType]
 
   std::string str() const {
     std::ostringstream out;
     out << "[Format] = 4.0\n[Frequency] = 0\n[Precision] = 1e-08\n[Depth] = " << depth
-        << "\n[LengthUnits] = meters\n[ProblemType] = " << problem << "\n";
+        << "\n[LengthUnits] = meters\n[ProblemType] = " << problem << "\n"
+        << header;
     auto section = [&](const char* key, const std::vector<std::string>& items) {
       out << key << " = " << items.size() << "\n";
       for (const std::string& item : items) out << item << "\n";
