@@ -42,7 +42,8 @@ CaseHandle load(const std::string& path) {
     c = std::make_shared<const cases::Case>(cases::load_case(path));
   }
   for (const std::string& w : c->problem.warnings)
-    PyErr_WarnEx(PyExc_UserWarning, ("rheomag: " + w).c_str(), 1);
+    if (PyErr_WarnEx(PyExc_UserWarning, ("rheomag: " + w).c_str(), 1) != 0)
+      throw py::error_already_set();  // warnings filtered as errors
   return {c, path};
 }
 

@@ -32,7 +32,8 @@ lumped::Recording load_recording(const std::string& csv_path) {
     rec = lumped::read_recording(csv_path);
   }
   for (const std::string& w : rec.warnings)
-    PyErr_WarnEx(PyExc_UserWarning, ("rheomag: " + w).c_str(), 1);
+    if (PyErr_WarnEx(PyExc_UserWarning, ("rheomag: " + w).c_str(), 1) != 0)
+      throw py::error_already_set();  // warnings filtered as errors
   return rec;
 }
 

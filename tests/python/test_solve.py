@@ -8,6 +8,7 @@ in the last printed digit fails).
 import math
 import os
 import threading
+import warnings
 
 import numpy as np
 import pytest
@@ -115,6 +116,10 @@ def test_a_femm_table_smoothed_as_femm_does_warns_as_the_cli_does(tmp_path):
         rheomag.Case.load(str(model))
     messages = [str(w.message) for w in caught]
     assert len(messages) == 1 and "smoothed as FEMM does" in messages[0], messages
+    with warnings.catch_warnings():  # a warning filtered as an error raises it
+        warnings.simplefilter("error")
+        with pytest.raises(UserWarning):
+            rheomag.Case.load(str(model))
     code, _, err = run_cli("mesh", str(model))
     assert code == 0, err
     assert "rheomag: warning: " + messages[0][len("rheomag: "):] in err
