@@ -560,12 +560,12 @@ Material femm_material(const FemBlock& block, const std::string& source, const F
                  format_number(block.bh[i].first) + ", " + format_number(block.bh[i].second) + "]";
           break;
         }
+      const std::string count = std::to_string(passes) + (passes == 1 ? " pass" : " passes");
       warnings.push_back(where + ": " + what +
                          "; smoothed as FEMM does: every interior point averaged with its two "
                          "neighbours, " +
-                         std::to_string(passes) + (passes == 1 ? " pass" : " passes") +
-                         ", until FEMM's spline rises throughout");
-      m.source += " (B-H table smoothed as FEMM does, " + std::to_string(passes) + " passes)";
+                         count + ", until FEMM's spline rises throughout");
+      m.source += " (B-H table smoothed as FEMM does, " + count + ")";
     }
     m.bh = checked_bh_table(smoothed.points, where);
     // A nonlinear magnet: FEMM's table is the magnet's curve shifted by H_c to start at (0, 0),
