@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "case/femm_bh_smoothing.hpp"
+#include "case/femm_hole_areas.hpp"
 #include "case/magnet_direction.hpp"
 #include "case/material_library.hpp"
 #include "case/region_outline.hpp"
@@ -954,6 +955,7 @@ Problem parse_femm(std::string_view text, const std::string& source) {
     problem.regions.push_back(data);
   }
   if (file.labels.empty()) fail(reader.line_number(), "the model has no block labels");
+  drop_labels_in_hole_areas(problem);
   return problem;
 }
 

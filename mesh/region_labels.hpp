@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "mesh/cdt.hpp"
+#include "mesh/cdt_insert.hpp"
 #include "mesh/pslg.hpp"
 #include "mesh/pslg_check.hpp"
 
@@ -16,10 +17,6 @@ struct RegionGeometry {
   /// band_thickness(area, perimeter) (see quality.hpp).
   double thickness = 0.0;
 };
-
-/// Inserts the points and segments (segments longer than their max_length are cut into equal
-/// pieces) and records each constrained edge's boundary marker and max_length in FaceInfo.
-void insert_pslg(const PreparedPslg& prepared, Cdt& cdt);
 
 /// Labels every face with its region: kOutside for faces connected to infinity, then the
 /// area around each seed, then Pslg::default_region for the rest. Throws InputError for a seed

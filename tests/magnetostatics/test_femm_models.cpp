@@ -11,6 +11,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "case/femm_import.hpp"
 #include "core/constants.hpp"
@@ -92,6 +93,54 @@ TEST(FemmModels, OneSidedCircuitsAreNotGaugeFree) {
   for (const CircuitResult& c : s.results.circuits) {
     EXPECT_FALSE(c.gauge_free) << c.name;
     EXPECT_TRUE(std::isnan(c.flux_linkage)) << c.name;
+  }
+}
+
+// FEMM leaves an area that holds a <No Mesh> label and a block label unmeshed: its mesher gives
+// Triangle the holes, which are carved before the blocks are spread (xfemm 35baec4,
+// fmesher/writepoly.cpp). A square in the slot's air, labelled air: the exact 1D field (the
+// closed form). Labelled <No Mesh>: a hole, whose walls have dA/dn = 0 (field lines meet them at
+// right angles, as at infinitely permeable iron), so the energy differs. Labelled both ways, in
+// either order: the hole, to rounding, and a warning that names both labels' lines.
+TEST(FemmModels, NoMeshLabelLeavesItsAreaUnmeshedAsInFemm) {
+  const auto with_square = [](const std::vector<std::string>& labels) {
+    FemText f = slot("2 0.004 1 0 0 100 0", "2 0.004 1 0 0 -100 0");
+    f.circuits = {rheomag::testing::fem_circuit("coil", 2.0)};
+    const int first = static_cast<int>(f.points.size());
+    for (const char* p :
+         {"0.045 0.005 0 0", "0.055 0.005 0 0", "0.055 0.015 0 0", "0.045 0.015 0 0"})
+      f.points.push_back(p);
+    for (int k = 0; k < 4; ++k)
+      f.segments.push_back(std::to_string(first + k) + " " + std::to_string(first + (k + 1) % 4) +
+                           " -1 0 0 0");
+    // The slot's air label sits at (L/2, 0.01), inside the square: move it out.
+    f.labels[1] = "0.03 0.01 1 0.004 0 0 0 1 0";
+    for (const std::string& l : labels) f.labels.push_back(l);
+    return f.str();
+  };
+  const std::string air = "0.0495 0.0102 1 0.004 0 0 0 1 0";
+  const std::string no_mesh = "0.051 0.0097 0 0.004 0 0 0 1 0";
+  const double j = 100 * 2.0 / (a * H);
+  const SolveResult in_air = solve_text(with_square({air}));
+  EXPECT_NEAR(in_air.results.energy, slot_energy(j), 1e-9 * slot_energy(j));
+  const cases::Problem hole_only = cases::parse_femm(with_square({no_mesh}), "model.fem");
+  EXPECT_TRUE(hole_only.warnings.empty());
+  const SolveResult hole = solve_problem(hole_only);
+  EXPECT_GT(std::abs(hole.results.energy / slot_energy(j) - 1), 0.01);
+  for (const auto& labels : {std::vector{air, no_mesh}, std::vector{no_mesh, air}}) {
+    const std::string text = with_square(labels);
+    const auto line_of = [&](const std::string& label) {
+      return std::to_string(1 + std::count(text.begin(), text.begin() + text.find(label), '\n'));
+    };
+    const cases::Problem both = cases::parse_femm(text, "model.fem");
+    ASSERT_EQ(both.warnings.size(), 1u);
+    EXPECT_THAT(both.warnings[0], HasSubstr("model.fem:" + line_of(air) + ": block label 'air_"));
+    EXPECT_THAT(both.warnings[0], HasSubstr("' lies in the area of the <No Mesh> label at line " +
+                                            line_of(no_mesh) + "; FEMM leaves that area unmeshed"));
+    const SolveResult s = solve_problem(both);
+    EXPECT_NEAR(s.results.energy, hole.results.energy, 1e-12 * hole.results.energy);
+    EXPECT_NEAR(s.results.circuits[0].flux_linkage, hole.results.circuits[0].flux_linkage,
+                1e-12 * std::abs(hole.results.circuits[0].flux_linkage));
   }
 }
 
