@@ -68,6 +68,14 @@ void average_interior_points(Table& t) {
 
 }  // namespace
 
+std::vector<double> femm_spline_slopes(const Table& points) {
+  if (points.size() < 2) return {};
+  for (std::size_t i = 0; i + 1 < points.size(); ++i)
+    if (!(points[i + 1].first > points[i].first)) return {};
+  const Eigen::VectorXd slopes = natural_spline_slopes(points);
+  return std::vector<double>(slopes.begin(), slopes.end());
+}
+
 bool femm_spline_turns_back(const Table& points) {
   for (std::size_t i = 0; i + 1 < points.size(); ++i)
     if (!(points[i + 1].first > points[i].first)) return true;

@@ -16,6 +16,11 @@ struct FemmSmoothedTable {
   int passes = 0;                                 ///< 0: the table was used as given
 };
 
+/// Slopes dH/dB at the points of the natural cubic spline through the table's H(B) (continuous
+/// second derivative inside, zero second derivative at both ends: FEMM's CMMaterialProp::
+/// GetSlopes at zero frequency). Empty when B does not increase or the system is singular.
+std::vector<double> femm_spline_slopes(const std::vector<std::pair<double, double>>& points);
+
 /// True when the cubic spline FEMM fits through the table (H as a function of B, slopes from
 /// FEMM's end conditions) has dH/dB = 0 inside some interval, or the table does not increase:
 /// the test FEMM repeats after each smoothing pass.

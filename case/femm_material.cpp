@@ -68,6 +68,7 @@ Material femm_material(const FemBlock& block, const std::string& source, const F
       m.source += " (B-H table smoothed as FEMM does, " + count + ")";
     }
     m.bh = checked_bh_table(smoothed.points, where);
+    m.bh_interpolation = BhInterpolation::femm_natural_spline;
     // A nonlinear magnet: FEMM's table is the magnet's curve shifted by H_c to start at (0, 0),
     // H = H_curve(|B|) B/|B| - H_c m; the magnet's load is the linear magnet's.
     m.coercivity = block.h_c;

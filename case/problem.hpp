@@ -29,6 +29,15 @@ struct ThermalProperties {
 };
 
 /// A magnetic material: linear (relative permeability) or nonlinear (B-H table).
+/// How H(B) is interpolated between the points of a B-H table.
+enum class BhInterpolation {
+  /// Monotone piecewise cubic (PCHIP slopes; magnetostatics/bh_curve.hpp): rheomag's default.
+  monotone_cubic,
+  /// FEMM's natural cubic spline of H(B) (zero second derivative at both ends), for tables read
+  /// from a .fem file: the curve FEMM's solver uses.
+  femm_natural_spline,
+};
+
 struct Material {
   std::string name;
   double mu_r = 1.0;                   ///< relative permeability when `bh` is empty
@@ -41,6 +50,8 @@ struct Material {
   bool fluid = false;  ///< an MR fluid of the materials library: a medium a body moves through
   /// Thermal data; empty: the material is outside the thermal model (surroundings, e.g. air).
   std::optional<ThermalProperties> thermal{};
+  /// How H is interpolated between the `bh` points (FEMM's spline for tables from a .fem).
+  BhInterpolation bh_interpolation = BhInterpolation::monotone_cubic;
 };
 
 /// A series circuit driving one or more coil regions.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "case/femm_bh_smoothing.hpp"
 #include "core/constants.hpp"
 #include "core/error.hpp"
 
@@ -16,7 +17,8 @@ namespace {
 
 }  // namespace
 
-BhCurve::BhCurve(const std::vector<cases::BhPoint>& table, const std::string& material) {
+BhCurve::BhCurve(const std::vector<cases::BhPoint>& table, const std::string& material,
+                 cases::BhInterpolation interpolation) {
   if (table.size() < 2) {
     fail(material, "has " + std::to_string(table.size()) + " point(s); expected at least 2");
   }
@@ -71,6 +73,17 @@ BhCurve::BhCurve(const std::vector<cases::BhPoint>& table, const std::string& ma
   }
   // First interval H = B (a + c B^2): a = (3 s0 - d1) / 2 > 0 needs d1 < 3 s0.
   slope[1] = std::min(slope[1], 2.5 * secant[0]);
+  if (interpolation == cases::BhInterpolation::femm_natural_spline) {
+    // FEMM's natural spline: 2 d0 + d1 = 3 s0 on the first interval, so its cubic is the odd
+    // polynomial with a = d0.
+    std::vector<std::pair<double, double>> points;
+    for (std::size_t k = 0; k <= n; ++k) points.emplace_back(b_[k], h_[k]);
+    const std::vector<double> femm = cases::femm_spline_slopes(points);
+    const bool positive =
+        femm.size() == n + 1 &&
+        std::all_of(femm.begin(), femm.end(), [](double d) { return std::isfinite(d) && d > 0.0; });
+    if (positive && !cases::femm_spline_turns_back(points)) slope.assign(femm.begin(), femm.end());
+  }
   a_ = 0.5 * (3.0 * secant[0] - slope[1]);
   c_ = (slope[1] - secant[0]) / (2.0 * b_[1] * b_[1]);
 

@@ -17,6 +17,11 @@ namespace rheomag::magnetostatics {
 /// nu = H/B = a + c B^2 is linear in B^2 near B = 0: nu(0) = a and d nu/d(B^2) = c are finite
 /// (the B -> 0 limit is exact, no division by B). dH/dB > 0 everywhere (strictly monotone).
 ///
+/// With BhInterpolation::femm_natural_spline (tables read from FEMM files) the slopes are those
+/// of FEMM's natural cubic spline instead; its first interval has zero second derivative at B = 0,
+/// so it is the same odd polynomial with a = dH/dB(0). A table whose spline turns back (dH/dB <= 0
+/// somewhere: FEMM would have smoothed it first) keeps the monotone slopes.
+///
 /// Extrapolation beyond the last table point (B_n, H_n, end slope d_n), with x = B - B_n and
 /// tau = B_n - B_{n-1} (the last table spacing):
 ///   H = H_n + x / mu0 + (d_n - 1/mu0) tau (1 - exp(-x / tau)),
@@ -29,7 +34,8 @@ class BhCurve {
   /// Builds the curve; `material` names the material in error messages. A leading (0, 0) point is
   /// optional (added when absent). Throws InputError unless the table has >= 2 points, all
   /// finite, B and H >= 0 and both strictly increasing.
-  BhCurve(const std::vector<cases::BhPoint>& table, const std::string& material);
+  BhCurve(const std::vector<cases::BhPoint>& table, const std::string& material,
+          cases::BhInterpolation interpolation = cases::BhInterpolation::monotone_cubic);
 
   /// Field strength H(B) [A/m] for B >= 0 [T].
   double h(double b) const;

@@ -10,7 +10,7 @@ namespace rheomag::magnetostatics {
 
 Reluctivity::Reluctivity(const cases::Material& material) {
   if (!material.bh.empty()) {
-    curve_.emplace(material.bh, material.name);
+    curve_.emplace(material.bh, material.name, material.bh_interpolation);
     return;
   }
   if (!std::isfinite(material.mu_r) || material.mu_r <= 0.0) {

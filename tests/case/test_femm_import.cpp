@@ -74,6 +74,8 @@ TEST(FemmImport, PotCoreFieldByField) {
   EXPECT_EQ(p.geometry.regions[4].name, "Air_2");
   const Material& iron = p.materials[p.regions[0].material];
   EXPECT_EQ(iron.bh.size(), 38u);  // the 38 points of the AISI 1010 curve, (0, 0) included
+  // Interpolated as FEMM does (its natural cubic spline), not with rheomag's monotone cubic.
+  EXPECT_EQ(iron.bh_interpolation, BhInterpolation::femm_natural_spline);
   EXPECT_DOUBLE_EQ(iron.conductivity.value_or(0.0), 5.8e6);
   EXPECT_EQ(p.regions[1].turns, 200.0);
   EXPECT_EQ(p.regions[1].circuit, 0);
