@@ -284,7 +284,8 @@ FemmModel write_femm_for_mesh(const Problem& problem, const mesh::Mesh& m) {
   for (const Circuit& c : problem.circuits) {
     out << "  <BeginCircuit>\n    <CircuitName> = " << femm_quoted(c.name, "circuit name", g.source)
         << "\n    <TotalAmps_re> = " << num(c.current)
-        << "\n    <TotalAmps_im> = 0\n    <CircuitType> = 1\n  <EndCircuit>\n";
+        << "\n    <TotalAmps_im> = 0\n    <CircuitType> = " << (c.parallel ? 0 : 1)
+        << "\n  <EndCircuit>\n";
   }
 
   // Point properties are numbered in problem order; a point carries at most one.

@@ -188,9 +188,8 @@ Problem parse_femm(std::string_view text, const std::string& source) {
     const FemCircuit& c = file.circuits[i];
     if (c.type != 0 && c.type != 1)
       fail(c.line, "circuit '" + c.name + "': unknown CircuitType " + std::to_string(c.type));
-    problem.circuits.push_back({c.name, c.amps});
+    problem.circuits.push_back({c.name, c.amps, c.type == 0});
   }
-  std::vector<int> labels_per_circuit(file.circuits.size(), 0);
   std::map<std::string, int> name_count;
   for (const FemLabel& l : file.labels)
     if (l.block > 0 && l.block <= static_cast<int>(file.blocks.size()))
@@ -266,18 +265,16 @@ Problem parse_femm(std::string_view text, const std::string& source) {
       if (l.turns == 0) fail(l.line, "block label in circuit '" + c.name + "' has 0 turns");
       data.circuit = l.circuit - 1;
       data.turns = l.turns;
-      if (c.type == 0) {
-        if (++labels_per_circuit[l.circuit - 1] > 1)
-          fail(l.line, "parallel circuit '" + c.name +
-                           "' (CircuitType 0) feeds more than one "
-                           "block: the current split needs a voltage-driven solve; use a series "
-                           "circuit (CircuitType 1) with turns per block");
-        if (l.turns != 1)
-          fail(l.line, "parallel circuit '" + c.name + "' (CircuitType 0) with " +
-                           std::to_string(l.turns) +
-                           " turns: a parallel circuit is a solid "
-                           "conductor; use a series circuit for a winding");
-      }
+      // FEMM's rule (fsolver.cpp): a label of more than one turn, or of litz or wire, is a
+      // winding; any other is a solid conductor, whose share follows its conductivity.
+      data.solid_conductor = std::abs(l.turns) <= 1 && block.lam_type <= 2;
+      if (c.type == 0 && l.turns != 1)
+        problem.warnings.push_back(
+            reader.where(l.line) + ": block label with " + std::to_string(l.turns) +
+            " turns in parallel circuit '" + c.name +
+            "': FEMM shares a parallel circuit's current among its labels and ignores their "
+            "turns (and their sign), and so does rheomag; for N x the current, use a series "
+            "circuit (CircuitType 1)");
     }
     // FEMM's default label (flag bit 2) gives its block to every area without a label; it may
     // lie outside the geometry.

@@ -54,10 +54,14 @@ struct Material {
   BhInterpolation bh_interpolation = BhInterpolation::monotone_cubic;
 };
 
-/// A series circuit driving one or more coil regions.
+/// A circuit driving one or more coil regions: in series (each region carries turns x current)
+/// or, as FEMM's parallel circuit, sharing one current among its regions.
 struct Circuit {
   std::string name;
   double current = 0.0;  ///< [A]
+  /// FEMM's parallel circuit (CircuitType 0): `current` is split among its regions, whatever
+  /// their turns, as FEMM's solver splits it (magnetostatics/circuit_currents.hpp).
+  bool parallel = false;
 };
 
 /// Kinds of boundary condition on marked PSLG segments.
@@ -103,6 +107,9 @@ struct RegionData {
   MagnetDirection magnetisation{};  ///< direction of H_c when the material is a magnet
   /// A region of FEMM's axisymmetric external disk: its permeability scaled by Problem::kelvin.
   bool kelvin_exterior = false;
+  /// A solid conductor, not a winding (FEMM: a label of at most one turn that is not litz or
+  /// wire): its circuit's current flows as sigma E, and E ~ 1/r in an axisymmetric model.
+  bool solid_conductor = false;
 };
 
 /// FEMM's axisymmetric open boundary (Kelvin transformation, [extRo], [extRi], [extZo]): the

@@ -75,6 +75,7 @@ Assembler::Assembler(const cases::Problem& problem, const mesh::Mesh& mesh, cons
       laws_.emplace_back(scaled);
     }
   }
+  region_current_ = circuit_currents(problem, mesh, region_area_);
   for (const mesh::BoundaryEdge& edge : mesh.boundary_edges) {
     if (edge.boundary < 0 || edge.boundary >= static_cast<int>(problem.boundaries.size())) continue;
     const cases::BoundaryCondition& bc = problem.boundaries[edge.boundary];
@@ -527,6 +528,11 @@ double Assembler::energy(const Eigen::VectorXd& a) const {
   return total + boundary_energy(a);
 }
 
+double Assembler::centroid_r(int e) const {
+  const auto v = vertices(mesh_, e);
+  return mesh::triangle_centroid(v[0], v[1], v[2]).r;
+}
+
 Eigen::VectorXd Assembler::circuit_source(int c) const {
   Eigen::VectorXd source = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(mesh_.nodes.size()));
   const int m = mesh_.nodes_per_triangle();
@@ -534,11 +540,11 @@ Eigen::VectorXd Assembler::circuit_source(int c) const {
   double f[kMaxElementNodes];
   for (int e = 0; e < static_cast<int>(mesh_.triangles.size()); ++e) {
     const int region = mesh_.region[e];
-    const cases::RegionData& data = problem_.regions[region];
-    if (data.circuit != c || data.turns == 0.0 || region_area_[region] <= 0.0) continue;
+    const RegionCurrent& current = region_current_[region];
+    if (problem_.regions[region].circuit != c || current.per_amp == 0.0) continue;
     quadrature(e, q);
     element_source(q, f);
-    const double density = data.turns / region_area_[region];
+    const double density = current.per_amp * current.g(centroid_r(e));
     const auto& t = mesh_.triangles[e];
     for (int i = 0; i < m; ++i) source[t[i]] += density * f[i];
   }
@@ -581,12 +587,14 @@ Eigen::VectorXd Assembler::fixed_source() const {
     const int region = mesh_.region[e];
     const cases::RegionData& data = problem_.regions[region];
     const double h_c = problem_.materials[data.material].coercivity;
-    if (data.current_density == 0.0 && h_c == 0.0) continue;
+    const double density =
+        data.current_density + region_current_[region].density(0.0, centroid_r(e));
+    if (density == 0.0 && h_c == 0.0) continue;
     quadrature(e, q);
     const auto& t = mesh_.triangles[e];
-    if (data.current_density != 0.0) {
+    if (density != 0.0) {
       element_source(q, f);
-      for (int i = 0; i < m; ++i) source[t[i]] += data.current_density * f[i];
+      for (int i = 0; i < m; ++i) source[t[i]] += density * f[i];
     }
     if (h_c == 0.0) continue;
     if (!directions[region]) {

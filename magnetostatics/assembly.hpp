@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "case/problem.hpp"
+#include "magnetostatics/circuit_currents.hpp"
 #include "magnetostatics/dof_map.hpp"
 #include "magnetostatics/element_kernel.hpp"
 #include "magnetostatics/reluctivity.hpp"
@@ -61,11 +62,13 @@ class Assembler {
   /// The tangent's sparsity pattern (lower triangle, free dofs), values zero.
   const SparseMatrix& pattern() const { return pattern_; }
 
-  /// Source vector of circuit `c` at 1 A, over all nodes: sum over its regions of
-  /// (turns / region area) integral N_i dV. Also the flux-linkage functional: lambda_c = F_c . A.
+  /// Source vector of circuit `c` at 1 A, over all nodes: sum over its regions of the current
+  /// density per ampere (turns / region area for a winding; region_currents()) times
+  /// integral N_i dV. Also the flux-linkage functional: lambda_c = F_c . A.
   Eigen::VectorXd circuit_source(int c) const;
   /// Current-independent source over all nodes: fixed current densities J of the regions
-  /// (integral J N_i dV) and permanent magnets, integral H_c m . G_i dV with G_i the B operator
+  /// (integral J N_i dV, with what a circuit takes back of them: region_currents()) and permanent
+  /// magnets, integral H_c m . G_i dV with G_i the B operator
   /// of N_i (from H = nu B - H_c m in the weak form integral H . B(v) dV = integral J v dV), m
   /// evaluated at each triangle's centroid. InputError naming the region for a bad direction.
   Eigen::VectorXd fixed_source() const;
@@ -79,6 +82,10 @@ class Assembler {
   const Reluctivity& law(int e) const { return laws_[material_of_element_[e]]; }
   /// Meridian-plane area of each region [m^2] (index as Problem::regions).
   const std::vector<double>& region_areas() const { return region_area_; }
+  /// How each region's circuit current spreads over it (index as Problem::regions).
+  const std::vector<RegionCurrent>& region_currents() const { return region_current_; }
+  /// Centroid radius of triangle `e` [m] (the r of RegionCurrent::density).
+  double centroid_r(int e) const;
   /// Energy of the mixed (Robin) boundary terms, integral (c0 A^2 / 2 - c1 A) dw [J]: for the
   /// open boundary (c0 = nu0 / R0, c1 = 0) the exact field energy outside R0 of a dipole field.
   double boundary_energy(const Eigen::VectorXd& a) const;
@@ -135,6 +142,7 @@ class Assembler {
   std::vector<Reluctivity> laws_;
   std::vector<int> material_of_element_;
   std::vector<double> region_area_;
+  std::vector<RegionCurrent> region_current_;
   std::vector<RobinEdge> robin_edges_;
   SparseMatrix pattern_;
   std::vector<int> element_offsets_;  // nodes^2 per element, row-major local (i, j)

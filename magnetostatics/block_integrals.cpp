@@ -54,10 +54,11 @@ RegionSums region_sums(const MagnetostaticSolver& solver, const Solution& soluti
     const int region = m.region[e];
     if (!chosen[region]) continue;
     const cases::RegionData& data = problem.regions[region];
-    double j = data.current_density;  // [A/m^2]: fixed J plus the coil's N I / area
-    const double region_area = assembler.region_areas()[region];
-    if (data.circuit >= 0 && region_area > 0.0)
-      j += data.turns * solution.currents[data.circuit] / region_area;
+    // [A/m^2]: fixed J plus the circuit's (a coil's N I / area)
+    double j = data.current_density;
+    if (data.circuit >= 0)
+      j += assembler.region_currents()[region].density(solution.currents[data.circuit],
+                                                       assembler.centroid_r(e));
     assembler.quadrature(e, q);
     for (int i = 0; i < m.nodes_per_triangle(); ++i) a_local[i] = solution.a[m.triangles[e][i]];
     const Reluctivity& law = assembler.law(e);

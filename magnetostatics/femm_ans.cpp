@@ -61,16 +61,21 @@ std::string femm_ans_text(const MagnetostaticSolver& solver, const Solution& sol
   }
   out << elements << "\n" << element_lines.str();
 
-  // Per block label: "1 J" (a fixed circuit current density [MA/m^2] added to the block's J):
-  // the coil's turns N I over its region's area, as rheomag's assembly spreads it.
-  const std::vector<double>& areas = solver.assembler().region_areas();
+  // Per block label: "1 J", a circuit current density [MA/m^2] added to the block's J, or for a
+  // solid conductor of an axisymmetric model "0 dV", a voltage per radian FEMM's post-processor
+  // turns into J = -sigma dV / r: the circuit's current as rheomag's assembly spreads it.
+  const std::vector<RegionCurrent>& currents = solver.assembler().region_currents();
   out << model.label_region.size() << "\n";
   for (int region : model.label_region) {
     const cases::RegionData& d = problem.regions[region];
-    double density = 0.0;
-    if (d.circuit >= 0 && areas[region] > 0.0)
-      density = d.turns * problem.circuits[d.circuit].current / areas[region];
-    out << "1\t" << ans_number(density * 1e-6) << "\n";
+    const RegionCurrent& c = currents[region];
+    const double drive =
+        d.circuit >= 0 ? c.per_amp * problem.circuits[d.circuit].current + c.offset : 0.0;
+    const double sigma = problem.materials[d.material].conductivity.value_or(0.0);
+    if (c.radial && sigma > 0.0)
+      out << "0\t" << ans_number(-drive / sigma) << "\n";
+    else
+      out << "1\t" << ans_number(c.radial ? 0.0 : drive * 1e-6) << "\n";
   }
   out << "0\n0\n";  // no periodic pairs (export refuses them), no air-gap elements
   return out.str();

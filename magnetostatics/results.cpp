@@ -247,6 +247,7 @@ Results compute_results(const MagnetostaticSolver& solver, const Solution& solut
       if (region.circuit == c) circuit.turns += region.turns;
       wound = wound || (region.circuit == c && region.turns != 0.0);
     }
+    if (problem.circuits[c].parallel) circuit.turns = 1.0;  // one current shared, FEMM's way
     if (!wound && circuit.current != 0.0)
       circuit.warning = "circuit '" + circuit.name +
                         "' carries a current but winds no region (no block label names it with "

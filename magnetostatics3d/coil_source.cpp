@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 
+#include "magnetostatics/circuit_currents.hpp"
 #include "mesh/triangle.hpp"
 
 namespace rheomag::magnetostatics3d {
@@ -105,11 +106,15 @@ std::vector<CircuitCoils> collect_coils(const cases::Problem& closed, const mesh
     const auto v = vertices(e);
     area[meridian.region[e]] += mesh::triangle_area(v[0], v[1], v[2]);
   }
+  // The current density per ampere of each coil region (a winding's turns / area).
+  const std::vector<magnetostatics::RegionCurrent> shares =
+      magnetostatics::circuit_currents(closed, meridian, area);
   // Edge use count per region: an edge used once is on the region's boundary.
   std::map<std::array<int, 3>, int> uses;
   for (std::size_t e = 0; e < meridian.triangles.size(); ++e) {
     const cases::RegionData& rd = closed.regions[meridian.region[e]];
-    if (rd.circuit < 0 || rd.turns == 0.0) continue;
+    const magnetostatics::RegionCurrent& share = shares[meridian.region[e]];
+    if (rd.circuit < 0 || share.per_amp == 0.0) continue;
     CircuitCoils& c = coils[rd.circuit];
     const auto v = vertices(e);
     if (c.triangles.empty()) {
@@ -117,7 +122,8 @@ std::vector<CircuitCoils> collect_coils(const cases::Problem& closed, const mesh
       c.z_min = INFINITY;
       c.z_max = -INFINITY;
     }
-    c.triangles.push_back({v, rd.turns / area[meridian.region[e]]});
+    c.triangles.push_back(
+        {v, share.per_amp * share.g(mesh::triangle_centroid(v[0], v[1], v[2]).r)});
     for (int k = 0; k < 3; ++k) {
       c.r_max = std::max(c.r_max, v[k].r);
       c.z_min = std::min(c.z_min, v[k].z);

@@ -194,8 +194,14 @@ TEST(FemmImport, UnsupportedFeaturesAreRejectedClearly) {
   EXPECT_THAT(error_of(across), HasSubstr("with LamFill < 1 make the material anisotropic"));
   EXPECT_THAT(error_of(with("<LamType> = 0", "<LamType> = 9")), HasSubstr("unknown LamType 9"));
   EXPECT_THAT(error_of(with("<LamFill> = 1", "<LamFill> = 0")), HasSubstr("LamFill = 0"));
-  EXPECT_THAT(error_of(with("<CircuitType> = 1", "<CircuitType> = 0")),
-              HasSubstr("parallel circuit 'coil' (CircuitType 0) with 200 turns"));
+  // A parallel circuit of a 200-turn label is FEMM's: one current, the turns a winding's mark
+  // (FemmCircuits.* solve such circuits against closed forms).
+  const Problem parallel = parse_femm(with("<CircuitType> = 1", "<CircuitType> = 0"), "p.fem");
+  ASSERT_EQ(parallel.circuits.size(), 1u);
+  EXPECT_TRUE(parallel.circuits[0].parallel);
+  ASSERT_EQ(parallel.warnings.size(), 1u);
+  EXPECT_THAT(parallel.warnings[0],
+              HasSubstr("block label with 200 turns in parallel circuit 'coil': FEMM shares"));
   EXPECT_THAT(error_of(with("<Mu_x> = 1\r\n    <Mu_y> = 1", "<Mu_x> = 1\r\n    <Mu_y> = 2")),
               HasSubstr("anisotropic"));
   // An axisymmetric external region needs the header's radii (FemmModels.AxisymmetricKelvin...).

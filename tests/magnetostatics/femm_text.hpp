@@ -38,20 +38,22 @@ struct FemText {
   }
 };
 
-/// A linear block property (mu_r, H_c [A/m], J [MA/m^2], lamination type and fill).
+/// A linear block property (mu_r, H_c [A/m], J [MA/m^2], lamination type and fill, electrical
+/// conductivity [MS/m]).
 inline std::string fem_block(const std::string& name, double mu, double h_c = 0.0, double j = 0.0,
-                             int lam_type = 0, double fill = 1.0) {
+                             int lam_type = 0, double fill = 1.0, double sigma = 0.0) {
   std::ostringstream out;
   out << "<BeginBlock>\n<BlockName> = \"" << name << "\"\n<Mu_x> = " << mu << "\n<Mu_y> = " << mu
-      << "\n<H_c> = " << h_c << "\n<J_re> = " << j << "\n<Sigma> = 0\n<LamType> = " << lam_type
-      << "\n<LamFill> = " << fill << "\n<BHPoints> = 0\n<EndBlock>";
+      << "\n<H_c> = " << h_c << "\n<J_re> = " << j << "\n<Sigma> = " << sigma
+      << "\n<LamType> = " << lam_type << "\n<LamFill> = " << fill << "\n<BHPoints> = 0\n<EndBlock>";
   return out.str();
 }
 
-/// A series circuit.
-inline std::string fem_circuit(const std::string& name, double amps) {
+/// A circuit: series (type 1, the default) or parallel (type 0).
+inline std::string fem_circuit(const std::string& name, double amps, int type = 1) {
   return "<BeginCircuit>\n<CircuitName> = \"" + name +
-         "\"\n<TotalAmps_re> = " + std::to_string(amps) + "\n<CircuitType> = 1\n<EndCircuit>";
+         "\"\n<TotalAmps_re> = " + std::to_string(amps) +
+         "\n<CircuitType> = " + std::to_string(type) + "\n<EndCircuit>";
 }
 
 /// A boundary property: type 0 (A = a0) or 2 (mixed, c0, c1).

@@ -24,6 +24,7 @@ using rheomag::cli_test::run_rheomag;
 
 const std::string kValve = std::string(RHEOMAG_SOURCE_DIR) + "/cases/annular_valve.toml";
 const std::string kPlanar = std::string(RHEOMAG_TEST_DATA) + "/planar_magnet.fem";
+const std::string kSolidRing = std::string(RHEOMAG_TEST_DATA) + "/solid_ring.fem";
 
 /// A fresh directory for one test's files.
 fs::path ans_scratch(const std::string& name) {
@@ -204,6 +205,14 @@ TEST(FemmAnsXfemm, PlanarMagnetInFemmsPostProcessor) {
   // offset armature 2 mm below. Points: the air gap under the window, a yoke leg, the armature.
   compare_with_xfemm("planar", kPlanar, {0.0, -0.001, -0.0225, 0.0125, 0.0, -0.008}, "Iron_2",
                      "0, -0.008");
+}
+
+TEST(FemmAnsXfemm, SolidRingInFemmsPostProcessor) {
+  // tests/data/solid_ring.fem: a one-turn copper ring (r 10-30 mm, 20 mm high) at 100 A, whose
+  // current FEMM spreads as J ~ 1/r (FemmCircuits.AxisymmetricSolidRing...). The .ans gives it
+  // as FEMM's voltage case ("0 dV"); lambda = integral A . J dV / I in xfemm checks that J.
+  // Points: inside the ring near both faces.
+  compare_with_xfemm("ring", kSolidRing, {0.012, 0.01, 0.028, 0.01}, "", "");
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "core/constants.hpp"
 #include "core/error.hpp"
 #include "magnetostatics/solve_problem.hpp"
+#include "tests/magnetostatics/femm_slot.hpp"
 #include "tests/magnetostatics/femm_text.hpp"
 
 using namespace rheomag;
@@ -26,27 +27,9 @@ using ::testing::HasSubstr;
 
 namespace {
 
-// Slot: [0, L] x [0, H], conductors x in [0, a] and [L - a, L], air between; depth D.
-constexpr double L = 0.1, H = 0.02, a = 0.01, D = 0.5;
-
-/// The slot with labels (x, block, circuit, turns) for the left conductor, air, right conductor.
-FemText slot(const std::string& left, const std::string& right) {
-  FemText f;
-  f.depth = D;
-  f.blocks = {rheomag::testing::fem_block("air", 1.0), rheomag::testing::fem_block("copper", 1.0)};
-  const double xs[] = {0, a, L - a, L};
-  for (double x : xs) f.points.push_back(std::to_string(x) + " 0 0 0");
-  for (int i = 3; i >= 0; --i)
-    f.points.push_back(std::to_string(xs[i]) + " " + std::to_string(H) + " 0 0");
-  // bottom 0-1-2-3, right 3-4, top 4-5-6-7, left 7-0, internal 1-6 and 2-5.
-  for (auto [p, q] :
-       {std::pair{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 6}, {6, 7}, {7, 0}, {1, 6}, {2, 5}})
-    f.segments.push_back(std::to_string(p) + " " + std::to_string(q) + " -1 0 0 0");
-  f.labels = {std::to_string(a / 2) + " 0.01 " + left,
-              std::to_string(L / 2) + " 0.01 1 0.004 0 0 0 1 0",
-              std::to_string(L - a / 2) + " 0.01 " + right};
-  return f;
-}
+constexpr double L = rheomag::testing::SlotSizes::L, H = rheomag::testing::SlotSizes::H,
+                 a = rheomag::testing::SlotSizes::a, D = rheomag::testing::SlotSizes::D;
+using rheomag::testing::slot;
 
 /// 1D field of the two-sided slot: H_y = J x in the left conductor, J a across the air, back to
 /// 0 in the right one; W = D H mu0 / 2 (2 J^2 a^3 / 3 + J^2 a^2 (L - 2a)).
