@@ -258,7 +258,9 @@ FemmModel write_femm_for_mesh(const Problem& problem, const mesh::Mesh& m) {
     out << "  <BeginBdry>\n    <BdryName> = " << femm_quoted(b.name, "boundary name", g.source)
         << "\n    <BdryType> = " << (mixed ? 2 : 0)
         << "\n    <A_0> = " << num(mixed ? 0.0 : b.a_value)
-        << "\n    <A_1> = 0\n    <A_2> = 0\n    <Phi> = 0\n    <c0> = " << num(mixed ? b.c0 : 0.0)
+        << "\n    <A_1> = " << num(mixed ? 0.0 : b.a_per_r * u)
+        << "\n    <A_2> = " << num(mixed ? 0.0 : b.a_per_z * u)
+        << "\n    <Phi> = 0\n    <c0> = " << num(mixed ? b.c0 : 0.0)
         << "\n    <c0i> = 0\n    <c1> = " << num(mixed ? 0.0 - b.c1 : 0.0)
         << "\n    <c1i> = 0\n    <Mu_ssd> = 0\n    <Sigma_ssd> = 0\n  <EndBdry>\n";
   }

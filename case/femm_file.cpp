@@ -254,7 +254,7 @@ FemFile read_fem_text(std::string_view text, FemReader& reader) {
   bool frequency_seen = false;
   std::string_view line;
   static const std::vector<std::string> ignored{
-      "format",   "precision", "minangle", "dosmartmesh", "smartmesh",   "coordinates",
+      "format",   "precision", "minangle", "dosmartmesh", "smartmesh",
       "acsolver", "prevtype",  "prevsoln", "comment",     "forcemaxmesh"};
   (void)text;
   while (reader.next(line)) {
@@ -287,6 +287,12 @@ FemFile read_fem_text(std::string_view text, FemReader& reader) {
       const double v = reader.number(value, "[" + key + "]");
       (key == "extzo" ? file.ext_zo : key == "extro" ? file.ext_ro : file.ext_ri) = v;
       file.ext_line = at;
+    } else if (key == "coordinates") {
+      const std::string type = lower(unquote(value));
+      if (type != "cartesian" && type != "polar")
+        reader.fail(at, "[Coordinates]: expected cartesian or polar, got '" + type + "'");
+      file.polar = type == "polar";
+      file.coordinates_line = at;
     } else if (key == "lengthunits") {
       file.unit = length_unit(value, reader);
     } else if (key == "problemtype") {

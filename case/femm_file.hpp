@@ -111,6 +111,8 @@ struct FemFile {
   double depth = 1.0;
   int depth_line = 0;
   bool axisymmetric = false;
+  bool polar = false;  // [Coordinates] = polar: a boundary's A_1, A_2 multiply r and theta
+  int coordinates_line = 0;
   double ext_zo = 0.0, ext_ro = 0.0, ext_ri = 0.0;  // Kelvin exterior, file units
   int ext_line = 0;
   std::vector<FemBoundary> boundaries;

@@ -47,8 +47,13 @@ Problem parse_femm(std::string_view text, const std::string& source) {
     BoundaryCondition bc;
     bc.name = b.name;
     if (b.type == 0) {
+      // FEMM's solvers (static2d.cpp, staticaxi.cpp) prescribe (A_0 + A_1 x + A_2 y) cos(phi),
+      // x and y in the file's length unit.
       bc.kind = BoundaryKind::prescribed_a;
-      bc.a_value = b.a0;
+      const double phase = std::cos(b.phi * std::numbers::pi / 180.0);
+      bc.a_value = b.a0 * phase;
+      bc.a_per_r = b.a1 * phase / file.unit;
+      bc.a_per_z = b.a2 * phase / file.unit;
     } else if (b.type == 2) {
       bc.kind = BoundaryKind::mixed;
       // FEMM: (1/mu) dA/dn + c0 A + c1 = 0; rheomag: nu dA/dn + c0 A = c1.
@@ -69,11 +74,12 @@ Problem parse_femm(std::string_view text, const std::string& source) {
         "boundary '" + b.name + "' (defined at line " + std::to_string(b.line) + ")";
     switch (b.type) {
       case 0:
-        if (b.a1 != 0.0 || b.a2 != 0.0)
-          reader.fail(line,
-                      name +
-                          ": prescribed A varying in space (A_1, A_2 not 0) is not supported; "
-                          "only a constant A_0");
+        if ((b.a1 != 0.0 || b.a2 != 0.0) && file.polar)
+          reader.fail(line, name +
+                                ": prescribed A = A_0 + A_1 r + A_2 theta in polar coordinates "
+                                "([Coordinates] = polar, line " +
+                                std::to_string(file.coordinates_line) +
+                                ") is not supported; only cartesian A_0 + A_1 x + A_2 y");
         break;
       case 2:
         break;

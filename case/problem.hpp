@@ -76,7 +76,7 @@ enum class BoundaryKind {
 struct BoundaryCondition {
   std::string name;
   BoundaryKind kind = BoundaryKind::prescribed_a;
-  double a_value = 0.0;  ///< prescribed A [Wb/m]
+  double a_value = 0.0;  ///< prescribed A [Wb/m] (at r = z = 0 when it varies)
   double c0 = 0.0;       ///< mixed: coefficient [1/(H)] as in FEMM (A/(Wb) per m^2)
   double c1 = 0.0;       ///< mixed: constant term
   /// (Anti)periodic: index of the paired boundary condition (the other edge), -1 otherwise.
@@ -87,6 +87,14 @@ struct BoundaryCondition {
   /// (Anti)periodic arcs of one angle: paired by the fraction of their angle, so their radii
   /// (and lengths) may differ, as FEMM's Kelvin open boundary joins a circle to a smaller disk.
   bool pairs_by_angle = false;
+  /// Prescribed A varying in space as FEMM's A_0 + A_1 x + A_2 y: A = a_value + a_per_r r +
+  /// a_per_z z [Wb/m per m] (r, z the planar x, y); e.g. a_per_r = -B0 (planar) or B0 / 2
+  /// (axisymmetric) puts the model in a uniform field B0 along y or z. (Last: aggregate
+  /// initialisations list the fields above in order.)
+  double a_per_r = 0.0;
+  double a_per_z = 0.0;  ///< see a_per_r
+  /// The prescribed A at point p [Wb/m].
+  double a_at(const mesh::Point& p) const { return a_value + a_per_r * p.r + a_per_z * p.z; }
 };
 
 /// Direction of magnetisation m of a permanent-magnet region, measured from the r (x) axis:

@@ -54,7 +54,7 @@ DofMap build_dof_map(const mesh::Mesh& mesh, const cases::Problem& problem) {
     for (int node : edge.nodes) {
       if (node < 0) continue;
       fixed[node] = true;
-      map.fixed_value[node] = bc.a_value;
+      map.fixed_value[node] = bc.a_at(mesh.nodes[node]);
     }
   }
   for (const cases::PointCondition& condition : problem.point_conditions) {

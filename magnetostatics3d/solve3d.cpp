@@ -166,7 +166,8 @@ Solve3dResult solve_problem_3d(const cases::Problem& problem, const std::vector<
     throw InputError(source + ": 3D mesh settings must be positive");
   }
   for (const cases::BoundaryCondition& bc : problem.boundaries) {
-    if (bc.kind == cases::BoundaryKind::prescribed_a && bc.a_value != 0.0) {
+    if (bc.kind == cases::BoundaryKind::prescribed_a &&
+        (bc.a_value != 0.0 || bc.a_per_r != 0.0 || bc.a_per_z != 0.0)) {
       throw InputError(source + ": boundary '" + bc.name +
                        "' prescribes A != 0, which the 3D solver does not support");
     }

@@ -187,7 +187,13 @@ TEST(FemmImport, UnsupportedFeaturesAreRejectedClearly) {
               HasSubstr("periodic air-gap elements (BdryType 6)"));
   EXPECT_THAT(error_of(with("<BdryType> = 0", "<BdryType> = 7")),
               HasSubstr("antiperiodic air-gap elements (BdryType 7)"));
-  EXPECT_THAT(error_of(with("<A_1> = 0", "<A_1> = 0.5")), HasSubstr("A_1, A_2 not 0"));
+  // A_1, A_2 are solved (FemmUniformField.*), but not with the angle of polar coordinates.
+  std::string polar = with("<A_1> = 0", "<A_1> = 0.5");
+  polar.replace(polar.find("cartesian"), 9, "polar");
+  EXPECT_THAT(error_of(polar),
+              HasSubstr("A_0 + A_1 r + A_2 theta in polar coordinates ([Coordinates] = polar, "
+                        "line 9)"));
+  EXPECT_EQ(error_of(with("<A_1> = 0", "<A_1> = 0.5")), "no error");
   EXPECT_THAT(error_of(with("<H_cAngle> = 0", "<H_cAngle> = 10")), HasSubstr("H_cAngle = 10"));
   std::string across = with("<LamType> = 0", "<LamType> = 1");
   across.replace(across.find("<LamFill> = 1"), 13, "<LamFill> = 0.9");
