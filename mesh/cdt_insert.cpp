@@ -50,16 +50,25 @@ void insert_pslg(const PreparedPslg& prepared, Cdt& cdt) {
     int boundary;
     double max_length;
   };
+  // Pieces per segment (prepare_pslg has bounded their total by kMaxSegmentPieces).
+  std::vector<int> pieces_of(prepared.segments.size(), 1);
+  for (std::size_t k = 0; k < prepared.segments.size(); ++k) {
+    const PreparedSegment& s = prepared.segments[k];
+    const Point& a = prepared.points[static_cast<std::size_t>(s.a)];
+    const Point& b = prepared.points[static_cast<std::size_t>(s.b)];
+    if (s.max_length > 0.0)
+      pieces_of[k] = static_cast<int>(std::clamp(
+          std::ceil(std::hypot(b.r - a.r, b.z - a.z) / s.max_length), 1.0, kMaxSegmentPieces));
+  }
   std::vector<Cdt::Vertex_handle> vertex;
   vertex.reserve(prepared.points.size());
   for (const Point& p : prepared.points) vertex.push_back(cdt.insert(CgalPoint(p.r, p.z)));
   std::vector<ConstrainedEdge> edges;
-  for (const PreparedSegment& s : prepared.segments) {
+  for (std::size_t k = 0; k < prepared.segments.size(); ++k) {
+    const PreparedSegment& s = prepared.segments[k];
     const Point& a = prepared.points[static_cast<std::size_t>(s.a)];
     const Point& b = prepared.points[static_cast<std::size_t>(s.b)];
-    const double length = std::hypot(b.r - a.r, b.z - a.z);
-    const int pieces =
-        s.max_length > 0.0 ? std::max(1, static_cast<int>(std::ceil(length / s.max_length))) : 1;
+    const int pieces = pieces_of[k];
     Cdt::Vertex_handle from = vertex[static_cast<std::size_t>(s.a)];
     for (int k = 1; k <= pieces; ++k) {
       const double t = static_cast<double>(k) / pieces;

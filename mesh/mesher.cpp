@@ -143,6 +143,15 @@ double check_mesh_size(const Pslg& pslg, const MeshOptions& options,
       estimate += 2.0 * geometry[r].area / (std::sqrt(3.0) / 4.0 * size[r] * size[r]);
       if (smallest == size.size() || size[r] < size[smallest]) smallest = r;
     }
+  // Boundaries cut finer than their regions: about two triangles per piece beside them.
+  double segment_pieces = 0.0;
+  for (const Segment& s : pslg.segments) {
+    if (!(s.max_length > 0.0)) continue;
+    const Point& a = pslg.points[static_cast<std::size_t>(s.a)];
+    const Point& b = pslg.points[static_cast<std::size_t>(s.b)];
+    segment_pieces += std::hypot(b.r - a.r, b.z - a.z) / s.max_length;
+  }
+  estimate += 2.0 * segment_pieces;
   if (options.max_elements <= 0) return estimate;
   const double max_memory = options.max_memory > 0.0 ? options.max_memory : default_memory_limit();
   const double bytes = estimate * solve_bytes_per_triangle(options.order);
@@ -151,6 +160,9 @@ double check_mesh_size(const Pslg& pslg, const MeshOptions& options,
     // mistake shows (a case in mm converts its mesh_size to metres before it reaches the mesher).
     std::ostringstream smallest_size, count;
     smallest_size << size[smallest] << " m in region '" << pslg.regions[smallest].name << "'";
+    if (segment_pieces > 0.5 * estimate / 2.0)
+      smallest_size << "; the boundaries' own maximum lengths cut them into about "
+                    << segment_pieces << " pieces";
     // Three digits of a double: a size off by many orders of magnitude gives more elements than
     // any integer type holds (a cast printed -9223372036854775808).
     count.precision(3);

@@ -28,6 +28,25 @@ constexpr double kRelativeTolerance = 1e-9;
   throw InputError(pslg_name(pslg) + ": " + what);
 }
 
+/// Refuses maximum lengths that cut the segments into more than kMaxSegmentPieces pieces.
+void check_segment_pieces(const Pslg& pslg) {
+  double total = 0.0;
+  for (std::size_t k = 0; k < pslg.segments.size(); ++k) {
+    const Segment& s = pslg.segments[k];
+    if (!(s.max_length > 0.0) || s.a < 0 || s.b < 0 ||
+        std::max(s.a, s.b) >= static_cast<int>(pslg.points.size()))
+      continue;  // bad indices are reported by the checks that follow
+    const Point& a = pslg.points[static_cast<std::size_t>(s.a)];
+    const Point& b = pslg.points[static_cast<std::size_t>(s.b)];
+    total += std::ceil(std::hypot(b.r - a.r, b.z - a.z) / s.max_length);
+    if (!(total <= kMaxSegmentPieces))
+      fail(pslg, "segment " + std::to_string(k) + " " + format_point(a) + "-" + format_point(b) +
+                     " with a maximum element length of " + format_number(s.max_length) +
+                     " m cuts the boundaries into more than " + format_number(kMaxSegmentPieces) +
+                     " pieces; expected a larger maximum length (a unit mistake?)");
+  }
+}
+
 Kernel::Point_2 to_cgal(const Point& p) {
   return {p.r, p.z};
 }
@@ -249,6 +268,7 @@ std::string pslg_name(const Pslg& pslg) {
 
 PreparedPslg prepare_pslg(const Pslg& pslg) {
   check_finite(pslg);
+  check_segment_pieces(pslg);
   if (pslg.points.size() < 3 || pslg.segments.size() < 3)
     fail(pslg, "has " + std::to_string(pslg.points.size()) + " points and " +
                    std::to_string(pslg.segments.size()) +

@@ -26,11 +26,17 @@ struct PreparedPslg {
   double tolerance = 0.0;  ///< distance below which two points are the same [m]
 };
 
+/// Most pieces the segments' maximum lengths may cut them into, in all: more is an InputError
+/// (a maximum length orders of magnitude below its segment's, such as a unit mistake, would
+/// otherwise triangulate for hours).
+inline constexpr double kMaxSegmentPieces = 5e6;
+
 /// Checks the PSLG and returns its prepared form. Throws InputError naming Pslg::source and the
 /// offending indices and coordinates for: non-finite coordinates, coincident points (closer
 /// than 1e-9 of the bounding box), segments with a bad index or zero length, segments that
 /// cross, the same segment given twice with different boundary markers, region seeds that are
-/// non-finite or lie on a segment, and a default region index out of range.
+/// non-finite or lie on a segment, a default region index out of range, and maximum lengths that
+/// cut the segments into more than kMaxSegmentPieces pieces.
 PreparedPslg prepare_pslg(const Pslg& pslg);
 
 /// A number with up to 9 significant digits (no trailing zeros), for messages.

@@ -76,5 +76,42 @@ TEST(BadInput, MeshOverTheMemoryLimitIsRefusedNamingIt) {
   EXPECT_THROW(generate_mesh(b.pslg, options), InputError);
 }
 
+// A boundary's maximum element length orders of magnitude below its length (1e-12 m: a .fem
+// segment's MaxSideLength under a unit mistake) cut the segment into 3e10 pieces: the int count
+// overflowed and the mesher ran for hours (found by fuzzing a .fem). Refused at once, naming the
+// segment; a fine but finite cut counts in the element estimate.
+TEST(BadInput, SegmentCutIntoTooManyPiecesIsRefusedNamingIt) {
+  fixtures::PslgBuilder b;
+  b.rectangle(0.0, 0.0, 0.03, 0.03);
+  b.region(0.015, 0.015, "pot", 0.003);
+  b.pslg.source = "cut.fem";
+  b.pslg.segments[1].max_length = 1e-12;
+  try {
+    generate_mesh(b.pslg);
+    FAIL() << "a segment of 3e10 pieces was accepted";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind("cut.fem: segment 1 ", 0), 0u) << message;
+    EXPECT_NE(message.find("with a maximum element length of 1e-12 m cuts the boundaries into "
+                           "more than 5000000 pieces"),
+              std::string::npos)
+        << message;
+  }
+  b.pslg.segments[1].max_length = 1e-4;  // 300 pieces: about 600 triangles beside them
+  MeshOptions options;
+  options.max_elements = 1000;  // the region's own 3 mm elements are about 460
+  try {
+    generate_mesh(b.pslg, options);
+    FAIL() << "the boundary's 600 triangles were not counted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the boundaries' own maximum lengths cut them into about "
+                                         "300 pieces"),
+              std::string::npos)
+        << e.what();
+  }
+  options.max_elements = 100000;
+  EXPECT_NO_THROW(generate_mesh(b.pslg, options));
+}
+
 }  // namespace
 }  // namespace rheomag::mesh
