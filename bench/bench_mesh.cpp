@@ -113,4 +113,24 @@ BENCHMARK(BM_ManyRegions)
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
 
+/// Argument: number of pieces the gap's 40 mm outer wall is cut into (Segment::max_length);
+/// times the mesh graded away from it (session 77: 10^4 pieces of one 10 mm segment took
+/// 1 min 54 s, the size field scanning every piece as its own source).
+void BM_FinelyCutSegment(benchmark::State& state) {
+  Pslg pslg = valve_pslg();
+  const double pieces = static_cast<double>(state.range(0));
+  for (auto& s : pslg.segments) {
+    const auto& a = pslg.points[static_cast<std::size_t>(s.a)];
+    const auto& b = pslg.points[static_cast<std::size_t>(s.b)];
+    if (a.r == 0.0205 && b.r == 0.0205) s.max_length = std::abs(b.z - a.z) / pieces;
+  }
+  rheomag::mesh::Mesh mesh;
+  for (auto _ : state) {
+    mesh = rheomag::mesh::generate_mesh(pslg);
+    benchmark::DoNotOptimize(mesh.nodes.data());
+  }
+  state.counters["triangles"] = static_cast<double>(mesh.triangles.size());
+}
+BENCHMARK(BM_FinelyCutSegment)->Arg(1000)->Arg(10000)->Unit(benchmark::kSecond)->Iterations(1);
+
 }  // namespace

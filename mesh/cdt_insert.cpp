@@ -44,7 +44,7 @@ void flood_fill(const Cdt& cdt, Cdt::Face_handle start, int label) {
   }
 }
 
-void insert_pslg(const PreparedPslg& prepared, Cdt& cdt) {
+void insert_pslg(const PreparedPslg& prepared, Cdt& cdt, SegmentPieces pieces) {
   struct ConstrainedEdge {
     Cdt::Vertex_handle a, b;
     int boundary;
@@ -56,7 +56,7 @@ void insert_pslg(const PreparedPslg& prepared, Cdt& cdt) {
     const PreparedSegment& s = prepared.segments[k];
     const Point& a = prepared.points[static_cast<std::size_t>(s.a)];
     const Point& b = prepared.points[static_cast<std::size_t>(s.b)];
-    if (s.max_length > 0.0)
+    if (pieces == SegmentPieces::cut && s.max_length > 0.0)
       pieces_of[k] = static_cast<int>(std::clamp(
           std::ceil(std::hypot(b.r - a.r, b.z - a.z) / s.max_length), 1.0, kMaxSegmentPieces));
   }
@@ -68,13 +68,13 @@ void insert_pslg(const PreparedPslg& prepared, Cdt& cdt) {
     const PreparedSegment& s = prepared.segments[k];
     const Point& a = prepared.points[static_cast<std::size_t>(s.a)];
     const Point& b = prepared.points[static_cast<std::size_t>(s.b)];
-    const int pieces = pieces_of[k];
+    const int n = pieces_of[k];
     Cdt::Vertex_handle from = vertex[static_cast<std::size_t>(s.a)];
-    for (int k = 1; k <= pieces; ++k) {
-      const double t = static_cast<double>(k) / pieces;
+    for (int k = 1; k <= n; ++k) {
+      const double t = static_cast<double>(k) / n;
       Cdt::Vertex_handle to =
-          k == pieces ? vertex[static_cast<std::size_t>(s.b)]
-                      : cdt.insert(CgalPoint(a.r + t * (b.r - a.r), a.z + t * (b.z - a.z)));
+          k == n ? vertex[static_cast<std::size_t>(s.b)]
+                 : cdt.insert(CgalPoint(a.r + t * (b.r - a.r), a.z + t * (b.z - a.z)));
       cdt.insert_constraint(from, to);
       edges.push_back({from, to, s.boundary, s.max_length});
       from = to;

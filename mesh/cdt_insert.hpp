@@ -11,8 +11,14 @@ namespace rheomag::mesh::detail {
 /// constrained edge.
 void flood_fill(const Cdt& cdt, Cdt::Face_handle start, int label);
 
-/// Inserts the points and segments (segments longer than their max_length are cut into equal
-/// pieces) and records each constrained edge's boundary marker and max_length in FaceInfo.
-void insert_pslg(const PreparedPslg& prepared, Cdt& cdt);
+/// What insert_pslg does with a segment longer than its max_length.
+enum class SegmentPieces {
+  cut,    ///< cut into equal pieces no longer than max_length (the mesh's boundary nodes)
+  whole,  ///< inserted whole (a triangulation only to locate regions and size sources in)
+};
+
+/// Inserts the points and segments and records each constrained edge's boundary marker and
+/// max_length in FaceInfo.
+void insert_pslg(const PreparedPslg& prepared, Cdt& cdt, SegmentPieces pieces = SegmentPieces::cut);
 
 }  // namespace rheomag::mesh::detail

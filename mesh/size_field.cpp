@@ -2,6 +2,8 @@
 
 #include "mesh/size_field.hpp"
 
+#include "mesh/straight_runs.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -27,14 +29,20 @@ SizeField::SizeField(const Cdt& coarse, std::vector<double> region_size, double 
     return region >= 0 ? region_size_[static_cast<std::size_t>(region)]
                        : std::numeric_limits<double>::infinity();
   };
+  std::vector<SizedEdge> edges;
   for (auto e = coarse_.finite_edges_begin(); e != coarse_.finite_edges_end(); ++e) {
     if (!coarse_.is_constrained(*e)) continue;
     const auto [f, i] = *e;
     double size = std::min(size_of(f->info().region), size_of(f->neighbor(i)->info().region));
     if (f->info().max_length[i] > 0.0) size = std::min(size, f->info().max_length[i]);
-    if (size < largest)
-      sources_.push_back({f->vertex(Cdt::ccw(i))->point(), f->vertex(Cdt::cw(i))->point(), size});
+    const CgalPoint& a = f->vertex(Cdt::ccw(i))->point();
+    const CgalPoint& b = f->vertex(Cdt::cw(i))->point();
+    if (size < largest) edges.push_back({{a.x(), a.y()}, {b.x(), b.y()}, size});
   }
+  // A segment cut into many pieces is one source: the cells beside it would otherwise hold one
+  // source per piece, and every size query there would scan them all.
+  for (const SizedEdge& run : merge_straight_runs(edges))
+    sources_.push_back({CgalPoint(run.a[0], run.a[1]), CgalPoint(run.b[0], run.b[1]), run.size});
 
   double r_lo = std::numeric_limits<double>::infinity(), r_hi = -r_lo, z_lo = r_lo, z_hi = -r_lo;
   for (auto v = coarse_.finite_vertices_begin(); v != coarse_.finite_vertices_end(); ++v) {

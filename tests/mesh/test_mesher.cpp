@@ -287,6 +287,40 @@ TEST(GenerateMesh, GradingKeepsNeighboursOfAFineRegionFine) {
   EXPECT_GT(violations_of_grading(generate_mesh(b.pslg, options), 0.25e-3, 0.2), 0);
 }
 
+// The interface r = 0.02 between two coarse (4 mm) regions cut into 1000 pieces of 20 um: the
+// regions are located (every triangle on its side of the interface) and the mesh is graded from
+// the cut segment as from a 20 um source, within h + g d on both sides (the size field's
+// definition), in the triangulation where the segment is whole (bench_mesh BM_FinelyCutSegment
+// times it).
+TEST(GenerateMesh, AFinelyCutInterfaceGradesBothSidesAndKeepsTheRegions) {
+  PslgBuilder b;
+  b.rectangle(0.0, 0.0, 0.02, 0.02);
+  b.rectangle(0.02, 0.0, 0.04, 0.02);
+  for (auto& s : b.pslg.segments)
+    if (b.pslg.points[static_cast<std::size_t>(s.a)].r == 0.02 &&
+        b.pslg.points[static_cast<std::size_t>(s.b)].r == 0.02)
+      s.max_length = 20e-6;
+  b.region(0.01, 0.01, "left", 4e-3);
+  b.region(0.03, 0.01, "right", 4e-3);
+  MeshOptions options = linear();
+  options.grading = 0.2;
+  const Mesh mesh = generate_mesh(b.pslg, options);
+  int misplaced = 0, too_long = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    double centroid = 0.0, distance = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const double r = mesh.nodes[mesh.triangles[t][k]].r;
+      centroid += r / 3.0;
+      distance = std::max(distance, std::abs(r - 0.02));
+    }
+    if (mesh.region[t] != (centroid < 0.02 ? 0 : 1)) ++misplaced;
+    if (fixtures::longest_edge(mesh, t) > 20e-6 + 0.2 * distance + 1e-15) ++too_long;
+  }
+  EXPECT_EQ(misplaced, 0);
+  EXPECT_EQ(too_long, 0);
+  EXPECT_GT(mesh.triangles.size(), 2000u);  // 1000 pieces, each the side of a triangle on both
+}
+
 TEST(GenerateMesh, SegmentMaxLengthIsHonoured) {
   PslgBuilder b;
   b.rectangle(0.0, 0.0, 0.02, 0.01);
