@@ -17,9 +17,9 @@ constexpr int kSizeGridCells = 64;
 
 }  // namespace
 
-SizeField::SizeField(const Cdt& coarse, std::vector<double> region_size, double grading)
-    : coarse_(coarse), region_size_(std::move(region_size)), grading_(grading) {
-  hint_ = coarse_.finite_faces_begin();
+SizeField::SizeField(const Cdt& outline, const Pslg& pslg, std::vector<double> region_size,
+                     double grading)
+    : regions_(outline, pslg), region_size_(std::move(region_size)), grading_(grading) {
   double largest = 0.0;
   for (double h : region_size_)
     if (std::isfinite(h)) largest = std::max(largest, h);
@@ -30,8 +30,8 @@ SizeField::SizeField(const Cdt& coarse, std::vector<double> region_size, double 
                        : std::numeric_limits<double>::infinity();
   };
   std::vector<SizedEdge> edges;
-  for (auto e = coarse_.finite_edges_begin(); e != coarse_.finite_edges_end(); ++e) {
-    if (!coarse_.is_constrained(*e)) continue;
+  for (auto e = outline.finite_edges_begin(); e != outline.finite_edges_end(); ++e) {
+    if (!outline.is_constrained(*e)) continue;
     const auto [f, i] = *e;
     double size = std::min(size_of(f->info().region), size_of(f->neighbor(i)->info().region));
     if (f->info().max_length[i] > 0.0) size = std::min(size, f->info().max_length[i]);
@@ -45,7 +45,7 @@ SizeField::SizeField(const Cdt& coarse, std::vector<double> region_size, double 
     sources_.push_back({CgalPoint(run.a[0], run.a[1]), CgalPoint(run.b[0], run.b[1]), run.size});
 
   double r_lo = std::numeric_limits<double>::infinity(), r_hi = -r_lo, z_lo = r_lo, z_hi = -r_lo;
-  for (auto v = coarse_.finite_vertices_begin(); v != coarse_.finite_vertices_end(); ++v) {
+  for (auto v = outline.finite_vertices_begin(); v != outline.finite_vertices_end(); ++v) {
     r_lo = std::min(r_lo, v->point().x()), r_hi = std::max(r_hi, v->point().x());
     z_lo = std::min(z_lo, v->point().y()), z_hi = std::max(z_hi, v->point().y());
   }
@@ -76,8 +76,7 @@ void SizeField::add_to_grid(int source, double reach) {
 }
 
 int SizeField::region_at(const CgalPoint& p) const {
-  hint_ = coarse_.locate(p, hint_);
-  return coarse_.is_infinite(hint_) ? kOutside : hint_->info().region;
+  return regions_.region_at(p);
 }
 
 double SizeField::at(const CgalPoint& p) const {

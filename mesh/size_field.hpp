@@ -4,17 +4,20 @@
 #include <vector>
 
 #include "mesh/cdt.hpp"
+#include "mesh/pslg.hpp"
+#include "mesh/region_locator.hpp"
 
 namespace rheomag::mesh::detail {
 
 /// h(x) = min(h_region(x), min over finer segments s of h_s + grading * distance(x, s)), where
-/// h_region is the target of the region containing x (located in the labelled coarse
-/// triangulation) and h_s the smallest target on either side of constrained edge s (or its
-/// max_length). The second term grades the mesh away from small regions and short edges.
+/// h_region is the target of the region containing x (a RegionLocator) and h_s the smallest target
+/// on either side of constrained edge s (or its max_length). The second term grades the mesh away
+/// from small regions and short edges.
 class SizeField {
  public:
-  /// `region_size[r]` is the target edge length of region r [m]; `coarse` must outlive this.
-  SizeField(const Cdt& coarse, std::vector<double> region_size, double grading);
+  /// `region_size[r]` is the target edge length of region r [m]; `outline` is the labelled
+  /// triangulation of `pslg` with its segments whole (read here only).
+  SizeField(const Cdt& outline, const Pslg& pslg, std::vector<double> region_size, double grading);
 
   /// Target edge length at p [m].
   double at(const CgalPoint& p) const;
@@ -29,7 +32,7 @@ class SizeField {
   };
   void add_to_grid(int source, double reach);
 
-  const Cdt& coarse_;
+  RegionLocator regions_;
   std::vector<double> region_size_;
   double grading_;
   std::vector<Source> sources_;
@@ -37,7 +40,6 @@ class SizeField {
   double r0_ = 0.0, z0_ = 0.0, cell_ = 1.0;
   int columns_ = 0, rows_ = 0;
   std::vector<std::vector<int>> buckets_;
-  mutable Cdt::Face_handle hint_;
 };
 
 }  // namespace rheomag::mesh::detail

@@ -321,6 +321,37 @@ TEST(GenerateMesh, AFinelyCutInterfaceGradesBothSidesAndKeepsTheRegions) {
   EXPECT_GT(mesh.triangles.size(), 2000u);  // 1000 pieces, each the side of a triangle on both
 }
 
+// A 4000-gon (a finely divided arc, as FEMM's MaxSegDeg makes one) inside a square: the
+// triangulation regions are located in is refined for shape above 2000 vertices, labelled anew
+// and searched from a grid; every triangle must still be in the region on its side of the
+// polygon (its centroid inside the polygon's inscribed circle or outside the circumscribed one).
+TEST(GenerateMesh, AFinelyDividedCircleKeepsItsRegions) {
+  PslgBuilder b;
+  b.rectangle(-0.02, -0.02, 0.02, 0.02);
+  b.ngon(0.0, 0.0, 0.01, 4000);
+  b.region(0.0, 0.0, "disc", 1e-3);
+  b.region(0.015, 0.015, "around", 2e-3);
+  const Mesh mesh = generate_mesh(b.pslg, linear());
+  const double inscribed = 0.01 * std::cos(std::numbers::pi / 4000);
+  int misplaced = 0, inside = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    double r = 0.0, z = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      r += mesh.nodes[mesh.triangles[t][k]].r / 3.0;
+      z += mesh.nodes[mesh.triangles[t][k]].z / 3.0;
+    }
+    const double distance = std::hypot(r, z);
+    if (distance < inscribed) {
+      ++inside;
+      misplaced += mesh.region[t] != 0;
+    } else if (distance > 0.01) {
+      misplaced += mesh.region[t] != 1;
+    }
+  }
+  EXPECT_EQ(misplaced, 0);
+  EXPECT_GT(inside, 1000);
+}
+
 TEST(GenerateMesh, SegmentMaxLengthIsHonoured) {
   PslgBuilder b;
   b.rectangle(0.0, 0.0, 0.02, 0.01);
