@@ -4,6 +4,7 @@
 #include "case/femm_export.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <iterator>
@@ -270,10 +271,12 @@ FemmModel write_femm_for_mesh(const Problem& problem, const mesh::Mesh& m) {
   std::map<std::string, int> name_seen;
   for (const auto& [material, density] : blocks) {
     const Material& m = problem.materials[material];
+    // An anisotropic material as FEMM's LamType 0 at fill 1: mu along x and y as they are.
+    const std::array<double, 2> mu = m.mu_r_axes.value_or(std::array{m.mu_r, m.mu_r});
     std::string name = m.name;
     if (name_use[name] > 1) name += "_" + std::to_string(++name_seen[name]);
     out << "  <BeginBlock>\n    <BlockName> = " << femm_quoted(name, "material name", g.source)
-        << "\n    <Mu_x> = " << num(m.mu_r) << "\n    <Mu_y> = " << num(m.mu_r)
+        << "\n    <Mu_x> = " << num(mu[0]) << "\n    <Mu_y> = " << num(mu[1])
         << "\n    <H_c> = " << num(m.coercivity) << "\n    <J_re> = " << num(density * 1e-6)
         << "\n    <J_im> = 0\n    <Sigma> = " << num(m.conductivity.value_or(0.0) * 1e-6)
         << "\n    <d_lam> = 0\n    <Phi_h> = 0\n    <Phi_hx> = 0\n    <Phi_hy> = 0\n"

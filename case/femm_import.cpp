@@ -254,6 +254,11 @@ Problem parse_femm(std::string_view text, const std::string& source) {
       found =
           material_of_block.emplace(l.block - 1, static_cast<int>(problem.materials.size())).first;
       problem.materials.push_back(femm_material(block, source, reader, problem.warnings));
+      if (file.axisymmetric) {
+        std::string note =
+            axisymmetric_lamination_note(block, source + ":" + std::to_string(block.line));
+        if (!note.empty()) problem.warnings.push_back(std::move(note));
+      }
     }
     data.current_density = block.j * 1e6;  // MA/m^2 -> A/m^2
     if (block.h_c != 0.0) {

@@ -2,12 +2,54 @@
 
 #include "case/femm_material.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "case/femm_bh_smoothing.hpp"
 #include "case/material_library.hpp"
 #include "case/toml_section.hpp"
 #include "core/constants.hpp"
 
 namespace rheomag::cases::femm {
+
+std::array<double, 2> linear_femm_permeability(
+    int lam_type, double fill, double mu_x, double mu_y,
+    const std::function<void(const std::string&)>& fail) {
+  // Only the permeability along the laminations counts for LamType 1 (Mu_x) and 2 (Mu_y).
+  const bool uses_x = lam_type != 2, uses_y = lam_type != 1;
+  if (uses_x && !(mu_x > 0.0 && std::isfinite(mu_x)))
+    fail("Mu_x = " + format_number(mu_x) + "; expected a finite relative permeability > 0");
+  if (uses_y && !(mu_y > 0.0 && std::isfinite(mu_y)))
+    fail("Mu_y = " + format_number(mu_y) + "; expected a finite relative permeability > 0");
+  const auto along = [fill](double mu) { return fill * mu + (1.0 - fill); };          // parallel
+  const auto across = [fill](double mu) { return mu / (fill + mu * (1.0 - fill)); };  // series
+  if (lam_type == 1) return {along(mu_x), across(mu_x)};
+  if (lam_type == 2) return {across(mu_y), along(mu_y)};
+  return {along(mu_x), along(mu_y)};  // in-plane laminations (LamType 0) or none
+}
+
+std::string axisymmetric_lamination_note(const FemBlock& block, const std::string& where) {
+  const double f = block.lam_fill;
+  if (!block.bh.empty() || !(f < 1.0) || (block.lam_type != 0 && block.lam_type != 2)) return "";
+  const auto pair = [](double r, double z) {
+    return "mu_r " + format_number(r) + " along r, " + format_number(z) + " along z";
+  };
+  const std::string head = where + ": block '" + block.name + "': LamType " +
+                           std::to_string(block.lam_type) + " at LamFill " + format_number(f) +
+                           " in an axisymmetric model: ";
+  if (block.lam_type == 2) {
+    const double along = f * block.mu_y + 1.0 - f, across = block.mu_y / (f + block.mu_y * (1 - f));
+    return head + "FEMM's axisymmetric solver (xfemm 35baec4) laminates a linear block of " +
+           "LamType 2 along r, as LamType 1 (" + pair(along, across) +
+           "); rheomag laminates it along z, as FEMM's manual and planar solver do (" +
+           pair(across, along) + ")";
+  }
+  const double femm_r = f * block.mu_x, femm_z = f * block.mu_y;
+  const double r = femm_r + 1.0 - f, z = femm_z + 1.0 - f;
+  if ((1.0 - f) <= 1e-3 * std::min(femm_r, femm_z)) return "";
+  return head + "FEMM's axisymmetric solver (xfemm 35baec4) takes f Mu (" + pair(femm_r, femm_z) +
+         "), its planar solver and rheomag f Mu + 1 - f (" + pair(r, z) + ")";
+}
 
 Material femm_material(const FemBlock& block, const std::string& source, const FemReader& reader,
                        std::vector<std::string>& warnings) {
@@ -36,10 +78,12 @@ Material femm_material(const FemBlock& block, const std::string& source, const F
     m.source += " (wire, LamType " + std::to_string(block.lam_type) + ": mu_r = 1 as in FEMM)";
     return m;
   }
-  if ((block.lam_type == 1 || block.lam_type == 2) && fill != 1.0)
-    fail("laminations parallel to x or y (LamType " + std::to_string(block.lam_type) +
-         ") with LamFill < 1 make the material anisotropic, which is not supported");
   if (!block.bh.empty()) {
+    if ((block.lam_type == 1 || block.lam_type == 2) && fill != 1.0)
+      fail("a B-H table laminated along " + std::string(block.lam_type == 1 ? "x" : "y") +
+           " (LamType " + std::to_string(block.lam_type) +
+           ") with LamFill < 1 is a nonlinear anisotropic material, which is not supported; "
+           "a linear one (BHPoints = 0) is");
     // FEMM smooths a table whose spline turns back (femm_bh_smoothing.hpp), then applies the
     // fill of in-plane laminations (LamType 0), B' = f B(H) + (1 - f) mu0 H at the table's H
     // (FEMM's apparent curve), and checks the result again.
@@ -74,10 +118,15 @@ Material femm_material(const FemBlock& block, const std::string& source, const F
     m.coercivity = block.h_c;
     return m;
   }
-  if (block.mu_x != block.mu_y) fail("anisotropic permeability (Mu_x != Mu_y) is not supported");
-  if (!(block.mu_x > 0.0)) fail("Mu_x must be positive");
-  m.mu_r = block.mu_x * fill + (1.0 - fill);
   m.coercivity = block.h_c;
+  const std::array<double, 2> mu =
+      linear_femm_permeability(block.lam_type, fill, block.mu_x, block.mu_y, fail);
+  m.mu_r = mu[0];
+  if (mu[0] != mu[1]) {
+    m.mu_r_axes = mu;
+    m.source += " (anisotropic: mu_r " + format_number(mu[0]) + " along x (r), " +
+                format_number(mu[1]) + " along y (z))";
+  }
   return m;
 }
 

@@ -52,8 +52,8 @@ ThermalProperties read_thermal_properties(const TomlSection& section) {
 }
 
 LibraryMaterial read_material(const TomlSection& section) {
-  section.allow_only(
-      {"name", "source", "uncertainty", "mu_r", "bh", "conductivity", "rheology", "thermal"});
+  section.allow_only({"name", "source", "uncertainty", "mu_r", "mu_r_axes", "bh", "conductivity",
+                      "rheology", "thermal"});
   LibraryMaterial result;
   Material& m = result.magnetic;
   m.name = section.required_string("name");
@@ -61,8 +61,18 @@ LibraryMaterial read_material(const TomlSection& section) {
   if (section.has("conductivity")) m.conductivity = section.non_negative_or("conductivity", 0.0);
   if (section.has("bh") && section.has("mu_r"))
     section.fail("mu_r", "give either mu_r (linear) or bh (B-H table), not both");
+  if (section.has("mu_r_axes") && (section.has("bh") || section.has("mu_r")))
+    section.fail("mu_r_axes", "give one of mu_r, mu_r_axes (linear, anisotropic) or bh");
   if (section.has("bh")) {
     m.bh = checked_bh_table(section.pairs("bh"), section.where("bh"));
+  } else if (section.has("mu_r_axes")) {
+    // A laminated core's permeabilities along r (x) and z (y), e.g. from FEMM's LamType 1 / 2.
+    const std::vector<double> mu = section.quantities("mu_r_axes", Domain::positive());
+    if (mu.size() != 2)
+      section.fail("mu_r_axes", "expected 2 numbers, mu_r along r (x) and along z (y); got " +
+                                    std::to_string(mu.size()));
+    m.mu_r = mu[0];
+    m.mu_r_axes = std::array{mu[0], mu[1]};
   } else {
     m.mu_r = section.positive_or("mu_r", 1.0);
   }

@@ -1,6 +1,7 @@
 #pragma once
 // A magnetostatic problem: geometry, materials per region, coils and boundary conditions.
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,6 +53,9 @@ struct Material {
   std::optional<ThermalProperties> thermal{};
   /// How H is interpolated between the `bh` points (FEMM's spline for tables from a .fem).
   BhInterpolation bh_interpolation = BhInterpolation::monotone_cubic;
+  /// A linear anisotropic material (FEMM's Mu_x != Mu_y, or laminations along x or y): the
+  /// relative permeabilities along r (x) and z (y), mu_r being the first; empty: isotropic.
+  std::optional<std::array<double, 2>> mu_r_axes{};
 };
 
 /// A circuit driving one or more coil regions: in series (each region carries turns x current)

@@ -25,7 +25,8 @@ bool is_device_region(const cases::Problem& problem, int region) {
   if (data.circuit >= 0 || data.current_density != 0.0) return true;
   if (data.material < 0) return false;
   const cases::Material& material = problem.materials[data.material];
-  return !material.bh.empty() || material.mu_r != 1.0 || material.coercivity != 0.0;
+  return !material.bh.empty() || material.mu_r != 1.0 || material.mu_r_axes ||
+         material.coercivity != 0.0;
 }
 
 /// The bounding box (mm) of the device regions' triangles, or of the whole mesh without any.

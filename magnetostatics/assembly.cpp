@@ -70,7 +70,10 @@ Assembler::Assembler(const cases::Problem& problem, const mesh::Mesh& mesh, cons
       // a law of the triangle's own (the material is linear: the importer checks).
       const mesh::Point c = mesh::triangle_centroid(v[0], v[1], v[2]);
       cases::Material scaled = problem.materials[material];
-      scaled.mu_r /= problem.kelvin->reluctivity_factor(c.r, c.z);
+      const double factor = problem.kelvin->reluctivity_factor(c.r, c.z);
+      scaled.mu_r /= factor;
+      if (scaled.mu_r_axes)
+        for (double& mu : *scaled.mu_r_axes) mu /= factor;
       material_of_element_[e] = static_cast<int>(laws_.size());
       laws_.emplace_back(scaled);
     }

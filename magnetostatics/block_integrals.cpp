@@ -64,13 +64,13 @@ RegionSums region_sums(const MagnetostaticSolver& solver, const Solution& soluti
     const Reluctivity& law = assembler.law(e);
     for (int p = 0; p < q.points; ++p) {
       const auto b = element_b(q, p, a_local);
-      const double b2 = b[0] * b[0] + b[1] * b[1];
+      const auto h = law.h(b[0], b[1]);
       double a = 0.0;
       for (int i = 0; i < m.nodes_per_triangle(); ++i) a += q.n[p][i] * a_local[i];
       sums.a += q.weight[p] * a;
       sums.a_dot_j += q.weight[p] * a * j;
-      sums.energy += q.weight[p] * law.energy_density(b2);
-      sums.b_dot_h += q.weight[p] * law.nu(b2) * b2;
+      sums.energy += q.weight[p] * law.energy_density(b[0], b[1]);
+      sums.b_dot_h += q.weight[p] * (h[0] * b[0] + h[1] * b[1]);
       sums.area += q.area_weight[p];
       sums.volume += q.weight[p];
       sums.b_r += q.weight[p] * b[0], sums.b_z += q.weight[p] * b[1];

@@ -110,6 +110,27 @@ std::array<double, 2> element_b(const ElementQuadrature& q, int p, const double*
 
 namespace {
 
+/// B = sum_i a_i G_i at one quadrature point of an M-node element.
+template <int M>
+std::array<double, 2> point_b(const double* g_r, const double* g_z, const double* a) {
+  double br = 0.0, bz = 0.0;
+  for (int i = 0; i < M; ++i) {
+    br += a[i] * g_r[i];
+    bz += a[i] * g_z[i];
+  }
+  return {br, bz};
+}
+
+/// Writes the summed residual and the tangent, whose lower triangle `k` holds, mirrored.
+template <int M>
+void store_residual_tangent(const double* res, const double* k, double* residual, double* tangent) {
+  for (int i = 0; i < M; ++i) residual[i] = res[i];
+  if (!tangent) return;
+  for (int i = 0; i < M; ++i) {
+    for (int j = 0; j <= i; ++j) tangent[i * M + j] = tangent[j * M + i] = k[i * M + j];
+  }
+}
+
 /// element_residual_tangent for a fixed number of nodes M (loops unrolled by the compiler).
 template <int M>
 void residual_tangent(const ElementQuadrature& q, const double* a, const Reluctivity& law,
@@ -118,11 +139,7 @@ void residual_tangent(const ElementQuadrature& q, const double* a, const Relucti
   for (int p = 0; p < q.points; ++p) {
     const double* g_r = q.g_r[p].data();
     const double* g_z = q.g_z[p].data();
-    double br = 0.0, bz = 0.0;
-    for (int i = 0; i < M; ++i) {
-      br += a[i] * g_r[i];
-      bz += a[i] * g_z[i];
-    }
+    const auto [br, bz] = point_b<M>(g_r, g_z, a);
     const double b2 = br * br + bz * bz;
     // One B-H curve evaluation for nu and its slope when the tangent is wanted.
     const auto [nu, dnu_db2] = tangent ? law.nu_and_dnu_db2(b2) : std::pair{law.nu(b2), 0.0};
@@ -135,24 +152,48 @@ void residual_tangent(const ElementQuadrature& q, const double* a, const Relucti
     if (!tangent) continue;
     const double rank_one = 2.0 * dnu_db2;
     for (int i = 0; i < M; ++i) {
-      for (int j = 0; j <= i; ++j) {  // lower triangle; mirrored below (K is symmetric)
+      for (int j = 0; j <= i; ++j) {  // lower triangle; mirrored when stored (K is symmetric)
         k[i * M + j] +=
             w * (nu * (g_r[i] * g_r[j] + g_z[i] * g_z[j]) + rank_one * b_dot_g[i] * b_dot_g[j]);
       }
     }
   }
-  for (int i = 0; i < M; ++i) residual[i] = res[i];
-  if (!tangent) return;
-  for (int i = 0; i < M; ++i) {
-    for (int j = 0; j <= i; ++j) tangent[i * M + j] = tangent[j * M + i] = k[i * M + j];
+  store_residual_tangent<M>(res, k, residual, tangent);
+}
+
+/// residual_tangent of a linear anisotropic law, H = diag(nu_r, nu_z) B: r_i = sum_q w H . G_i
+/// and K_ij = sum_q w (nu_r G_i,r G_j,r + nu_z G_i,z G_j,z).
+template <int M>
+void anisotropic_residual_tangent(const ElementQuadrature& q, const double* a,
+                                  const Reluctivity& law, double* residual, double* tangent) {
+  const auto [nu_r, nu_z] = law.nu_axes();
+  double res[M] = {}, k[M * M] = {};
+  for (int p = 0; p < q.points; ++p) {
+    const double* g_r = q.g_r[p].data();
+    const double* g_z = q.g_z[p].data();
+    const auto [br, bz] = point_b<M>(g_r, g_z, a);
+    const double w = q.weight[p], hr = w * nu_r * br, hz = w * nu_z * bz;
+    for (int i = 0; i < M; ++i) res[i] += hr * g_r[i] + hz * g_z[i];
+    if (!tangent) continue;
+    for (int i = 0; i < M; ++i) {
+      for (int j = 0; j <= i; ++j)
+        k[i * M + j] += w * (nu_r * g_r[i] * g_r[j] + nu_z * g_z[i] * g_z[j]);
+    }
   }
+  store_residual_tangent<M>(res, k, residual, tangent);
 }
 
 }  // namespace
 
 void element_residual_tangent(const ElementQuadrature& q, const double* a, const Reluctivity& law,
                               double* residual, double* tangent) {
-  if (q.nodes == 6) {
+  if (law.anisotropic()) {
+    if (q.nodes == 6) {
+      anisotropic_residual_tangent<6>(q, a, law, residual, tangent);
+    } else {
+      anisotropic_residual_tangent<3>(q, a, law, residual, tangent);
+    }
+  } else if (q.nodes == 6) {
     residual_tangent<6>(q, a, law, residual, tangent);
   } else {
     residual_tangent<3>(q, a, law, residual, tangent);
@@ -170,7 +211,7 @@ double element_stored_energy(const ElementQuadrature& q, const double* a, const 
   double energy = 0.0;
   for (int p = 0; p < q.points; ++p) {
     const auto [br, bz] = element_b(q, p, a);
-    energy += q.weight[p] * law.energy_density(br * br + bz * bz);
+    energy += q.weight[p] * law.energy_density(br, bz);
   }
   return energy;
 }
@@ -180,9 +221,9 @@ std::array<double, 2> element_energy(const ElementQuadrature& q, const double* a
   double energy = 0.0, b_dot_h = 0.0;
   for (int p = 0; p < q.points; ++p) {
     const auto [br, bz] = element_b(q, p, a);
-    const double b2 = br * br + bz * bz;
-    energy += q.weight[p] * law.energy_density(b2);
-    b_dot_h += q.weight[p] * law.nu(b2) * b2;
+    const auto [hr, hz] = law.h(br, bz);
+    energy += q.weight[p] * law.energy_density(br, bz);
+    b_dot_h += q.weight[p] * (hr * br + hz * bz);
   }
   return {energy, b_dot_h};
 }

@@ -5,7 +5,8 @@
 //   sum_e  integral  nu(|B|^2) B . B(v)  2 pi r dr dz  =  integral J v 2 pi r dr dz  (+ boundary)
 // with B_r = -dA/dz, B_z = dA/dr + A/r. Planar (A = A_z): B_x = dA/dy, B_y = -dA/dx and the
 // weight 2 pi r is replaced by the depth. Quadrature points are interior to the triangles, so
-// A/r is evaluated at r > 0 only; on the axis A = 0 is imposed (A_phi is odd in r).
+// A/r is evaluated at r > 0 only; on the axis A = 0 is imposed (A_phi is odd in r). A linear
+// anisotropic law replaces nu(|B|^2) B by diag(nu_r, nu_z) B (FEMM's Mu_x != Mu_y).
 
 #include <array>
 
@@ -45,7 +46,7 @@ std::array<double, 2> element_b(const ElementQuadrature& q, int p, const double*
 
 /// Internal-force residual r_i = sum_q w nu(|B|^2) B . G_i (no source), and when `tangent` is
 /// not null the exact Jacobian K_ij = sum_q w [nu G_i . G_j + 2 nu'(|B|^2) (B . G_i)(B . G_j)]
-/// (row-major, nodes x nodes).
+/// (row-major, nodes x nodes); an anisotropic law's r_i = sum_q w H(B) . G_i, K its constant.
 void element_residual_tangent(const ElementQuadrature& q, const double* a, const Reluctivity& law,
                               double* residual, double* tangent);
 

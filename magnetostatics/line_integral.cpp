@@ -72,13 +72,15 @@ LineField line_field(const MagnetostaticSolver& solver, const Solution& solution
                        model_extent(m) + " (holes excluded)");
     }
     const auto b = flux_density_in(solver, solution, *at);
-    const double nu = solver.assembler().law(at->element).nu(b[0] * b[0] + b[1] * b[1]);
+    const auto h = solver.assembler().law(at->element).h(b[0], b[1]);
     LineSample sample;
     sample.s = t * out.length, sample.r = p.r, sample.z = p.z;
     sample.b_t = b[0] * tr + b[1] * tz;
     sample.b_n = -b[0] * tz + b[1] * tr;
     sample.b = std::hypot(b[0], b[1]);
-    sample.h_t = nu * sample.b_t, sample.h_n = nu * sample.b_n, sample.h = nu * sample.b;
+    sample.h_t = h[0] * tr + h[1] * tz;
+    sample.h_n = -h[0] * tz + h[1] * tr;
+    sample.h = std::hypot(h[0], h[1]);
     out.samples.push_back(sample);
     if (k == 0 || k == points - 1) end_a[k == 0 ? 0 : 1] = potential_in(solver, solution, *at);
   }

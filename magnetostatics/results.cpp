@@ -82,30 +82,30 @@ void element_fields(const MagnetostaticSolver& solver, const Solution& solution,
     const Reluctivity& law = assembler.law(e);
     for (int p = 0; p < q.points; ++p) {
       const auto b = element_b(q, p, a_local);
-      const double b2 = b[0] * b[0] + b[1] * b[1];
+      const auto h = law.h(b[0], b[1]);
       area += q.area_weight[p];
       br += q.area_weight[p] * b[0], bz += q.area_weight[p] * b[1];
-      energy += q.weight[p] * law.energy_density(b2);
-      b_dot_h += q.weight[p] * law.nu(b2) * b2;
+      energy += q.weight[p] * law.energy_density(b[0], b[1]);
+      b_dot_h += q.weight[p] * (h[0] * b[0] + h[1] * b[1]);
     }
     res.energy += energy;
     res.coenergy += b_dot_h - energy;
     br /= area, bz /= area;
-    const double nu = law.nu(br * br + bz * bz);
+    const auto [hr, hz] = law.h(br, bz);
     res.element_br[e] = br, res.element_bz[e] = bz, res.element_b[e] = std::hypot(br, bz);
-    res.element_hr[e] = nu * br, res.element_hz[e] = nu * bz;
-    res.element_h[e] = nu * res.element_b[e];
-    res.element_mu_r[e] = kNu0 / nu;
+    res.element_hr[e] = hr, res.element_hz[e] = hz;
+    res.element_h[e] = std::hypot(hr, hz);
+    res.element_mu_r[e] = law.apparent_mu_r(br, bz);
     for (int i = 0; i < k; ++i) {
       const auto b = b_at(solver, solution, e, kNodeXi[i], kNodeEta[i]);
-      const double nu_node = law.nu(b[0] * b[0] + b[1] * b[1]);
+      const auto h = law.h(b[0], b[1]);
       const int node = t[i];
       node_weight[node] += area;
       res.node_br[node] += area * b[0], res.node_bz[node] += area * b[1];
       res.node_b[node] += area * std::hypot(b[0], b[1]);
-      res.node_hr[node] += area * nu_node * b[0], res.node_hz[node] += area * nu_node * b[1];
-      res.node_h[node] += area * nu_node * std::hypot(b[0], b[1]);
-      res.node_mu_r[node] += area * kNu0 / nu_node;
+      res.node_hr[node] += area * h[0], res.node_hz[node] += area * h[1];
+      res.node_h[node] += area * std::hypot(h[0], h[1]);
+      res.node_mu_r[node] += area * law.apparent_mu_r(b[0], b[1]);
     }
   }
   for (std::size_t i = 0; i < nodes; ++i) {

@@ -61,8 +61,9 @@ struct CircuitResult {
 };
 
 /// All results of one solve. Fields per element are the element averages of B (area-weighted),
-/// H = nu(|B|^2) B of that average and mu_r = 1 / (mu0 nu); nodal fields are area-weighted
-/// averages over the elements sharing the node of each element's own value at the node.
+/// H(B) of that average and mu_r = |B| / (mu0 |H|) (1 / (mu0 nu) when isotropic); nodal fields
+/// are area-weighted averages over the elements sharing the node of each element's own value at
+/// the node.
 struct Results {
   std::vector<double> element_br, element_bz, element_b;  ///< [T]
   std::vector<double> element_hr, element_hz, element_h;  ///< [A/m]

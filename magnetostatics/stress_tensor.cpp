@@ -89,7 +89,8 @@ bool is_air_region(const cases::Problem& problem, int region) {
   const cases::RegionData& data = problem.regions[region];
   if (data.circuit >= 0 || data.current_density != 0.0 || data.material < 0) return false;
   const cases::Material& material = problem.materials[data.material];
-  return material.mu_r == 1.0 && material.bh.empty() && material.coercivity == 0.0;
+  return material.mu_r == 1.0 && !material.mu_r_axes && material.bh.empty() &&
+         material.coercivity == 0.0;
 }
 
 Eigen::VectorXd stress_tensor_mask(const MagnetostaticSolver& solver,
@@ -220,14 +221,15 @@ StressTensorForce stress_tensor_force(const MagnetostaticSolver& solver, const S
       double gr = 0.0, gz = 0.0;
       for (int i = 0; i < k; ++i) gr += w[t[i]] * d_r[i], gz += w[t[i]] * d_z[i];
       const auto b = element_b(q, p, a_local);
-      // (T grad w)_i = H_i (B . grad w) - w' (grad w)_i, H = nu B, w' = B . H - w(B): the
-      // stress tensor of any isotropic medium (nu0 B B - nu0 |B|^2 / 2 in free space).
-      const double b2 = b[0] * b[0] + b[1] * b[1];
+      // (T grad w)_i = H_i (B . grad w) - w' (grad w)_i, w' = B . H - w(B): the stress tensor
+      // of any isotropic medium (nu0 B B - nu0 |B|^2 / 2 in free space), where the mask's
+      // gradient lies (the air around the body, is_air_region).
       const Reluctivity& law = solver.assembler().law(e);
-      const double nu = law.nu(b2), coenergy_density = nu * b2 - law.energy_density(b2);
+      const auto h = law.h(b[0], b[1]);
+      const double coenergy_density = h[0] * b[0] + h[1] * b[1] - law.energy_density(b[0], b[1]);
       const double b_dot_g = b[0] * gr + b[1] * gz;
-      const double tr = nu * b[0] * b_dot_g - coenergy_density * gr;
-      const double tz = nu * b[1] * b_dot_g - coenergy_density * gz;
+      const double tr = h[0] * b_dot_g - coenergy_density * gr;
+      const double tz = h[1] * b_dot_g - coenergy_density * gz;
       out.force[1] -= q.weight[p] * tz;
       if (!axisymmetric) {
         out.force[0] -= q.weight[p] * tr;

@@ -172,6 +172,13 @@ Solve3dResult solve_problem_3d(const cases::Problem& problem, const std::vector<
                        "' prescribes A != 0, which the 3D solver does not support");
     }
   }
+  for (const cases::Material& m : problem.materials) {
+    // Revolved, a permeability along r and z leaves the one along phi unstated.
+    if (m.mu_r_axes && (*m.mu_r_axes)[0] != (*m.mu_r_axes)[1])
+      throw InputError(source + ": material '" + m.name +
+                       "' is anisotropic (mu_r along r and z differ), which the 3D solver does "
+                       "not support; it takes isotropic materials");
+  }
   auto report = [&](const char* stage, std::string detail) {
     if (options.progress) options.progress({stage, 0, 0, seconds_since(start), std::move(detail)});
   };

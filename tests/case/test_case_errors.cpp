@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <regex>
 #include <string>
 
@@ -137,6 +138,30 @@ TEST(CaseErrors, BhTableNotMonotoneOrTooShort) {
   const std::string short_material = "[[material]]\nname = \"soft\"\nbh = [[1.0, 100]]\n";
   EXPECT_THAT(error_of(with("\"AISI 1010\"", "\"soft\"") + short_material),
               HasSubstr("a B-H table needs at least 2 points"));
+}
+
+// A laminated core as an inline material: mu_r along r and z (solved in FemmAnisotropic.*).
+TEST(CaseErrors, AnisotropicMaterialTakesTwoPermeabilities) {
+  const std::string soft = with("\"AISI 1010\"", "\"soft\"");
+  const Problem p =
+      parse_case(soft + "[[material]]\nname = \"soft\"\nmu_r_axes = [160.2, 4.9]\n", "a.toml")
+          .problem;
+  bool found = false;
+  for (const Material& m : p.materials) {
+    if (m.name != "soft") continue;
+    found = true;
+    ASSERT_TRUE(m.mu_r_axes.has_value());
+    EXPECT_EQ(*m.mu_r_axes, (std::array<double, 2>{160.2, 4.9}));
+    EXPECT_EQ(m.mu_r, 160.2);
+  }
+  EXPECT_TRUE(found);
+  EXPECT_THAT(error_of(soft + "[[material]]\nname = \"soft\"\nmu_r_axes = [160.2]\n"),
+              HasSubstr("material[1].mu_r_axes: expected 2 numbers, mu_r along r (x) and along z "
+                        "(y); got 1"));
+  EXPECT_THAT(error_of(soft + "[[material]]\nname = \"soft\"\nmu_r_axes = [160.2, 0]\n"),
+              HasSubstr("material[1].mu_r_axes: item 2"));
+  EXPECT_THAT(error_of(soft + "[[material]]\nname = \"soft\"\nmu_r = 3\nmu_r_axes = [1, 2]\n"),
+              HasSubstr("give one of mu_r, mu_r_axes (linear, anisotropic) or bh"));
 }
 
 TEST(CaseErrors, UnknownKeysNameTheLineAndTheClosestKey) {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <numbers>
@@ -195,9 +196,14 @@ TEST(FemmImport, UnsupportedFeaturesAreRejectedClearly) {
                         "line 9)"));
   EXPECT_EQ(error_of(with("<A_1> = 0", "<A_1> = 0.5")), "no error");
   EXPECT_THAT(error_of(with("<H_cAngle> = 0", "<H_cAngle> = 10")), HasSubstr("H_cAngle = 10"));
-  std::string across = with("<LamType> = 0", "<LamType> = 1");
-  across.replace(across.find("<LamFill> = 1"), 13, "<LamFill> = 0.9");
-  EXPECT_THAT(error_of(across), HasSubstr("with LamFill < 1 make the material anisotropic"));
+  // Laminations along x at fill < 1 make a B-H block nonlinear and anisotropic: refused (a linear
+  // block is solved, FemmAnisotropic.*).
+  std::string across = pot_core_text();
+  const std::size_t steel = across.find("<BlockName> = \"AISI 1010\"");
+  across.replace(across.find("<LamType> = 0", steel), 13, "<LamType> = 1");
+  across.replace(across.find("<LamFill> = 1", steel), 13, "<LamFill> = 0.9");
+  EXPECT_THAT(error_of(across), HasSubstr("with LamFill < 1 is a nonlinear anisotropic material, "
+                                          "which is not supported; a linear one"));
   EXPECT_THAT(error_of(with("<LamType> = 0", "<LamType> = 9")), HasSubstr("unknown LamType 9"));
   EXPECT_THAT(error_of(with("<LamFill> = 1", "<LamFill> = 0")), HasSubstr("LamFill = 0"));
   // A parallel circuit of a 200-turn label is FEMM's: one current, the turns a winding's mark
@@ -208,8 +214,14 @@ TEST(FemmImport, UnsupportedFeaturesAreRejectedClearly) {
   ASSERT_EQ(parallel.warnings.size(), 1u);
   EXPECT_THAT(parallel.warnings[0],
               HasSubstr("block label with 200 turns in parallel circuit 'coil': FEMM shares"));
-  EXPECT_THAT(error_of(with("<Mu_x> = 1\r\n    <Mu_y> = 1", "<Mu_x> = 1\r\n    <Mu_y> = 2")),
-              HasSubstr("anisotropic"));
+  // Mu_x != Mu_y: a linear anisotropic material (solved in FemmAnisotropic.*); Mu_y <= 0 named.
+  const Problem skewed =
+      parse_femm(with("<Mu_x> = 1\r\n    <Mu_y> = 1", "<Mu_x> = 1\r\n    <Mu_y> = 2"), "s.fem");
+  const Material& skewed_air = skewed.materials[skewed.regions[4].material];
+  ASSERT_TRUE(skewed_air.mu_r_axes.has_value());
+  EXPECT_EQ(*skewed_air.mu_r_axes, (std::array<double, 2>{1.0, 2.0}));
+  EXPECT_THAT(error_of(with("<Mu_x> = 1\r\n    <Mu_y> = 1", "<Mu_x> = 1\r\n    <Mu_y> = 0")),
+              HasSubstr("Mu_y = 0; expected a finite relative permeability > 0"));
   // An axisymmetric external region needs the header's radii (FemmModels.AxisymmetricKelvin...).
   EXPECT_THAT(error_of(with("60\t0\t1\t-1\t0\t0\t0\t1\t0", "60\t0\t1\t-1\t0\t0\t0\t1\t1")),
               HasSubstr("needs [extRo] > 0 and [extRi] > 0"));

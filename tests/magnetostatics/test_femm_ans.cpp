@@ -24,6 +24,8 @@ using rheomag::cli_test::run_rheomag;
 
 const std::string kValve = std::string(RHEOMAG_SOURCE_DIR) + "/cases/annular_valve.toml";
 const std::string kPlanar = std::string(RHEOMAG_TEST_DATA) + "/planar_magnet.fem";
+const std::string kLaminated = std::string(RHEOMAG_TEST_DATA) + "/laminated_magnet.fem";
+const std::string kLaminatedRing = std::string(RHEOMAG_TEST_DATA) + "/laminated_ring.fem";
 const std::string kSolidRing = std::string(RHEOMAG_TEST_DATA) + "/solid_ring.fem";
 
 /// A fresh directory for one test's files.
@@ -151,11 +153,12 @@ double rel(double peer, double own) {
 
 /// Solves `model` with --ans, opens the file in femmcli and compares the two evaluations of the
 /// same field. Tolerances (issue 31): 0.5 % on lambda, energy and point |B|; 1 % on the force
-/// (of |F|) and torque. The gaps are the post-processors' own: FEMM takes B constant on each
-/// linear piece of the split P2 triangles and smooths it at the nodes.
+/// (of |F|) and `torque_tolerance` (1 %) on the torque. The gaps are the post-processors' own:
+/// FEMM takes B constant on each linear piece of the split P2 triangles and smooths it at the
+/// nodes.
 void compare_with_xfemm(const std::string& name, const std::string& model,
                         const std::vector<double>& points, const std::string& body_region,
-                        const std::string& body_point) {
+                        const std::string& body_point, double torque_tolerance = 0.01) {
   const char* femmcli = std::getenv("RHEOMAG_FEMMCLI");
   if (!femmcli || !fs::exists(femmcli))
     GTEST_SKIP() << "set RHEOMAG_FEMMCLI to xfemm's femmcli (built as docs/femm.md says) to "
@@ -192,7 +195,8 @@ void compare_with_xfemm(const std::string& name, const std::string& model,
   EXPECT_LT(std::abs(peer.at("f_x") - fx) / magnitude, 0.01) << peer.at("f_x") << " vs " << fx;
   EXPECT_LT(std::abs(peer.at("f_y") - fy) / magnitude, 0.01) << peer.at("f_y") << " vs " << fy;
   const double torque = j.at("integrals").at(1).at("values").at("torque").get<double>();
-  EXPECT_LT(rel(peer.at("torque"), torque), 0.01) << peer.at("torque") << " vs " << torque;
+  EXPECT_LT(rel(peer.at("torque"), torque), torque_tolerance)
+      << peer.at("torque") << " vs " << torque;
 }
 
 TEST(FemmAnsXfemm, AnnularValveInFemmsPostProcessor) {
@@ -205,6 +209,24 @@ TEST(FemmAnsXfemm, PlanarMagnetInFemmsPostProcessor) {
   // offset armature 2 mm below. Points: the air gap under the window, a yoke leg, the armature.
   compare_with_xfemm("planar", kPlanar, {0.0, -0.001, -0.0225, 0.0125, 0.0, -0.008}, "Iron_2",
                      "0, -0.008");
+}
+
+TEST(FemmAnsXfemm, LaminatedMagnetInFemmsPostProcessor) {
+  // tests/data/laminated_magnet.fem: planar_magnet.fem with its core laminated along x (LamType 1,
+  // Mu_x 1000, fill 0.9: mu_r 900.1 along x, 9.9 across) and a grain-oriented armature (Mu_x
+  // 1000, Mu_y 100). FEMM's post-processor takes H = (B_x / mu_x, B_y / mu_y) of each block.
+  // The armature's torque about the origin is small here (6 % of |F| times its distance from
+  // the origin) and still moves 1.8 % when the mesh is halved (2.583e-4 -> 2.629e-4 N m;
+  // quartered 2.628e-4): compared at 2.5 %, the mesh's error, not the post-processors'.
+  compare_with_xfemm("laminated", kLaminated, {0.0, -0.001, -0.0225, 0.0125, 0.0, -0.008},
+                     "Armature", "0, -0.008", 0.025);
+}
+
+TEST(FemmAnsXfemm, LaminatedRingInFemmsPostProcessor) {
+  // tests/data/laminated_ring.fem: an axisymmetric core laminated along r (LamType 1, Mu 1000,
+  // fill 0.9: mu_r 900.1 along r, 9.9 along z) beside a 500-turn coil at 2 A. Points: the core's
+  // middle and the air between core and coil.
+  compare_with_xfemm("ring_laminated", kLaminatedRing, {0.0175, 0.0, 0.031, 0.0}, "", "");
 }
 
 TEST(FemmAnsXfemm, SolidRingInFemmsPostProcessor) {

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -163,6 +164,25 @@ TEST(Features, BadFeaturesAreInputErrorsNamingTheFeature) {
       "feature[1] (lead_slot): the cut lies partly outside region 'core'");
   expect_input_error("\n[[feature]]\nkind = \"eccentricity\"\ngap = \"gap_top\"\noffset = 3\n",
                      "offset must be smaller than the gap width");
+}
+
+// A material with mu_r along r and z (a laminated core) leaves mu_r along phi unstated when
+// revolved: refused by name before meshing.
+TEST(Features, AnisotropicMaterialIsRefusedByName) {
+  cases::Case c = small_valve("");
+  cases::Material& core = c.problem.materials.at(c.problem.regions.at(0).material);
+  core.bh.clear();
+  core.mu_r_axes = std::array{500.0, 5.0};
+  try {
+    solve_problem_3d(c.problem, read_features(c), coarse());
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("material '" + core.name +
+                                         "' is anisotropic (mu_r along r and z differ), which "
+                                         "the 3D solver does not support"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
